@@ -1,0 +1,33 @@
+// Collision moments between Sonine basis functions: the building blocks of every
+// linearized-collision-operator matrix (docs/theory.md §4).
+//
+// Basis at a slot u of species s: ψ_n(u) = S_m^(n)(x) Y_r(c), x = θ_s u², c = √θ_s u,
+// m = d/2 − 1 + r, Y_0 = 1, Y_1 = c, Y_2 = c c − (c²/d) I (traceless).
+#pragma once
+
+#include "gkt/collision_rule.hpp"
+#include "gkt/dense_matrix.hpp"
+#include "gkt/rational.hpp"
+#include "gkt/rational_polynomial.hpp"
+
+namespace gkt {
+
+/// Returns M with M(p, q) = ⟨ψ_q(unknown) · ψ_p(test)⟩ / J0 for p, q = 0..n_max (tensor
+/// indices contracted), where ⟨X⟩ = ∫dv1 dv2 dσ̂ Θ(σ̂·g)(σ̂·g) e^{−θ_i v1² − θ_j v2²} X and
+/// J0 = ⟨1⟩ (see reference_collision_integral). Exact in Ring = Rational (numeric α) or
+/// RationalPolynomial (symbolic α). Requires θ at the two slots to have a rational
+/// geometric mean when rank is odd and the slots differ.
+template <class Ring>
+DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring& alpha, Slot unknown, Slot test,
+                                           int rank, int n_max);
+
+/// Returns J0 = ∫dv1 dv2 dσ̂ Θ(σ̂·g)(σ̂·g) e^{−θ_i v1² − θ_j v2²} = K_d √(θ_i+θ_j) (θ_iθ_j)^{−(d+1)/2}
+/// (velocity units of the pair's θ; double precision).
+double reference_collision_integral(const CollisionPair& pair);
+
+extern template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot,
+                                                                        Slot, int, int);
+extern template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(
+    const CollisionPair&, const RationalPolynomial&, Slot, Slot, int, int);
+
+}  // namespace gkt

@@ -1,0 +1,99 @@
+// Exact rational numbers: a value-semantics RAII wrapper around FLINT's fmpq.
+//
+// Layer: exact algebra (bottom). All big-number arithmetic is FLINT's; this
+// header only gives it C++ value semantics so the engine can be written as
+// ordinary algebra.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+#include <flint/fmpq.h>
+
+namespace gkt {
+
+/// An exact rational number p/q in lowest terms (FLINT fmpq).
+class Rational {
+ public:
+  Rational() { fmpq_init(value_); }
+  Rational(long numerator) {  // NOLINT(google-explicit-constructor): integers are rationals
+    fmpq_init(value_);
+    fmpq_set_si(value_, numerator, 1);
+  }
+  Rational(long numerator, unsigned long denominator);
+  /// Parses "p", "p/q" or a finite decimal such as "0.6" or "-1.25e-3" exactly.
+  static Rational parse(const std::string& text);
+  /// The exact binary value of a finite double.
+  static Rational from_double(double x);
+
+  Rational(const Rational& other) {
+    fmpq_init(value_);
+    fmpq_set(value_, other.value_);
+  }
+  Rational(Rational&& other) noexcept {
+    fmpq_init(value_);
+    fmpq_swap(value_, other.value_);
+  }
+  Rational& operator=(const Rational& other) {
+    if (this != &other) fmpq_set(value_, other.value_);
+    return *this;
+  }
+  Rational& operator=(Rational&& other) noexcept {
+    fmpq_swap(value_, other.value_);
+    return *this;
+  }
+  ~Rational() { fmpq_clear(value_); }
+
+  Rational& operator+=(const Rational& b) { fmpq_add(value_, value_, b.value_); return *this; }
+  Rational& operator-=(const Rational& b) { fmpq_sub(value_, value_, b.value_); return *this; }
+  Rational& operator*=(const Rational& b) { fmpq_mul(value_, value_, b.value_); return *this; }
+  Rational& operator/=(const Rational& b);
+  /// this += a*b without a temporary.
+  void add_product(const Rational& a, const Rational& b) { fmpq_addmul(value_, a.value_, b.value_); }
+  void sub_product(const Rational& a, const Rational& b) { fmpq_submul(value_, a.value_, b.value_); }
+
+  friend Rational operator+(Rational a, const Rational& b) { return a += b; }
+  friend Rational operator-(Rational a, const Rational& b) { return a -= b; }
+  friend Rational operator*(Rational a, const Rational& b) { return a *= b; }
+  friend Rational operator/(Rational a, const Rational& b) { return a /= b; }
+  friend Rational operator-(Rational a) {
+    fmpq_neg(a.value_, a.value_);
+    return a;
+  }
+  friend bool operator==(const Rational& a, const Rational& b) { return fmpq_equal(a.value_, b.value_) != 0; }
+  friend bool operator<(const Rational& a, const Rational& b) { return fmpq_cmp(a.value_, b.value_) < 0; }
+  friend bool operator>(const Rational& a, const Rational& b) { return b < a; }
+  friend bool operator<=(const Rational& a, const Rational& b) { return !(b < a); }
+  friend bool operator>=(const Rational& a, const Rational& b) { return !(a < b); }
+
+  [[nodiscard]] bool is_zero() const { return fmpq_is_zero(value_) != 0; }
+  [[nodiscard]] int sign() const { return fmpq_sgn(value_); }
+  [[nodiscard]] Rational abs() const;
+  /// Integer power (negative exponents allowed for non-zero values).
+  [[nodiscard]] Rational pow(long exponent) const;
+  /// The exact square root if this is the square of a rational; throws otherwise.
+  [[nodiscard]] Rational exact_sqrt() const;
+  [[nodiscard]] bool is_square() const;
+  /// Returns the nearest double (correctly rounded, via MPFR).
+  [[nodiscard]] double to_double() const;
+  /// "p/q" or "p" in lowest terms.
+  [[nodiscard]] std::string to_string() const;
+  /// Number of bits of numerator plus denominator (a measure of size).
+  [[nodiscard]] long bits() const;
+
+  /// n! as a rational.
+  static Rational factorial(unsigned long n);
+  /// Γ(k/2 + n) / Γ(k/2) for integer k > 0, n >= 0 (a rational: rising factorial (k/2)_n).
+  static Rational rising_half(long twice_a, unsigned long n);
+
+  fmpq* raw() { return value_; }
+  [[nodiscard]] const fmpq* raw() const { return value_; }
+
+ private:
+  fmpq_t value_;
+};
+
+std::ostream& operator<<(std::ostream& os, const Rational& q);
+
+}  // namespace gkt

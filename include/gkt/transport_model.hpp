@@ -1,0 +1,72 @@
+// The interface every transport model implements, and the one registry that names them
+// (cf. Cantera's TransportFactory): front ends pick models by name only through here.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gkt/rational.hpp"
+
+namespace gkt {
+
+/// A model parameter: its key, kind and allowed closed/open range (used to validate input).
+struct ParameterSpec {
+  enum class Kind { integer, real };
+  std::string name;
+  Kind kind = Kind::real;
+  Rational min, max;
+  bool min_inclusive = true;
+  bool max_inclusive = true;
+  Rational default_value;
+  std::string description;
+  /// Returns a one-line description of the allowed values, e.g. "an integer in [2, 3]".
+  [[nodiscard]] std::string allowed() const;
+  /// Throws std::invalid_argument "<name>: must be …, got …" if v is not allowed.
+  void check(const Rational& v) const;
+};
+
+/// Sonine order to use: a fixed order, or the smallest order whose estimated truncation
+/// error is below a tolerance.
+struct OrderRequest {
+  int order = 1;
+  std::optional<Rational> tolerance;
+};
+
+/// One coefficient at one parameter point.
+struct CoefficientValue {
+  Rational value;     ///< reduced value (exact when `exact`)
+  Rational error;     ///< estimated truncation error
+  int order = 0;      ///< Sonine order used
+  bool converged = true;  ///< false if the tolerance was not met or the series does not converge
+  bool exact = true;  ///< value and error are exact rationals
+};
+
+/// A transport model: named coefficients as functions of named parameters.
+class TransportModel {
+ public:
+  virtual ~TransportModel() = default;
+  [[nodiscard]] virtual std::string name() const = 0;
+  [[nodiscard]] virtual std::string description() const = 0;
+  /// Returns the canonical coefficient names this model computes.
+  [[nodiscard]] virtual std::vector<std::string> coefficient_names() const = 0;
+  /// Returns the model's parameters (scene keys) with their ranges.
+  [[nodiscard]] virtual std::vector<ParameterSpec> parameters() const = 0;
+  /// Returns the highest Sonine order accepted.
+  [[nodiscard]] virtual int max_order() const = 0;
+  /// Returns the requested coefficients at one parameter point (reduced as in
+  /// docs/conventions.md), computing only those; state is reused between calls.
+  virtual std::vector<CoefficientValue> evaluate(const std::map<std::string, Rational>& parameters,
+                                                 const std::vector<std::string>& coefficients,
+                                                 const OrderRequest& order) = 0;
+};
+
+/// Returns a new model by name; throws std::invalid_argument listing the valid names.
+std::unique_ptr<TransportModel> make_transport_model(const std::string& name);
+
+/// Returns the registered model names, sorted.
+std::vector<std::string> transport_model_names();
+
+}  // namespace gkt

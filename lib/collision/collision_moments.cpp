@@ -1,0 +1,139 @@
+#include "gkt/collision_moments.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "collision/generating_series.hpp"
+#include "gkt/gaussian_collision_integral.hpp"
+#include "gkt/sonine.hpp"
+
+namespace gkt {
+
+namespace {
+
+/// Exact Sonine coefficient table S(n, k) = coefficient of x^k in S_m^(n), n, k ≤ n_max.
+DenseMatrix<Rational> sonine_table(long twice_m, int n_max) {
+  DenseMatrix<Rational> s(n_max + 1, n_max + 1);
+  for (int n = 0; n <= n_max; ++n) {
+    const auto c = sonine_coefficients(twice_m, n);
+    for (int k = 0; k <= n; ++k) s(n, k) = c[static_cast<std::size_t>(k)];
+  }
+  return s;
+}
+
+/// Returns S · Y · Sᵀ-type contraction: out(p, q) = Σ_{k ≤ q, k' ≤ p} S(q,k) S(p,k') y(k, k').
+template <class Ring>
+DenseMatrix<Ring> contract_with_sonine(const DenseMatrix<Rational>& s, const DenseMatrix<Ring>& y, int n_max) {
+  // first: t(k, p) = Σ_{k'} y(k, k') S(p, k')
+  DenseMatrix<Ring> t(n_max + 1, n_max + 1);
+  for (int k = 0; k <= n_max; ++k)
+    for (int p = 0; p <= n_max; ++p) {
+      Ring acc(0L);
+      for (int kp = 0; kp <= p; ++kp) acc.add_product(y(k, kp), Ring(s(p, kp)));
+      t(k, p) = std::move(acc);
+    }
+  DenseMatrix<Ring> out(n_max + 1, n_max + 1);
+  for (int p = 0; p <= n_max; ++p)
+    for (int q = 0; q <= n_max; ++q) {
+      Ring acc(0L);
+      for (int k = 0; k <= q; ++k) acc.add_product(t(k, p), Ring(s(q, k)));
+      out(p, q) = std::move(acc);
+    }
+  return out;
+}
+
+detail::ExactForm reference_form(const CollisionPair& pair) {
+  detail::ExactForm q0{};
+  q0[0][0] = pair.theta_i;
+  q0[1][1] = pair.theta_j;
+  return q0;
+}
+
+}  // namespace
+
+double reference_collision_integral(const CollisionPair& pair) {
+  const double ti = pair.theta_i.to_double(), tj = pair.theta_j.to_double();
+  return gaussian_integral_constant(pair.dimension) * std::sqrt(ti + tj) *
+         std::pow(ti * tj, -0.5 * (pair.dimension + 1));
+}
+
+template <class Ring>
+DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring& alpha, Slot unknown, Slot test,
+                                           int rank, int n_max) {
+  pair.validate();
+  if (rank < 0 || rank > 2) throw std::invalid_argument("rank: must be 0, 1 or 2");
+  if (n_max < 0) throw std::invalid_argument("n_max: must be >= 0");
+  const int d = pair.dimension;
+  const auto sonine = sonine_table(sonine_twice_m(d, rank), n_max);
+  const int a = static_cast<int>(unknown), b = static_cast<int>(test);
+  const Rational& theta_a = pair.theta(unknown);
+  const Rational& theta_b = pair.theta(test);
+  const detail::ExactForm q0 = reference_form(pair);
+  std::array<detail::ExactForm, 3> dq{};
+  DenseMatrix<Ring> y(n_max + 1, n_max + 1);
+
+  if (a == b) {
+    // One variable: ⟨x^n⟩ = n! f_n with exp(+x0 θ u²).
+    dq[0][a][a] = -theta_a;
+    const int top = 2 * n_max + rank;
+    const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq, {top, 0, 0});
+    // Y_r(c)·Y_r(c) = 1, x, (1 − 1/d) x².
+    const Rational tensor_factor = rank == 2 ? Rational(d - 1, static_cast<unsigned long>(d)) : Rational(1);
+    for (int k = 0; k <= n_max; ++k)
+      for (int kp = 0; kp <= n_max; ++kp) {
+        const int n = k + kp + rank;
+        Ring v = f(n, 0, 0);
+        detail::scale(v, Rational::factorial(static_cast<unsigned long>(n)) * tensor_factor);
+        y(k, kp) = std::move(v);
+      }
+    return contract_with_sonine(sonine, y, n_max);
+  }
+
+  // Three variables: exp(x0 θ_a u_a² + x1 θ_b u_b² + x2 √(θ_aθ_b) u_a·u_b).
+  dq[0][a][a] = -theta_a;
+  dq[1][b][b] = -theta_b;
+  const Rational theta_ab = theta_a * theta_b;
+  Rational cross_scale(1);  // (√(θ_aθ_b))^rank, applied after the expansion
+  if (rank % 2 == 1) {
+    if (!theta_ab.is_square())
+      throw std::domain_error("sonine_collision_moments: θ_a θ_b = " + theta_ab.to_string() +
+                              " has no rational square root (odd rank, exact ring)");
+    cross_scale = theta_ab.exact_sqrt();
+  } else if (rank == 2) {
+    cross_scale = theta_ab;
+  }
+  dq[2][a][b] = Rational(-1, 2);
+  dq[2][b][a] = Rational(-1, 2);
+  const int extra = rank == 2 ? 1 : 0;
+  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq,
+                                                                  {n_max + extra, n_max + extra, rank});
+  auto moment = [&](int k, int kp, int j) {  // ⟨x_a^k x_b^kp (u_a·u_b)^j⟩ / J0
+    Ring v = f(k, kp, j);
+    detail::scale(v, Rational::factorial(static_cast<unsigned long>(k)) *
+                         Rational::factorial(static_cast<unsigned long>(kp)) *
+                         Rational::factorial(static_cast<unsigned long>(j)));
+    return v;
+  };
+  const Rational inv_d(1, static_cast<unsigned long>(d));
+  for (int k = 0; k <= n_max; ++k)
+    for (int kp = 0; kp <= n_max; ++kp) {
+      Ring v = moment(k, kp, rank);
+      detail::scale(v, cross_scale);
+      if (rank == 2) {
+        // (c_a·c_b)² − c_a² c_b²/d
+        Ring w = moment(k + 1, kp + 1, 0);
+        detail::scale(w, inv_d);
+        v -= w;
+      }
+      y(k, kp) = std::move(v);
+    }
+  return contract_with_sonine(sonine, y, n_max);
+}
+
+template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot, Slot,
+                                                                 int, int);
+template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(const CollisionPair&,
+                                                                                     const RationalPolynomial&, Slot,
+                                                                                     Slot, int, int);
+
+}  // namespace gkt

@@ -1,0 +1,190 @@
+// Private: exact Taylor expansion of the Gaussian collision integral J(Q(x)) in up to three
+// auxiliary variables x = (x0, x1, x2), Q(x) = Q0 + Σ_v x_v Q_v (docs/theory.md §3).
+//
+// J/J(0) = a^{1/2} n1^{−(d−1)/2} n2^{−1} with a, n1, n2 polynomials (degree 1, 2, 2) in x
+// normalised to constant term 1. Its coefficients follow from the Euler-operator identity
+//   Π · E f = f · Qc,   Π = a n1 n2,   Qc = ½(Ea) n1 n2 − ((d−1)/2) a (En1) n2 − a n1 (En2),
+// (E = Σ x_v ∂_v), i.e. |m| f_m = Σ_{e≠0} (Qc_e − |m−e| Π_e) f_{m−e}: each coefficient costs
+// one pass over the ≤ 56 monomials of Π — no symbolic differentiation, no power series
+// division, exact in the ring (Q or Q[α]).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "collision/ring.hpp"
+#include "gkt/collision_rule.hpp"
+
+namespace gkt::detail {
+
+using ExactForm = std::array<std::array<Rational, 4>, 4>;
+
+/// A polynomial in three variables with few terms (exponent vectors e, coefficients c).
+template <class Ring>
+struct SmallPolynomial {
+  struct Term {
+    std::array<int, 3> e;
+    Ring c;
+  };
+  std::vector<Term> terms;
+
+  void add(const std::array<int, 3>& e, const Ring& c) {
+    if (c.is_zero()) return;
+    for (auto& t : terms)
+      if (t.e == e) {
+        t.c += c;
+        return;
+      }
+    terms.push_back({e, c});
+  }
+  [[nodiscard]] Rational constant() const {
+    for (const auto& t : terms)
+      if (t.e == std::array<int, 3>{0, 0, 0}) return constant_term(t.c);
+    return Rational(0);
+  }
+  friend SmallPolynomial operator+(const SmallPolynomial& a, const SmallPolynomial& b) {
+    SmallPolynomial r = a;
+    for (const auto& t : b.terms) r.add(t.e, t.c);
+    return r;
+  }
+  friend SmallPolynomial operator-(const SmallPolynomial& a, const SmallPolynomial& b) {
+    SmallPolynomial r = a;
+    for (const auto& t : b.terms) r.add(t.e, -t.c);
+    return r;
+  }
+  friend SmallPolynomial operator*(const SmallPolynomial& a, const SmallPolynomial& b) {
+    SmallPolynomial r;
+    for (const auto& x : a.terms)
+      for (const auto& y : b.terms) r.add({x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2]}, x.c * y.c);
+    return r;
+  }
+  friend SmallPolynomial operator*(const Ring& c, const SmallPolynomial& a) {
+    SmallPolynomial r;
+    for (const auto& t : a.terms) r.add(t.e, c * t.c);
+    return r;
+  }
+  /// Returns E p = Σ |e| c_e x^e (Euler operator).
+  [[nodiscard]] SmallPolynomial euler() const {
+    SmallPolynomial r;
+    for (const auto& t : terms) r.add(t.e, Ring(static_cast<long>(t.e[0] + t.e[1] + t.e[2])) * t.c);
+    return r;
+  }
+  void divide_by(const Rational& c) {
+    for (auto& t : terms) divide(t.c, c);
+  }
+};
+
+/// Dense box of Taylor coefficients f(k0, k1, k2), 0 ≤ k_v ≤ box_v, of J(Q(x))/J(Q0).
+template <class Ring>
+struct GeneratingSeries {
+  std::array<int, 3> box{};
+  std::vector<Ring> coefficients;
+  /// Constant terms: J(Q0) = K_d √a0 / (n1_0^{(d−1)/2} n2_0).
+  Rational a0, n1_0, n2_0;
+
+  [[nodiscard]] std::size_t index(int k0, int k1, int k2) const {
+    return (static_cast<std::size_t>(k0) * (box[1] + 1) + k1) * (box[2] + 1) + k2;
+  }
+  [[nodiscard]] const Ring& operator()(int k0, int k1, int k2) const { return coefficients[index(k0, k1, k2)]; }
+};
+
+/// Returns the Taylor coefficients of J(Q0 + Σ x_v Q_v)/J(Q0) in the box (exact in Ring).
+template <class Ring>
+GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& pair, const Ring& alpha,
+                                                          const ExactForm& q0, const std::array<ExactForm, 3>& dq,
+                                                          const std::array<int, 3>& box) {
+  const auto t = pair.velocity_map();
+  // M = Tᵀ Q T for Q0 and each direction; entries become polynomials in x of degree ≤ 1.
+  auto congruence = [&](const ExactForm& q) {
+    std::array<std::array<Rational, 3>, 3> m{};
+    for (int r = 0; r < 3; ++r)
+      for (int s = 0; s < 3; ++s)
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b)
+            if (!q[a][b].is_zero() && !t[a][r].is_zero() && !t[b][s].is_zero()) m[r][s] += t[a][r] * q[a][b] * t[b][s];
+    return m;
+  };
+  std::array<std::array<SmallPolynomial<Ring>, 3>, 3> m;
+  {
+    const auto m0 = congruence(q0);
+    for (int r = 0; r < 3; ++r)
+      for (int s = 0; s < 3; ++s) m[r][s].add({0, 0, 0}, Ring(m0[r][s]));
+    for (int v = 0; v < 3; ++v) {
+      const auto mv = congruence(dq[v]);
+      std::array<int, 3> e{0, 0, 0};
+      e[v] = 1;
+      for (int r = 0; r < 3; ++r)
+        for (int s = 0; s < 3; ++s) m[r][s].add(e, Ring(mv[r][s]));
+    }
+  }
+  const auto& A = m[0][0];
+  const auto& D = m[0][1];
+  const auto& E = m[0][2];
+  const auto& B = m[1][1];
+  const auto& H = m[1][2];
+  const auto& C = m[2][2];
+  const Ring two(2L);
+  auto n1 = A * (B + C + two * H) - (D + E) * (D + E);
+  const auto d_minus_alpha_e = D - alpha * E;
+  auto n2 = A * (B + (alpha * alpha) * C - (two * alpha) * H) - d_minus_alpha_e * d_minus_alpha_e;
+  auto a = A;
+
+  GeneratingSeries<Ring> out;
+  out.box = box;
+  out.a0 = a.constant();
+  out.n1_0 = n1.constant();
+  out.n2_0 = n2.constant();
+  if (out.a0.sign() <= 0 || out.n1_0.sign() <= 0 || out.n2_0.sign() <= 0)
+    throw std::domain_error("expand_gaussian_collision_integral: reference form is not integrable");
+  a.divide_by(out.a0);
+  n1.divide_by(out.n1_0);
+  n2.divide_by(out.n2_0);
+
+  const Ring half(Rational(1, 2));
+  const Ring r1(Rational(pair.dimension - 1, 2));
+  const auto pi = a * n1 * n2;
+  const auto qc = half * (a.euler() * n1 * n2) - r1 * (a * n1.euler() * n2) - a * n1 * n2.euler();
+
+  struct RecurrenceTerm {
+    std::array<int, 3> e;
+    Ring q, p;
+  };
+  std::vector<RecurrenceTerm> rec;
+  for (const auto& term : pi.terms)
+    if (term.e != std::array<int, 3>{0, 0, 0}) rec.push_back({term.e, Ring(0L), term.c});
+  for (const auto& term : qc.terms) {
+    bool merged = false;
+    for (auto& r : rec)
+      if (r.e == term.e) {
+        r.q = term.c;
+        merged = true;
+      }
+    if (!merged) rec.push_back({term.e, term.c, Ring(0L)});
+  }
+
+  const std::size_t size = static_cast<std::size_t>(box[0] + 1) * (box[1] + 1) * (box[2] + 1);
+  out.coefficients.assign(size, Ring(0L));
+  std::vector<Ring> weighted(size, Ring(0L));  // |m| f_m
+  out.coefficients[0] = Ring(1L);
+  for (int k0 = 0; k0 <= box[0]; ++k0)
+    for (int k1 = 0; k1 <= box[1]; ++k1)
+      for (int k2 = 0; k2 <= box[2]; ++k2) {
+        const int degree = k0 + k1 + k2;
+        if (degree == 0) continue;
+        Ring acc(0L);
+        for (const auto& r : rec) {
+          const int j0 = k0 - r.e[0], j1 = k1 - r.e[1], j2 = k2 - r.e[2];
+          if (j0 < 0 || j1 < 0 || j2 < 0) continue;
+          const std::size_t src = out.index(j0, j1, j2);
+          if (!r.q.is_zero()) acc.add_product(r.q, out.coefficients[src]);
+          if (!r.p.is_zero()) acc.sub_product(r.p, weighted[src]);
+        }
+        const std::size_t dst = out.index(k0, k1, k2);
+        weighted[dst] = acc;
+        divide(acc, Rational(degree));
+        out.coefficients[dst] = std::move(acc);
+      }
+  return out;
+}
+
+}  // namespace gkt::detail

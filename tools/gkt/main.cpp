@@ -1,0 +1,85 @@
+// gkt: command-line front end. Exit codes: 0 success, 2 bad input or usage, 1 internal error.
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "gkt/transport_model.hpp"
+#include "scene.hpp"
+#include "table_command.hpp"
+#include "table_writer.hpp"
+
+namespace {
+
+constexpr int kBadInput = 2;
+
+int run_table(const std::string& scene_path, const std::vector<std::string>& overrides, const std::string& format,
+              const std::string& output, bool exact) {
+  const auto scene = gkt::cli::load_scene(scene_path, overrides);
+  std::vector<std::string> warnings;
+  const auto table = gkt::cli::compute_table(scene, {exact}, warnings);
+  const std::string content = format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table);
+  gkt::cli::write_output(output, content);
+  for (const auto& w : warnings) std::cerr << "gkt: warning: " << w << "\n";
+  return 0;
+}
+
+int run_models() {
+  for (const auto& name : gkt::transport_model_names()) {
+    const auto model = gkt::make_transport_model(name);
+    std::cout << name << ": " << model->description() << "\n  coefficients:";
+    for (const auto& c : model->coefficient_names()) std::cout << " " << c;
+    std::cout << "\n  parameters:";
+    for (const auto& p : model->parameters()) std::cout << " " << p.name << " (" << p.allowed() << ")";
+    std::cout << "\n  order: an integer in [1, " << model->max_order() << "] or tolerance in (0, 1]\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"gkt: Chapman-Enskog transport coefficients of granular and molecular gases from exact "
+               "Sonine expansions"};
+  app.set_version_flag("--version", std::string("gkt ") + GKT_VERSION);
+  app.require_subcommand(1);
+
+  auto* table = app.add_subcommand("table", "Compute a table of transport coefficients for a scene (TOML)");
+  std::string scene_path, format = "csv", output;
+  std::vector<std::string> overrides;
+  bool exact = false;
+  table->add_option("scene", scene_path, "Scene file (TOML), see examples/")->required();
+  table->add_option("--set", overrides, "Override a scene key: KEY=VALUE (VALUE in TOML syntax); repeatable")
+      ->allow_extra_args(false);
+  table->add_option("--format", format, "Output format")->check(CLI::IsMember({"csv", "json"}));
+  table->add_option("--output", output, "Output file (written atomically); default: standard output");
+  table->add_flag("--exact", exact, "Print exact rationals (refused where a result is not rational)");
+
+  app.add_subcommand("models", "List the models with their coefficients and parameters");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "gkt: error: " << e.what() << " (see gkt --help)\n";
+    return kBadInput;
+  }
+
+  try {
+    if (table->parsed()) return run_table(scene_path, overrides, format, output, exact);
+    return run_models();
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "gkt: error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "gkt: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,157 @@
+#include "scene.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <toml++/toml.h>
+
+namespace gkt::cli {
+
+namespace {
+
+constexpr long kMaxSweepPoints = 1000000;
+
+std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
+
+/// Exact value of a TOML number: integers exactly, floats by their shortest round-trip decimal.
+Rational exact_number(const toml::node& node, const std::string& key) {
+  if (const auto* i = node.as_integer()) return Rational(static_cast<long>(i->get()));
+  if (const auto* f = node.as_floating_point()) {
+    const double x = f->get();
+    if (!std::isfinite(x)) throw error(key + ": must be a finite number");
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return Rational::parse(std::string(buffer, result.ptr));
+  }
+  throw error(key + ": must be a number, a list of numbers or { from = a, to = b, points = k }");
+}
+
+/// Values of a numeric key: a number, an array, or an inclusive linear range.
+Axis read_axis(const std::string& key, const toml::node& node) {
+  Axis axis{key, {}, false};
+  if (const auto* array = node.as_array()) {
+    if (array->empty()) throw error(key + ": a sweep list must not be empty");
+    axis.swept = true;
+    for (const auto& item : *array) axis.values.push_back(exact_number(item, key));
+    return axis;
+  }
+  if (const auto* range = node.as_table()) {
+    for (const auto& [sub, value] : *range) {
+      const std::string s(sub.str());
+      if (s != "from" && s != "to" && s != "points")
+        throw error(key + "." + s + ": unknown range key; valid keys: from, to, points");
+    }
+    if (!range->contains("from") || !range->contains("to") || !range->contains("points"))
+      throw error(key + ": a range needs from, to and points");
+    const Rational from = exact_number(*range->get("from"), key + ".from");
+    const Rational to = exact_number(*range->get("to"), key + ".to");
+    const auto* points_node = range->get("points")->as_integer();
+    if (points_node == nullptr || points_node->get() < 1 || points_node->get() > kMaxSweepPoints)
+      throw error(key + ".points: must be an integer in [1, " + std::to_string(kMaxSweepPoints) + "]");
+    const long points = static_cast<long>(points_node->get());
+    axis.swept = true;
+    for (long k = 0; k < points; ++k)
+      axis.values.push_back(points == 1 ? from : from + (to - from) * Rational(k, static_cast<unsigned long>(points - 1)));
+    return axis;
+  }
+  axis.values.push_back(exact_number(node, key));
+  return axis;
+}
+
+void apply_override(toml::table& scene, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) throw error("--set: expected KEY=VALUE, got '" + assignment + "'");
+  std::string key = assignment.substr(0, eq);
+  while (!key.empty() && key.back() == ' ') key.pop_back();
+  const std::string value = assignment.substr(eq + 1);
+  toml::table parsed;
+  try {
+    parsed = toml::parse("value = " + value);
+  } catch (const toml::parse_error&) {
+    // Bare words are strings: --set model=hard-spheres.
+    parsed = toml::table{{"value", value}};
+  }
+  scene.insert_or_assign(key, *parsed.get("value"));
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw error("scene: cannot open '" + path + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+  toml::table table;
+  try {
+    table = toml::parse(text.str(), path);
+  } catch (const toml::parse_error& e) {
+    throw error("scene: " + path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+  }
+  for (const auto& o : overrides) apply_override(table, o);
+
+  Scene scene;
+  const auto* model_node = table.get("model");
+  if (model_node == nullptr || !model_node->is_string()) {
+    std::string valid;
+    for (const auto& n : transport_model_names()) valid += (valid.empty() ? "" : ", ") + ("\"" + n + "\"");
+    throw error("model: required string; valid models: " + valid);
+  }
+  scene.model = model_node->as_string()->get();
+  const auto model = make_transport_model(scene.model);  // throws on unknown names
+
+  std::vector<ParameterSpec> specs = model->parameters();
+  specs.push_back({"order", ParameterSpec::Kind::integer, Rational(1), Rational(model->max_order()), true, true,
+                   Rational(1), "Sonine order (number of polynomials)"});
+  specs.push_back({"tolerance", ParameterSpec::Kind::real, Rational(0), Rational(1), false, true, Rational(0),
+                   "target estimated truncation error"});
+
+  std::set<std::string> valid_keys{"model", "coefficients"};
+  for (const auto& s : specs) valid_keys.insert(s.name);
+  for (const auto& [key, value] : table) {
+    const std::string k(key.str());
+    if (!valid_keys.contains(k)) {
+      std::string list;
+      for (const auto& v : valid_keys) list += (list.empty() ? "" : ", ") + v;
+      throw error(k + ": unknown key for model \"" + scene.model + "\"; valid keys: " + list);
+    }
+  }
+
+  const auto names = model->coefficient_names();
+  if (const auto* c = table.get("coefficients")) {
+    const auto* array = c->as_array();
+    if (array == nullptr || array->empty()) throw error("coefficients: must be a non-empty list of names");
+    for (const auto& item : *array) {
+      if (!item.is_string()) throw error("coefficients: must be a list of strings");
+      const std::string name = item.as_string()->get();
+      if (std::find(names.begin(), names.end(), name) == names.end()) {
+        std::string list;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+        throw error("coefficients: unknown coefficient '" + name + "' for model \"" + scene.model +
+                    "\"; valid: " + list);
+      }
+      scene.coefficients.push_back(name);
+    }
+  } else {
+    scene.coefficients = names;
+  }
+
+  const bool has_order = table.contains("order"), has_tolerance = table.contains("tolerance");
+  if (has_order == has_tolerance)
+    throw error("order: give exactly one of 'order' (an integer in [1, " + std::to_string(model->max_order()) +
+                "]) or 'tolerance' (a number in (0, 1])");
+  for (const auto& spec : specs) {
+    const auto* node = table.get(spec.name);
+    if (node == nullptr) continue;
+    Axis axis = read_axis(spec.name, *node);
+    for (const auto& v : axis.values) spec.check(v);
+    scene.axes.push_back(std::move(axis));
+  }
+  return scene;
+}
+
+}  // namespace gkt::cli

@@ -1,0 +1,32 @@
+// Scene files: what a `gkt` run asks for (TOML). Front-end layer: talks to the library only
+// through the public model interface (gkt/transport_model.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "gkt/rational.hpp"
+#include "gkt/transport_model.hpp"
+
+namespace gkt::cli {
+
+/// One numeric scene key and the values it takes (one value unless swept).
+struct Axis {
+  std::string key;
+  std::vector<Rational> values;
+  bool swept = false;  ///< given as a list or a {from, to, points} range
+};
+
+/// A validated scene: model, requested coefficients and the parameter axes.
+struct Scene {
+  std::string model;
+  std::vector<std::string> coefficients;
+  std::vector<Axis> axes;  ///< model parameters first, then order or tolerance
+};
+
+/// Returns the scene read from `path` with `overrides` ("key=value", value in TOML syntax)
+/// applied; validates every key, type and range against `model`'s parameter list.
+/// Throws std::invalid_argument with a one-line message naming the field on bad input.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides);
+
+}  // namespace gkt::cli

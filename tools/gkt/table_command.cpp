@@ -1,0 +1,101 @@
+#include "table_command.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+
+namespace gkt::cli {
+
+namespace {
+
+std::string format_value(double x) {
+  char buffer[64];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);  // shortest round-trip
+  return {buffer, r.ptr};
+}
+
+std::string format_error(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", x);
+  return buffer;
+}
+
+std::string format_parameter(const Rational& v) {
+  Rational integer_part;
+  fmpz_tdiv_q(fmpq_numref(integer_part.raw()), fmpq_numref(v.raw()), fmpq_denref(v.raw()));
+  return integer_part == v ? v.to_string() : format_value(v.to_double());
+}
+
+}  // namespace
+
+Table compute_table(const Scene& scene, const TableOptions& options, std::vector<std::string>& warnings) {
+  auto model = make_transport_model(scene.model);
+  Table table;
+  table.model = scene.model;
+  for (const auto& axis : scene.axes)
+    if (axis.swept && axis.key != "order") {  // a swept order is the `order` column itself
+      table.columns.push_back(axis.key);
+      table.numeric.push_back(!options.exact);
+    }
+  for (const auto& c : scene.coefficients) {
+    table.columns.push_back(c);
+    table.numeric.push_back(!options.exact);
+  }
+  for (const auto& c : scene.coefficients) {
+    table.columns.push_back(c + "_error");
+    table.numeric.push_back(!options.exact);
+  }
+  table.columns.push_back("order");
+  table.numeric.push_back(true);
+
+  // Cartesian product of the axes, last axis fastest.
+  std::vector<std::size_t> index(scene.axes.size(), 0);
+  for (;;) {
+    std::map<std::string, Rational> parameters;
+    OrderRequest request;
+    std::vector<std::string> row;
+    for (std::size_t a = 0; a < scene.axes.size(); ++a) {
+      const auto& axis = scene.axes[a];
+      const Rational& v = axis.values[index[a]];
+      if (axis.key == "order") request.order = static_cast<int>(fmpz_get_si(fmpq_numref(v.raw())));
+      else if (axis.key == "tolerance") request.tolerance = v;
+      else parameters[axis.key] = v;
+      if (axis.swept && axis.key != "order") row.push_back(options.exact ? v.to_string() : format_parameter(v));
+    }
+    auto values = model->evaluate(parameters, scene.coefficients, request);
+    if (request.tolerance) {
+      // One order per row: the smallest at which every requested coefficient meets the tolerance.
+      int common = 0;
+      for (const auto& v : values) common = std::max(common, v.order);
+      for (const auto& v : values)
+        if (!v.converged)
+          warnings.push_back("tolerance " + format_error(request.tolerance->to_double()) + " not reached by order " +
+                             std::to_string(v.order) + " (estimated error " + format_error(v.error.to_double()) + ")");
+      request.tolerance.reset();
+      request.order = common;
+      auto flags = values;
+      values = model->evaluate(parameters, scene.coefficients, request);
+      for (std::size_t k = 0; k < values.size(); ++k) values[k].converged = flags[k].converged;
+    }
+    for (const auto& v : values) {
+      if (options.exact && !v.exact) throw std::invalid_argument("--exact: a requested coefficient is not rational here");
+      row.push_back(options.exact ? v.value.to_string() : format_value(v.value.to_double()));
+    }
+    for (const auto& v : values) row.push_back(options.exact ? v.error.to_string() : format_error(v.error.to_double()));
+    row.push_back(std::to_string(values.empty() ? request.order : values.front().order));
+    table.rows.push_back(std::move(row));
+
+    std::size_t a = scene.axes.size();
+    while (a > 0) {
+      --a;
+      if (++index[a] < scene.axes[a].values.size()) break;
+      index[a] = 0;
+      if (a == 0) return table;
+    }
+    if (scene.axes.empty()) return table;
+  }
+}
+
+}  // namespace gkt::cli

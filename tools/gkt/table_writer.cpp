@@ -1,0 +1,70 @@
+#include "table_writer.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+namespace gkt::cli {
+
+std::string to_csv(const Table& t) {
+  std::string out;
+  for (std::size_t c = 0; c < t.columns.size(); ++c) out += (c ? "," : "") + t.columns[c];
+  out += '\n';
+  for (const auto& row : t.rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) out += (c ? "," : "") + row[c];
+    out += '\n';
+  }
+  return out;
+}
+
+std::string to_json(const Table& t) {
+  nlohmann::ordered_json doc;
+  doc["model"] = t.model;
+  doc["columns"] = t.columns;
+  auto rows = nlohmann::ordered_json::array();
+  for (const auto& row : t.rows) {
+    nlohmann::ordered_json r;
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (t.numeric[c]) r[t.columns[c]] = nlohmann::ordered_json::parse(row[c]);
+      else r[t.columns[c]] = row[c];
+    }
+    rows.push_back(std::move(r));
+  }
+  doc["rows"] = std::move(rows);
+  return doc.dump(2) + "\n";
+}
+
+void write_output(const std::string& path, const std::string& content) {
+  if (path.empty()) {
+    std::cout << content << std::flush;
+    return;
+  }
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".gkt-tmp");
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("output: cannot write '" + temporary.string() + "'");
+    out << content;
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw std::runtime_error("output: write to '" + temporary.string() + "' failed");
+    }
+  }
+  std::error_code ec;
+  fs::rename(temporary, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error("output: cannot rename to '" + path + "': " + ec.message());
+  }
+}
+
+}  // namespace gkt::cli
