@@ -22,8 +22,8 @@ struct TruncationEstimate {
   bool converging;     ///< false if the next two corrections do not shrink
 };
 
-/// Returns v_N with error |v_{N+1} − v_N| / (1 − r), r = |v_{N+2} − v_{N+1}| / |v_{N+1} − v_N|
-/// (geometric tail; docs/theory.md §6). Needs v_N, v_{N+1}, v_{N+2}; if r ≥ 1 the error is
+/// Returns v_N with error (5/4)|v_{N+1} − v_N| / (1 − r), r = |v_{N+2} − v_{N+1}| / |v_{N+1} − v_N|
+/// (geometric tail with a 25 % margin; docs/theory.md §6). Needs v_N, v_{N+1}, v_{N+2}; if r ≥ 1 the error is
 /// |v_{N+1} − v_N| + |v_{N+2} − v_{N+1}| and `converging` is false.
 TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1, const Rational& v_n2);
 

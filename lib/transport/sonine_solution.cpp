@@ -42,7 +42,9 @@ TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1
   if (first.is_zero()) return {v_n, second, second.is_zero()};
   const Rational ratio = second / first;
   if (ratio >= Rational(1)) return {v_n, first + second, false};
-  return {v_n, first / (Rational(1) - ratio), true};
+  // The geometric tail underestimates slowly accelerating-ratio sequences by ~2 % (elastic hard
+  // spheres, N = 1..25: actual/estimate = 0.98–1.00); the 5/4 margin makes it an upper bound there.
+  return {v_n, Rational(5, 4) * first / (Rational(1) - ratio), true};
 }
 
 }  // namespace gkt

@@ -45,7 +45,7 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
   }
   for (const auto& c : scene.coefficients) {
     table.columns.push_back(c + "_error");
-    table.numeric.push_back(!options.exact);
+    table.numeric.push_back(true);  // an estimate: always a decimal, also under --exact
   }
   table.columns.push_back("order");
   table.numeric.push_back(true);
@@ -83,7 +83,7 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
       if (options.exact && !v.exact) throw std::invalid_argument("--exact: a requested coefficient is not rational here");
       row.push_back(options.exact ? v.value.to_string() : format_value(v.value.to_double()));
     }
-    for (const auto& v : values) row.push_back(options.exact ? v.error.to_string() : format_error(v.error.to_double()));
+    for (const auto& v : values) row.push_back(format_error(v.error.to_double()));
     row.push_back(std::to_string(values.empty() ? request.order : values.front().order));
     table.rows.push_back(std::move(row));
 

@@ -1,0 +1,204 @@
+// The `gkt` program: golden outputs (regression data, float-tolerant diff) and the bad-input
+// contract (one-line error naming the field, exit code 2, no output file left behind).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Runs the gkt binary with arguments (shell-quoted by the caller) and captures its streams.
+CliRun run_gkt(const std::string& args) {
+  static int counter = 0;
+  const fs::path dir = fs::temp_directory_path() / ("gkt_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path out = dir / ("out" + std::to_string(counter));
+  const fs::path err = dir / ("err" + std::to_string(counter++));
+  const std::string cmd = std::string(GKT_CLI_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int raw = std::system(cmd.c_str());
+  CliRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = read_file(out);
+  r.err = read_file(err);
+  return r;
+}
+
+std::string scene_path(const std::string& name) { return std::string(GKT_SOURCE_DIR) + "/tables/scenes/" + name; }
+std::string golden_path(const std::string& name) { return std::string(GKT_SOURCE_DIR) + "/tests/golden/" + name; }
+
+std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cells;
+    std::stringstream cs(line);
+    std::string cell;
+    while (std::getline(cs, cell, ',')) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+bool is_number(const std::string& s, double& x) {
+  char* end = nullptr;
+  x = std::strtod(s.c_str(), &end);
+  return !s.empty() && end == s.c_str() + s.size();
+}
+
+/// Float-tolerant CSV comparison: header exact; numeric cells within a relative tolerance
+/// (looser for *_error columns, printed to 3 digits); other cells exact.
+void expect_csv_close(const std::string& actual, const std::string& expected) {
+  const auto a = parse_csv(actual), e = parse_csv(expected);
+  ASSERT_EQ(a.size(), e.size());
+  ASSERT_FALSE(e.empty());
+  ASSERT_EQ(a[0], e[0]);
+  for (std::size_t r = 1; r < e.size(); ++r) {
+    ASSERT_EQ(a[r].size(), e[r].size()) << "row " << r;
+    for (std::size_t c = 0; c < e[r].size(); ++c) {
+      double x = 0, y = 0;
+      const bool error_column = e[0][c].ends_with("_error");
+      if (is_number(a[r][c], x) && is_number(e[r][c], y)) {
+        EXPECT_NEAR(x, y, (error_column ? 2e-2 : 1e-12) * std::abs(y)) << e[0][c] << " row " << r;
+      } else {
+        EXPECT_EQ(a[r][c], e[r][c]) << e[0][c] << " row " << r;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TEST(CliGolden, ConvergenceTable) {
+  const CliRun r = run_gkt("table " + scene_path("hard_spheres_convergence.toml"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("hard_spheres_convergence.csv")));
+}
+
+TEST(CliGolden, ExactTable) {
+  const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") + " --exact");
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("hard_spheres_exact.csv")));
+  // The published exact values appear verbatim (Chapman & Cowling §10.51).
+  EXPECT_NE(r.out.find("205/202,45/44"), std::string::npos);
+}
+
+TEST(CliGolden, ConvergedJson) {
+  const CliRun r = run_gkt("table " + scene_path("hard_spheres_converged.toml") + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto got = nlohmann::json::parse(r.out);
+  const auto want = nlohmann::json::parse(read_file(golden_path("hard_spheres_converged.json")));
+  ASSERT_EQ(got["columns"], want["columns"]);
+  ASSERT_EQ(got["rows"].size(), want["rows"].size());
+  for (std::size_t k = 0; k < want["rows"].size(); ++k)
+    for (const auto& [key, value] : want["rows"][k].items()) {
+      const double tol = key.ends_with("_error") ? 2e-2 : 1e-12;
+      EXPECT_NEAR(got["rows"][k][key].template get<double>(), value.template get<double>(), tol * std::abs(value.template get<double>())) << key;
+    }
+  // Pekeris & Alterman (1957): 1.016034, 1.025218.
+  EXPECT_NEAR(got["rows"][0]["shear_viscosity"].template get<double>(), 1.016034, 5e-7);
+  EXPECT_NEAR(got["rows"][0]["thermal_conductivity"].template get<double>(), 1.025218, 5e-7);
+}
+
+TEST(Cli, SetOverridesSceneKeys) {
+  const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") + " --exact --set order=2 --set 'coefficients=[\"self_diffusion\"]'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(parse_csv(r.out)[1][0], "59/58");
+}
+
+TEST(Cli, VersionAndHelp) {
+  EXPECT_EQ(run_gkt("--version").out, std::string("gkt ") + GKT_VERSION + "\n");
+  const CliRun help = run_gkt("table --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--exact"), std::string::npos);
+  const CliRun models = run_gkt("models");
+  EXPECT_NE(models.out.find("hard-spheres"), std::string::npos);
+}
+
+struct BadInput {
+  std::string label;
+  std::string scene;      // scene file content ("" = do not create one)
+  std::string extra;      // extra command-line arguments
+  std::string expect;     // substring of the one-line error (the field name)
+};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.label; }
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, OneLineErrorExitTwoNoOutput) {
+  const BadInput b = GetParam();
+  const fs::path dir = fs::temp_directory_path() / ("gkt_bad_" + std::to_string(::getpid()) + "_" + b.label);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path scene = dir / "scene.toml";
+  if (!b.scene.empty()) std::ofstream(scene) << b.scene;
+  const fs::path output = dir / "table.csv";
+  const CliRun r = run_gkt("table " + scene.string() + " --output " + output.string() + " " + b.extra);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+  EXPECT_NE(r.err.find(b.expect), std::string::npos) << r.err;
+  // Nothing left behind: neither the output nor a temporary file.
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) files += entry.path().filename() != "scene.toml";
+  EXPECT_EQ(files, 0U);
+  fs::remove_all(dir);
+}
+
+const std::string kGood = "model = \"hard-spheres\"\ndimension = 3\norder = 2\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    ::testing::Values(
+        BadInput{"unknown_key", kGood + "temperature = 2\n", "", "temperature: unknown key"},
+        BadInput{"wrong_type", "model = \"hard-spheres\"\ndimension = \"three\"\norder = 2\n", "", "dimension: must be a number"},
+        BadInput{"dimension_4", "model = \"hard-spheres\"\ndimension = 4\norder = 2\n", "", "dimension: must be 2 or 3"},
+        BadInput{"dimension_in_sweep", "model = \"hard-spheres\"\ndimension = [3, 2, 1]\norder = 2\n", "", "dimension: must be 2 or 3"},
+        BadInput{"order_zero", "model = \"hard-spheres\"\norder = 0\n", "", "order: must be an integer in [1, 40]"},
+        BadInput{"order_too_high", "model = \"hard-spheres\"\norder = 41\n", "", "order: must be an integer in [1, 40]"},
+        BadInput{"order_fraction", "model = \"hard-spheres\"\norder = 2.5\n", "", "order: must be an integer"},
+        BadInput{"tolerance_zero", "model = \"hard-spheres\"\ntolerance = 0\n", "", "tolerance: must be a number in (0, 1]"},
+        BadInput{"tolerance_negative", "model = \"hard-spheres\"\ntolerance = -1e-3\n", "", "tolerance: must be a number in (0, 1]"},
+        BadInput{"order_and_tolerance", kGood + "tolerance = 1e-6\n", "", "order: give exactly one"},
+        BadInput{"neither_order_nor_tolerance", "model = \"hard-spheres\"\n", "", "order: give exactly one"},
+        BadInput{"unknown_model", "model = \"soft-spheres\"\norder = 1\n", "", "model: unknown model \"soft-spheres\"; valid models: \"hard-spheres\""},
+        BadInput{"missing_model", "order = 1\n", "", "model: required"},
+        BadInput{"unknown_coefficient", kGood + "coefficients = [\"bulk_viscosity\"]\n", "", "coefficients: unknown coefficient"},
+        BadInput{"malformed_toml", "model = \"hard-spheres\norder = \n", "", "scene: "},
+        BadInput{"missing_file", "", "", "scene: cannot open"},
+        BadInput{"bad_range", "model = \"hard-spheres\"\norder = { from = 1, to = 3, points = 0 }\n", "", "order.points: must be"},
+        BadInput{"bad_range_key", "model = \"hard-spheres\"\norder = { from = 1, to = 3, step = 1 }\n", "", "order.step: unknown range key"},
+        BadInput{"bad_set", kGood, "--set dimension", "--set: expected KEY=VALUE"},
+        BadInput{"set_out_of_range", kGood, "--set dimension=7", "dimension: must be 2 or 3"},
+        BadInput{"bad_format", kGood, "--format xml", "--format"}),
+    [](const auto& info) { return info.param.label; });
+
+// Without a subcommand the program is misused: exit 2 and a one-line error.
+TEST(Cli, MissingSubcommandExitsTwo) {
+  const CliRun r = run_gkt("");
+  EXPECT_EQ(r.status, 2);
+}
