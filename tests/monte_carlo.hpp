@@ -31,7 +31,12 @@ struct Collision {
 class CollisionSampler {
  public:
   CollisionSampler(int d, double mi, double mj, double theta_i, double theta_j, double alpha, unsigned long seed)
-      : d_(d), mi_(mi), mj_(mj), si_(1 / std::sqrt(2 * theta_i)), sj_(1 / std::sqrt(2 * theta_j)), alpha_(alpha),
+      : d_(d),
+        mi_(mi),
+        mj_(mj),
+        si_(1 / std::sqrt(2 * theta_i)),
+        sj_(1 / std::sqrt(2 * theta_j)),
+        alpha_(alpha),
         rng_(gsl_rng_alloc(gsl_rng_mt19937)) {
     gsl_rng_set(rng_, seed);
   }

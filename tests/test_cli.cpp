@@ -115,7 +115,9 @@ TEST(CliGolden, ConvergedJson) {
   for (std::size_t k = 0; k < want["rows"].size(); ++k)
     for (const auto& [key, value] : want["rows"][k].items()) {
       const double tol = key.ends_with("_error") ? 2e-2 : 1e-12;
-      EXPECT_NEAR(got["rows"][k][key].template get<double>(), value.template get<double>(), tol * std::abs(value.template get<double>())) << key;
+      EXPECT_NEAR(got["rows"][k][key].template get<double>(), value.template get<double>(),
+                  tol * std::abs(value.template get<double>()))
+          << key;
     }
   // Pekeris & Alterman (1957): 1.016034, 1.025218.
   EXPECT_NEAR(got["rows"][0]["shear_viscosity"].template get<double>(), 1.016034, 5e-7);
@@ -123,7 +125,8 @@ TEST(CliGolden, ConvergedJson) {
 }
 
 TEST(Cli, SetOverridesSceneKeys) {
-  const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") + " --exact --set order=2 --set 'coefficients=[\"self_diffusion\"]'");
+  const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") +
+                           " --exact --set order=2 --set 'coefficients=[\"self_diffusion\"]'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(parse_csv(r.out)[1][0], "59/58");
 }
@@ -139,9 +142,9 @@ TEST(Cli, VersionAndHelp) {
 
 struct BadInput {
   std::string label;
-  std::string scene;      // scene file content ("" = do not create one)
-  std::string extra;      // extra command-line arguments
-  std::string expect;     // substring of the one-line error (the field name)
+  std::string scene;   // scene file content ("" = do not create one)
+  std::string extra;   // extra command-line arguments
+  std::string expect;  // substring of the one-line error (the field name)
 };
 
 void PrintTo(const BadInput& b, std::ostream* os) { *os << b.label; }
@@ -175,23 +178,33 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, CliBadInput,
     ::testing::Values(
         BadInput{"unknown_key", kGood + "temperature = 2\n", "", "temperature: unknown key"},
-        BadInput{"wrong_type", "model = \"hard-spheres\"\ndimension = \"three\"\norder = 2\n", "", "dimension: must be a number"},
-        BadInput{"dimension_4", "model = \"hard-spheres\"\ndimension = 4\norder = 2\n", "", "dimension: must be 2 or 3"},
-        BadInput{"dimension_in_sweep", "model = \"hard-spheres\"\ndimension = [3, 2, 1]\norder = 2\n", "", "dimension: must be 2 or 3"},
+        BadInput{"wrong_type", "model = \"hard-spheres\"\ndimension = \"three\"\norder = 2\n", "",
+                 "dimension: must be a number"},
+        BadInput{"dimension_4", "model = \"hard-spheres\"\ndimension = 4\norder = 2\n", "",
+                 "dimension: must be 2 or 3"},
+        BadInput{"dimension_in_sweep", "model = \"hard-spheres\"\ndimension = [3, 2, 1]\norder = 2\n", "",
+                 "dimension: must be 2 or 3"},
         BadInput{"order_zero", "model = \"hard-spheres\"\norder = 0\n", "", "order: must be an integer in [1, 40]"},
-        BadInput{"order_too_high", "model = \"hard-spheres\"\norder = 41\n", "", "order: must be an integer in [1, 40]"},
+        BadInput{"order_too_high", "model = \"hard-spheres\"\norder = 41\n", "",
+                 "order: must be an integer in [1, 40]"},
         BadInput{"order_fraction", "model = \"hard-spheres\"\norder = 2.5\n", "", "order: must be an integer"},
-        BadInput{"tolerance_zero", "model = \"hard-spheres\"\ntolerance = 0\n", "", "tolerance: must be a number in (0, 1]"},
-        BadInput{"tolerance_negative", "model = \"hard-spheres\"\ntolerance = -1e-3\n", "", "tolerance: must be a number in (0, 1]"},
+        BadInput{"tolerance_zero", "model = \"hard-spheres\"\ntolerance = 0\n", "",
+                 "tolerance: must be a number in (0, 1]"},
+        BadInput{"tolerance_negative", "model = \"hard-spheres\"\ntolerance = -1e-3\n", "",
+                 "tolerance: must be a number in (0, 1]"},
         BadInput{"order_and_tolerance", kGood + "tolerance = 1e-6\n", "", "order: give exactly one"},
         BadInput{"neither_order_nor_tolerance", "model = \"hard-spheres\"\n", "", "order: give exactly one"},
-        BadInput{"unknown_model", "model = \"soft-spheres\"\norder = 1\n", "", "model: unknown model \"soft-spheres\"; valid models: \"hard-spheres\""},
+        BadInput{"unknown_model", "model = \"soft-spheres\"\norder = 1\n", "",
+                 "model: unknown model \"soft-spheres\"; valid models: \"hard-spheres\""},
         BadInput{"missing_model", "order = 1\n", "", "model: required"},
-        BadInput{"unknown_coefficient", kGood + "coefficients = [\"bulk_viscosity\"]\n", "", "coefficients: unknown coefficient"},
+        BadInput{"unknown_coefficient", kGood + "coefficients = [\"bulk_viscosity\"]\n", "",
+                 "coefficients: unknown coefficient"},
         BadInput{"malformed_toml", "model = \"hard-spheres\norder = \n", "", "scene: "},
         BadInput{"missing_file", "", "", "scene: cannot open"},
-        BadInput{"bad_range", "model = \"hard-spheres\"\norder = { from = 1, to = 3, points = 0 }\n", "", "order.points: must be"},
-        BadInput{"bad_range_key", "model = \"hard-spheres\"\norder = { from = 1, to = 3, step = 1 }\n", "", "order.step: unknown range key"},
+        BadInput{"bad_range", "model = \"hard-spheres\"\norder = { from = 1, to = 3, points = 0 }\n", "",
+                 "order.points: must be"},
+        BadInput{"bad_range_key", "model = \"hard-spheres\"\norder = { from = 1, to = 3, step = 1 }\n", "",
+                 "order.step: unknown range key"},
         BadInput{"bad_set", kGood, "--set dimension", "--set: expected KEY=VALUE"},
         BadInput{"set_out_of_range", kGood, "--set dimension=7", "dimension: must be 2 or 3"},
         BadInput{"bad_format", kGood, "--format xml", "--format"}),

@@ -31,10 +31,14 @@ void PrintTo(const Case& c, std::ostream* os) { *os << c.label; }
 
 const gkt::test::Vec& velocity(const Collision& c, Slot s) {
   switch (s) {
-    case Slot::v1: return c.v1;
-    case Slot::v2: return c.v2;
-    case Slot::v1_post: return c.v1p;
-    case Slot::v2_post: return c.v2p;
+    case Slot::v1:
+      return c.v1;
+    case Slot::v2:
+      return c.v2;
+    case Slot::v1_post:
+      return c.v1p;
+    case Slot::v2_post:
+      return c.v2p;
   }
   return c.v1;
 }
@@ -61,8 +65,8 @@ TEST_P(MomentsVsMonteCarlo, LowOrders) {
   const Case k = GetParam();
   const gkt::CollisionPair pair{k.d, Rational(k.mi), Rational(k.mj), k.theta_i, k.theta_j};
   const int n_max = 2;
-  const std::pair<Slot, Slot> slot_pairs[] = {{Slot::v1, Slot::v1_post}, {Slot::v2, Slot::v1_post},
-                                              {Slot::v1, Slot::v2_post}, {Slot::v2, Slot::v1}};
+  const std::pair<Slot, Slot> slot_pairs[] = {
+      {Slot::v1, Slot::v1_post}, {Slot::v2, Slot::v1_post}, {Slot::v1, Slot::v2_post}, {Slot::v2, Slot::v1}};
   for (int rank = 0; rank <= 2; ++rank) {
     for (const auto& [a, b] : slot_pairs) {
       const auto exact = gkt::sonine_collision_moments<Rational>(pair, k.alpha, a, b, rank, n_max);
@@ -81,8 +85,7 @@ TEST_P(MomentsVsMonteCarlo, LowOrders) {
           // 5 standard errors plus a floor for entries that vanish identically.
           EXPECT_NEAR(e, mc[idx].mean, 5 * mc[idx].error + 1e-3)
               << k.label << " rank " << rank << " slots " << static_cast<int>(a) << "->" << static_cast<int>(b)
-              << " p=" << p << " q=" << q << " exact=" << exact(p, q) << " mc=" << mc[idx].mean << "±"
-              << mc[idx].error;
+              << " p=" << p << " q=" << q << " exact=" << exact(p, q) << " mc=" << mc[idx].mean << "±" << mc[idx].error;
         }
     }
   }
@@ -105,7 +108,8 @@ TEST(ReferenceCollisionIntegral, MatchesClosedForm) {
     gkt::QuadraticForm q{};
     q[0][0] = 1.5;
     q[1][1] = 1.25;
-    EXPECT_NEAR(gkt::reference_collision_integral(pair) / gkt::gaussian_collision_integral(d, 1, 7, 0.3, q), 1.0, 1e-14);
+    EXPECT_NEAR(gkt::reference_collision_integral(pair) / gkt::gaussian_collision_integral(d, 1, 7, 0.3, q), 1.0,
+                1e-14);
   }
 }
 
@@ -114,8 +118,10 @@ TEST(CollisionMoments, SymbolicAlphaAgreesWithNumeric) {
   const gkt::CollisionPair pair{3, Rational(1), Rational(3), Rational(1), Rational(1, 4)};
   const auto alpha = gkt::RationalPolynomial::variable();
   for (int rank = 0; rank <= 2; ++rank) {
-    const auto symbolic = gkt::sonine_collision_moments<gkt::RationalPolynomial>(pair, alpha, Slot::v2, Slot::v1_post, rank, 3);
-    const auto numeric = gkt::sonine_collision_moments<Rational>(pair, Rational(3, 5), Slot::v2, Slot::v1_post, rank, 3);
+    const auto symbolic =
+        gkt::sonine_collision_moments<gkt::RationalPolynomial>(pair, alpha, Slot::v2, Slot::v1_post, rank, 3);
+    const auto numeric =
+        gkt::sonine_collision_moments<Rational>(pair, Rational(3, 5), Slot::v2, Slot::v1_post, rank, 3);
     for (int p = 0; p <= 3; ++p)
       for (int q = 0; q <= 3; ++q) {
         EXPECT_EQ(symbolic(p, q).evaluate(Rational(3, 5)), numeric(p, q)) << rank << " " << p << " " << q;

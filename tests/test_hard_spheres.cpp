@@ -149,7 +149,8 @@ TEST(LinearizedOperator, InelasticConservationExactInAlpha) {
   for (int d : {2, 3}) {
     const auto vec = gkt::linearized_operator_matrix<gkt::RationalPolynomial>(d, alpha, gkt::OperatorPart::full, 1, 3);
     for (int q = 0; q <= 3; ++q) EXPECT_TRUE(vec(0, q).is_zero());
-    const auto scalar = gkt::linearized_operator_matrix<gkt::RationalPolynomial>(d, alpha, gkt::OperatorPart::full, 0, 3);
+    const auto scalar =
+        gkt::linearized_operator_matrix<gkt::RationalPolynomial>(d, alpha, gkt::OperatorPart::full, 0, 3);
     for (int q = 0; q <= 3; ++q) {
       EXPECT_TRUE(scalar(0, q).is_zero());  // number conserved
       EXPECT_TRUE(scalar(1, q).evaluate(Rational(1)).is_zero());

@@ -63,8 +63,8 @@ TEST(Sonine, OrthogonalityExact) {
         for (int k = 0; k <= p; ++k)
           for (int l = 0; l <= q; ++l)
             sum += a[k] * b[l] * Rational::rising_half(twice_m + 2, static_cast<unsigned long>(k + l));
-        EXPECT_EQ(sum, p == q ? gkt::sonine_norm(twice_m, p) : Rational(0)) << "2m=" << twice_m << " p=" << p
-                                                                              << " q=" << q;
+        EXPECT_EQ(sum, p == q ? gkt::sonine_norm(twice_m, p) : Rational(0))
+            << "2m=" << twice_m << " p=" << p << " q=" << q;
       }
   }
 }

@@ -26,8 +26,9 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
 double reference_collision_integral(const CollisionPair& pair);
 
 extern template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot,
-                                                                        Slot, int, int);
-extern template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(
-    const CollisionPair&, const RationalPolynomial&, Slot, Slot, int, int);
+                                                                         Slot, int, int);
+extern template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(const CollisionPair&,
+                                                                                             const RationalPolynomial&,
+                                                                                             Slot, Slot, int, int);
 
 }  // namespace gkt

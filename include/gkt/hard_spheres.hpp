@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "gkt/dense_matrix.hpp"
@@ -38,7 +39,8 @@ class HardSphereSonineSystem {
   int dimension_;
   std::array<int, 3> built_{-1, -1, -1};  // largest Sonine index in each matrix
   std::array<DenseMatrix<Rational>, 3> matrices_;
-  std::array<std::vector<Rational>, 3> values_;  // values_[c][N-1], filled lazily
+  std::array<std::vector<Rational>, 3> values_;                              // values_[c][N-1], filled lazily
+  std::array<std::vector<std::optional<TruncationEstimate>>, 3> estimates_;  // estimates_[c][N-1]
 };
 
 /// Returns η0 = ((d+2)Γ(d/2)/(8π^{(d−1)/2})) σ^{1−d} √(mT), the elastic first-Sonine viscosity.

@@ -30,7 +30,7 @@ DenseMatrix<Ring> linearized_operator_matrix(int dimension, const Ring& alpha, O
 double linearized_operator_prefactor(int dimension);
 
 extern template DenseMatrix<Rational> linearized_operator_matrix<Rational>(int, const Rational&, OperatorPart, int,
-                                                                          int);
+                                                                           int);
 extern template DenseMatrix<RationalPolynomial> linearized_operator_matrix<RationalPolynomial>(
     int, const RationalPolynomial&, OperatorPart, int, int);
 

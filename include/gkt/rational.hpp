@@ -45,9 +45,18 @@ class Rational {
   }
   ~Rational() { fmpq_clear(value_); }
 
-  Rational& operator+=(const Rational& b) { fmpq_add(value_, value_, b.value_); return *this; }
-  Rational& operator-=(const Rational& b) { fmpq_sub(value_, value_, b.value_); return *this; }
-  Rational& operator*=(const Rational& b) { fmpq_mul(value_, value_, b.value_); return *this; }
+  Rational& operator+=(const Rational& b) {
+    fmpq_add(value_, value_, b.value_);
+    return *this;
+  }
+  Rational& operator-=(const Rational& b) {
+    fmpq_sub(value_, value_, b.value_);
+    return *this;
+  }
+  Rational& operator*=(const Rational& b) {
+    fmpq_mul(value_, value_, b.value_);
+    return *this;
+  }
   Rational& operator/=(const Rational& b);
   /// this += a*b without a temporary.
   void add_product(const Rational& a, const Rational& b) { fmpq_addmul(value_, a.value_, b.value_); }

@@ -43,10 +43,22 @@ class RationalPolynomial {
   }
   ~RationalPolynomial() { fmpq_poly_clear(value_); }
 
-  RationalPolynomial& operator+=(const RationalPolynomial& b) { fmpq_poly_add(value_, value_, b.value_); return *this; }
-  RationalPolynomial& operator-=(const RationalPolynomial& b) { fmpq_poly_sub(value_, value_, b.value_); return *this; }
-  RationalPolynomial& operator*=(const RationalPolynomial& b) { fmpq_poly_mul(value_, value_, b.value_); return *this; }
-  RationalPolynomial& operator*=(const Rational& c) { fmpq_poly_scalar_mul_fmpq(value_, value_, c.raw()); return *this; }
+  RationalPolynomial& operator+=(const RationalPolynomial& b) {
+    fmpq_poly_add(value_, value_, b.value_);
+    return *this;
+  }
+  RationalPolynomial& operator-=(const RationalPolynomial& b) {
+    fmpq_poly_sub(value_, value_, b.value_);
+    return *this;
+  }
+  RationalPolynomial& operator*=(const RationalPolynomial& b) {
+    fmpq_poly_mul(value_, value_, b.value_);
+    return *this;
+  }
+  RationalPolynomial& operator*=(const Rational& c) {
+    fmpq_poly_scalar_mul_fmpq(value_, value_, c.raw());
+    return *this;
+  }
   RationalPolynomial& operator/=(const Rational& c);
   void add_product(const RationalPolynomial& a, const RationalPolynomial& b);
   void sub_product(const RationalPolynomial& a, const RationalPolynomial& b);

@@ -17,9 +17,9 @@ Rational solve_first_component(const DenseMatrix<Rational>& l, int first, int n)
 
 /// A Sonine-order sequence value with its estimated truncation error.
 struct TruncationEstimate {
-  Rational value;      ///< the value at the requested order N
-  Rational error;      ///< estimated |value − converged value|
-  bool converging;     ///< false if the next two corrections do not shrink
+  Rational value;   ///< the value at the requested order N
+  Rational error;   ///< estimated |value − converged value|
+  bool converging;  ///< false if the next two corrections do not shrink
 };
 
 /// Returns v_N with error (5/4)|v_{N+1} − v_N| / (1 − r), r = |v_{N+2} − v_{N+1}| / |v_{N+1} − v_N|

@@ -37,11 +37,11 @@ struct OrderRequest {
 
 /// One coefficient at one parameter point.
 struct CoefficientValue {
-  Rational value;     ///< reduced value (exact when `exact`)
-  Rational error;     ///< estimated truncation error
-  int order = 0;      ///< Sonine order used
+  Rational value;         ///< reduced value (exact when `exact`)
+  Rational error;         ///< estimated truncation error
+  int order = 0;          ///< Sonine order used
   bool converged = true;  ///< false if the tolerance was not met or the series does not converge
-  bool exact = true;  ///< value and error are exact rationals
+  bool exact = true;      ///< value and error are exact rationals
 };
 
 /// A transport model: named coefficients as functions of named parameters.

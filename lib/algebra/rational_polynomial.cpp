@@ -58,8 +58,10 @@ std::string RationalPolynomial::to_string(const std::string& variable) const {
     const Rational c = coefficient(k);
     if (c.is_zero()) continue;
     const bool negative = c.sign() < 0;
-    if (!first) out << (negative ? " - " : " + ");
-    else if (negative) out << '-';
+    if (!first)
+      out << (negative ? " - " : " + ");
+    else if (negative)
+      out << '-';
     first = false;
     const Rational a = c.abs();
     const bool unit = a == Rational(1);

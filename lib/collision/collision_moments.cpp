@@ -105,8 +105,8 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
   dq[2][a][b] = Rational(-1, 2);
   dq[2][b][a] = Rational(-1, 2);
   const int extra = rank == 2 ? 1 : 0;
-  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq,
-                                                                  {n_max + extra, n_max + extra, rank});
+  const auto f =
+      detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq, {n_max + extra, n_max + extra, rank});
   auto moment = [&](int k, int kp, int j) {  // ⟨x_a^k x_b^kp (u_a·u_b)^j⟩ / J0
     Ring v = f(k, kp, j);
     detail::scale(v, Rational::factorial(static_cast<unsigned long>(k)) *
@@ -131,9 +131,9 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
 }
 
 template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot, Slot,
-                                                                 int, int);
+                                                                  int, int);
 template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(const CollisionPair&,
-                                                                                     const RationalPolynomial&, Slot,
-                                                                                     Slot, int, int);
+                                                                                      const RationalPolynomial&, Slot,
+                                                                                      Slot, int, int);
 
 }  // namespace gkt

@@ -34,6 +34,6 @@ DenseMatrix<Ring> linearized_operator_matrix(int dimension, const Ring& alpha, O
 
 template DenseMatrix<Rational> linearized_operator_matrix<Rational>(int, const Rational&, OperatorPart, int, int);
 template DenseMatrix<RationalPolynomial> linearized_operator_matrix<RationalPolynomial>(int, const RationalPolynomial&,
-                                                                                       OperatorPart, int, int);
+                                                                                        OperatorPart, int, int);
 
 }  // namespace gkt

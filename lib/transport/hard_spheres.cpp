@@ -15,8 +15,8 @@ struct Setup {
   int rank;
   int first;  // first Sonine index kept (1 for heat: S_0 c is momentum, conserved)
 };
-constexpr std::array<Setup, 3> kSetups{{{OperatorPart::full, 2, 0}, {OperatorPart::full, 1, 1},
-                                        {OperatorPart::tracer, 1, 0}}};
+constexpr std::array<Setup, 3> kSetups{
+    {{OperatorPart::full, 2, 0}, {OperatorPart::full, 1, 1}, {OperatorPart::tracer, 1, 0}}};
 }  // namespace
 
 HardSphereSonineSystem::HardSphereSonineSystem(int dimension) : dimension_(dimension) {
@@ -29,8 +29,8 @@ void HardSphereSonineSystem::ensure_built(std::size_t c, int n_max) {
   // Only the matrix asked for is built; with headroom, so that stepping through orders one
   // by one does not rebuild each time.
   const int target = std::max(n_max, std::min(2 * built_[c], kHardSphereMaxOrder + 3));
-  matrices_[c] = linearized_operator_matrix<Rational>(dimension_, Rational(1), kSetups[c].part, kSetups[c].rank,
-                                                      target);
+  matrices_[c] =
+      linearized_operator_matrix<Rational>(dimension_, Rational(1), kSetups[c].part, kSetups[c].rank, target);
   built_[c] = target;
 }
 
@@ -56,15 +56,21 @@ TruncationEstimate HardSphereSonineSystem::estimate(HardSphereCoefficient c, int
     throw std::invalid_argument("order: must be in [1, " + std::to_string(kHardSphereMaxOrder) + "], got " +
                                 std::to_string(order));
   const auto k = static_cast<std::size_t>(c);
-  ensure_built(k, kSetups[k].first + order + 2);
-  return estimate_truncation(reduced_coefficient(c, order), reduced_coefficient(c, order + 1),
-                             reduced_coefficient(c, order + 2));
+  auto& cache = estimates_[k];
+  const auto slot = static_cast<std::size_t>(order) - 1;
+  if (cache.size() <= slot) cache.resize(slot + 1);
+  if (!cache[slot]) {
+    ensure_built(k, kSetups[k].first + order + 2);
+    cache[slot] = estimate_truncation(reduced_coefficient(c, order), reduced_coefficient(c, order + 1),
+                                      reduced_coefficient(c, order + 2));
+  }
+  return *cache[slot];
 }
 
 double reference_shear_viscosity(int dimension, double mass, double temperature, double diameter) {
   const double d = dimension;
-  return (d + 2) * std::tgamma(d / 2) / (8 * std::pow(std::numbers::pi, (d - 1) / 2)) *
-         std::pow(diameter, 1 - d) * std::sqrt(mass * temperature);
+  return (d + 2) * std::tgamma(d / 2) / (8 * std::pow(std::numbers::pi, (d - 1) / 2)) * std::pow(diameter, 1 - d) *
+         std::sqrt(mass * temperature);
 }
 
 double reference_thermal_conductivity(int dimension, double mass, double temperature, double diameter) {

@@ -20,9 +20,7 @@ std::string ParameterSpec::allowed() const {
 }
 
 void ParameterSpec::check(const Rational& v) const {
-  auto fail = [&]() {
-    return std::invalid_argument(name + ": must be " + allowed() + ", got " + v.to_string());
-  };
+  auto fail = [&]() { return std::invalid_argument(name + ": must be " + allowed() + ", got " + v.to_string()); };
   if (kind == Kind::integer) {
     Rational floor_part;
     fmpz_fdiv_q(fmpq_numref(floor_part.raw()), fmpq_numref(v.raw()), fmpq_denref(v.raw()));
@@ -77,7 +75,8 @@ class HardSphereModel final : public TransportModel {
     std::vector<CoefficientValue> out;
     for (const auto& c : coefficients) {
       const auto it = std::find(names.begin(), names.end(), c);
-      if (it == names.end()) throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for model " + name());
+      if (it == names.end())
+        throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for model " + name());
       const auto which = static_cast<HardSphereCoefficient>(it - names.begin());
       out.push_back(choose_order(order, max_order(), [&](int n) { return system->estimate(which, n); }));
     }

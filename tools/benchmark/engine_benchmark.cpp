@@ -1,1 +1,100 @@
-int main() { return 0; }
+// Speed against error of the exact Sonine engine (docs/performance.md).
+//
+//   build/bin/gkt_benchmark --benchmark_min_time=0.2
+//
+// Counters: err_eta, err_kappa = |value at order N − value at order 40| (3D); these are the
+// actual truncation errors, not estimates.
+#include <benchmark/benchmark.h>
+
+#include <map>
+
+#include "gkt/hard_spheres.hpp"
+#include "gkt/linearized_operator.hpp"
+#include "gkt/transport_model.hpp"
+
+namespace {
+
+using gkt::HardSphereCoefficient;
+using gkt::Rational;
+
+const std::map<int, std::pair<double, double>>& actual_errors() {
+  static const auto table = [] {
+    std::map<int, std::pair<double, double>> t;
+    gkt::HardSphereSonineSystem s(3);
+    const Rational eta = s.reduced_coefficient(HardSphereCoefficient::shear_viscosity, 40);
+    const Rational kappa = s.reduced_coefficient(HardSphereCoefficient::thermal_conductivity, 40);
+    for (int n = 1; n <= 20; ++n)
+      t[n] = {(s.reduced_coefficient(HardSphereCoefficient::shear_viscosity, n) - eta).abs().to_double(),
+              (s.reduced_coefficient(HardSphereCoefficient::thermal_conductivity, n) - kappa).abs().to_double()};
+    return t;
+  }();
+  return table;
+}
+
+/// Cold: a new system each iteration (nothing cached), η and κ at order N, exact.
+void ColdEtaKappa(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    gkt::HardSphereSonineSystem s(3);
+    benchmark::DoNotOptimize(s.reduced_coefficient(HardSphereCoefficient::shear_viscosity, n));
+    benchmark::DoNotOptimize(s.reduced_coefficient(HardSphereCoefficient::thermal_conductivity, n));
+  }
+  state.counters["err_eta"] = actual_errors().at(n).first;
+  state.counters["err_kappa"] = actual_errors().at(n).second;
+}
+BENCHMARK(ColdEtaKappa)->DenseRange(1, 20)->Unit(benchmark::kMillisecond);
+
+/// Cold, with the error estimate (orders N, N+1, N+2), as `gkt table` does.
+void ColdEtaKappaWithErrorEstimate(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    gkt::HardSphereSonineSystem s(3);
+    benchmark::DoNotOptimize(s.estimate(HardSphereCoefficient::shear_viscosity, n));
+    benchmark::DoNotOptimize(s.estimate(HardSphereCoefficient::thermal_conductivity, n));
+  }
+}
+BENCHMARK(ColdEtaKappaWithErrorEstimate)
+    ->Arg(1)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(12)
+    ->Arg(16)
+    ->Arg(20)
+    ->Unit(benchmark::kMillisecond);
+
+/// The engine alone: exact tensor (viscosity) matrix up to Sonine index N, numeric α.
+void OperatorMatrixExact(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(gkt::linearized_operator_matrix<Rational>(3, Rational(1), gkt::OperatorPart::full, 2, n));
+}
+BENCHMARK(OperatorMatrixExact)->Arg(4)->Arg(8)->Arg(16)->Arg(24)->Arg(32)->Arg(40)->Unit(benchmark::kMillisecond);
+
+/// The engine with α symbolic (entries are polynomials in α over Q).
+void OperatorMatrixSymbolicAlpha(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const auto alpha = gkt::RationalPolynomial::variable();
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        gkt::linearized_operator_matrix<gkt::RationalPolynomial>(3, alpha, gkt::OperatorPart::full, 2, n));
+}
+BENCHMARK(OperatorMatrixSymbolicAlpha)->Arg(2)->Arg(4)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
+
+/// A sweep of 10⁴ points through the model interface that reuses the matrices: tolerances
+/// from 1e-3 to 1e-10 (each point picks its own order), all three coefficients, 3D.
+void Sweep10kReusingMatrices(benchmark::State& state) {
+  for (auto _ : state) {
+    auto model = gkt::make_transport_model("hard-spheres");
+    const std::vector<std::string> all{"shear_viscosity", "thermal_conductivity", "self_diffusion"};
+    for (int k = 0; k < 10000; ++k) {
+      gkt::OrderRequest request;
+      request.tolerance = Rational(1, 1000) * Rational(1, 10).pow(k % 8);
+      benchmark::DoNotOptimize(model->evaluate({{"dimension", Rational(3)}}, all, request));
+    }
+  }
+}
+BENCHMARK(Sweep10kReusingMatrices)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

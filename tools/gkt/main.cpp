@@ -41,8 +41,9 @@ int run_models() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"gkt: Chapman-Enskog transport coefficients of granular and molecular gases from exact "
-               "Sonine expansions"};
+  CLI::App app{
+      "gkt: Chapman-Enskog transport coefficients of granular and molecular gases from exact "
+      "Sonine expansions"};
   app.set_version_flag("--version", std::string("gkt ") + GKT_VERSION);
   app.require_subcommand(1);
 

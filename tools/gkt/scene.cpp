@@ -56,7 +56,8 @@ Axis read_axis(const std::string& key, const toml::node& node) {
     const long points = static_cast<long>(points_node->get());
     axis.swept = true;
     for (long k = 0; k < points; ++k)
-      axis.values.push_back(points == 1 ? from : from + (to - from) * Rational(k, static_cast<unsigned long>(points - 1)));
+      axis.values.push_back(points == 1 ? from
+                                        : from + (to - from) * Rational(k, static_cast<unsigned long>(points - 1)));
     return axis;
   }
   axis.values.push_back(exact_number(node, key));

@@ -59,9 +59,12 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
     for (std::size_t a = 0; a < scene.axes.size(); ++a) {
       const auto& axis = scene.axes[a];
       const Rational& v = axis.values[index[a]];
-      if (axis.key == "order") request.order = static_cast<int>(fmpz_get_si(fmpq_numref(v.raw())));
-      else if (axis.key == "tolerance") request.tolerance = v;
-      else parameters[axis.key] = v;
+      if (axis.key == "order")
+        request.order = static_cast<int>(fmpz_get_si(fmpq_numref(v.raw())));
+      else if (axis.key == "tolerance")
+        request.tolerance = v;
+      else
+        parameters[axis.key] = v;
       if (axis.swept && axis.key != "order") row.push_back(options.exact ? v.to_string() : format_parameter(v));
     }
     auto values = model->evaluate(parameters, scene.coefficients, request);
@@ -80,7 +83,8 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
       for (std::size_t k = 0; k < values.size(); ++k) values[k].converged = flags[k].converged;
     }
     for (const auto& v : values) {
-      if (options.exact && !v.exact) throw std::invalid_argument("--exact: a requested coefficient is not rational here");
+      if (options.exact && !v.exact)
+        throw std::invalid_argument("--exact: a requested coefficient is not rational here");
       row.push_back(options.exact ? v.value.to_string() : format_value(v.value.to_double()));
     }
     for (const auto& v : values) row.push_back(format_error(v.error.to_double()));

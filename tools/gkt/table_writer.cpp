@@ -13,12 +13,15 @@ namespace gkt::cli {
 
 std::string to_csv(const Table& t) {
   std::string out;
-  for (std::size_t c = 0; c < t.columns.size(); ++c) out += (c ? "," : "") + t.columns[c];
-  out += '\n';
-  for (const auto& row : t.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) out += (c ? "," : "") + row[c];
+  auto append_line = [&out](const std::vector<std::string>& cells) {
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (c > 0) out += ',';
+      out += cells[c];
+    }
     out += '\n';
-  }
+  };
+  append_line(t.columns);
+  for (const auto& row : t.rows) append_line(row);
   return out;
 }
 
@@ -30,8 +33,10 @@ std::string to_json(const Table& t) {
   for (const auto& row : t.rows) {
     nlohmann::ordered_json r;
     for (std::size_t c = 0; c < row.size(); ++c) {
-      if (t.numeric[c]) r[t.columns[c]] = nlohmann::ordered_json::parse(row[c]);
-      else r[t.columns[c]] = row[c];
+      if (t.numeric[c])
+        r[t.columns[c]] = nlohmann::ordered_json::parse(row[c]);
+      else
+        r[t.columns[c]] = row[c];
     }
     rows.push_back(std::move(r));
   }
@@ -46,7 +51,10 @@ void write_output(const std::string& path, const std::string& content) {
   }
   namespace fs = std::filesystem;
   const fs::path target(path);
-  const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".gkt-tmp");
+  std::string temporary_name = target.filename().string();
+  temporary_name.insert(0, 1, '.');
+  temporary_name.append(".gkt-tmp");
+  const fs::path temporary = target.parent_path() / temporary_name;
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error("output: cannot write '" + temporary.string() + "'");

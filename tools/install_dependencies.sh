@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs gkt's build and test dependencies from Debian packages (Debian 12 "bookworm").
+# Skips apt-get entirely when every package is already installed.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libflint-dev libgmp-dev libmpfr-dev   # exact arithmetic (FLINT fmpq/fmpq_poly/fmpq_mat, MPFR rounding)
+  libeigen3-dev libgsl-dev              # floating-point linear algebra; GSL RNG for Monte Carlo checks
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev   # scenes, command line, JSON output
+  libgtest-dev libbenchmark-dev         # tests and benchmarks
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "install_dependencies: all ${#packages[@]} packages present"
+  exit 0
+fi
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+echo "install_dependencies: installing ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
