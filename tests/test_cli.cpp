@@ -124,6 +124,21 @@ TEST(CliGolden, ConvergedJson) {
   EXPECT_NEAR(got["rows"][0]["thermal_conductivity"].template get<double>(), 1.025218, 5e-7);
 }
 
+TEST(CliGolden, HcsFirstSonineExact) {
+  const CliRun r = run_gkt("table " + scene_path("hcs_first_sonine.toml") + " --exact");
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("hcs_first_sonine.csv")));
+  // van Noije & Ernst (1998) at α = 1/2, 3D: a2 = 16/305 = 4/76.25.
+  EXPECT_NE(r.out.find("1/2,16/305,"), std::string::npos);
+}
+
+TEST(CliGolden, HcsCumulants) {
+  const CliRun r =
+      run_gkt("table " + scene_path("hcs_cumulants.toml") + " --set 'alpha=[1, 0.9, 0.7]' --set tolerance=1e-8");
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("hcs_cumulants.csv")));
+}
+
 TEST(Cli, SetOverridesSceneKeys) {
   const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") +
                            " --exact --set order=2 --set 'coefficients=[\"self_diffusion\"]'");
@@ -207,7 +222,25 @@ INSTANTIATE_TEST_SUITE_P(
                  "order.step: unknown range key"},
         BadInput{"bad_set", kGood, "--set dimension", "--set: expected KEY=VALUE"},
         BadInput{"set_out_of_range", kGood, "--set dimension=7", "dimension: must be 2 or 3"},
-        BadInput{"bad_format", kGood, "--format xml", "--format"}),
+        BadInput{"bad_format", kGood, "--format xml", "--format"},
+        BadInput{"alpha_zero", "model = \"smooth-inelastic\"\nalpha = 0\norder = 1\n", "",
+                 "alpha: must be a number in (0, 1], got 0"},
+        BadInput{"alpha_above_one", "model = \"smooth-inelastic\"\nalpha = 1.5\norder = 1\n", "",
+                 "alpha: must be a number in (0, 1], got 3/2"},
+        BadInput{"alpha_in_sweep", "model = \"smooth-inelastic\"\nalpha = [0.5, -0.1]\norder = 1\n", "",
+                 "alpha: must be a number in (0, 1]"},
+        BadInput{"unknown_hcs", "model = \"smooth-inelastic\"\nhcs = \"quadratic\"\norder = 1\n", "",
+                 "hcs: must be one of \"nonlinear\", \"linear\""},
+        BadInput{"hcs_not_string", "model = \"smooth-inelastic\"\nhcs = 2\norder = 1\n", "", "hcs: must be one of"},
+        BadInput{"linear_order_two", "model = \"smooth-inelastic\"\nhcs = \"linear\"\nalpha = 0.5\norder = 2\n", "",
+                 "hcs: \"linear\" is the first Sonine approximation"},
+        BadInput{"linear_a3",
+                 "model = \"smooth-inelastic\"\nhcs = \"linear\"\nalpha = 0.5\norder = 1\ncoefficients = [\"a3\"]\n",
+                 "", "coefficients: a3 is not computed"},
+        BadInput{"exact_not_rational", "model = \"smooth-inelastic\"\nalpha = 0.5\norder = 2\n", "--exact",
+                 "--exact: a requested coefficient is not a rational number"},
+        BadInput{"order_above_model_max", "model = \"smooth-inelastic\"\nalpha = 0.5\norder = 16\n", "",
+                 "order: must be an integer in [1, 15]"}),
     [](const auto& info) { return info.param.label; });
 
 // Without a subcommand the program is misused: exit 2 and a one-line error.

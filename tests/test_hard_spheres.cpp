@@ -171,10 +171,10 @@ TEST(ModelRegistry, NamesAndTolerance) {
   auto m = gkt::make_transport_model("hard-spheres");
   gkt::OrderRequest request;
   request.tolerance = Rational(1, 1000000);
-  const auto v = m->evaluate({{"dimension", Rational(3)}}, {"shear_viscosity"}, request);
+  const auto v = m->evaluate({{{"dimension", Rational(3)}}, {}}, {"shear_viscosity"}, request);
   ASSERT_EQ(v.size(), 1U);
   EXPECT_LT(v[0].error, Rational(1, 1000000));
   gkt::HardSphereSonineSystem s(3);
   EXPECT_GE(s.estimate(HardSphereCoefficient::shear_viscosity, v[0].order - 1).error, Rational(1, 1000000));
-  EXPECT_THROW((void)m->evaluate({{"dimension", Rational(4)}}, {"shear_viscosity"}, {}), std::invalid_argument);
+  EXPECT_THROW((void)m->evaluate({{{"dimension", Rational(4)}}, {}}, {"shear_viscosity"}, {}), std::invalid_argument);
 }

@@ -5,6 +5,8 @@
 // m = d/2 − 1 + r, Y_0 = 1, Y_1 = c, Y_2 = c c − (c²/d) I (traceless).
 #pragma once
 
+#include <vector>
+
 #include "gkt/collision_rule.hpp"
 #include "gkt/dense_matrix.hpp"
 #include "gkt/rational.hpp"
@@ -21,10 +23,30 @@ template <class Ring>
 DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring& alpha, Slot unknown, Slot test,
                                            int rank, int n_max);
 
+/// Table of scalar three-slot moments E(a, b, c) = ⟨X1^a X2^b X1'^c⟩ / J0 (X = θu²), a ≤ 2K,
+/// b ≤ K, c ≤ K; the loss moments ⟨X1^{a+c} X2^b⟩/J0 are the entries with c = 0.
+template <class Ring>
+struct ScalarMomentTable {
+  int k_max = 0;
+  std::vector<Ring> values;  ///< index (a·(K+1) + b)·(K+1) + c
+  [[nodiscard]] const Ring& operator()(int a, int b, int c) const {
+    return values[(static_cast<std::size_t>(a) * (k_max + 1) + b) * (k_max + 1) + c];
+  }
+};
+
+/// Returns E(a, b, c) = ⟨X1^a X2^b X1'^c⟩/J0 for the pair (exact), the building block of the
+/// nonlinear (bilinear) collision moments of the homogeneous cooling state (theory.md §9).
+template <class Ring>
+ScalarMomentTable<Ring> scalar_collision_moments(const CollisionPair& pair, const Ring& alpha, int k_max);
+
 /// Returns J0 = ∫dv1 dv2 dσ̂ Θ(σ̂·g)(σ̂·g) e^{−θ_i v1² − θ_j v2²} = K_d √(θ_i+θ_j) (θ_iθ_j)^{−(d+1)/2}
 /// (velocity units of the pair's θ; double precision).
 double reference_collision_integral(const CollisionPair& pair);
 
+extern template ScalarMomentTable<Rational> scalar_collision_moments<Rational>(const CollisionPair&, const Rational&,
+                                                                               int);
+extern template ScalarMomentTable<RationalPolynomial> scalar_collision_moments<RationalPolynomial>(
+    const CollisionPair&, const RationalPolynomial&, int);
 extern template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot,
                                                                          Slot, int, int);
 extern template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(const CollisionPair&,

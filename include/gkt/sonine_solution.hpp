@@ -22,9 +22,9 @@ struct TruncationEstimate {
   bool converging;  ///< false if the next two corrections do not shrink
 };
 
-/// Returns v_N with error (5/4)|v_{N+1} − v_N| / (1 − r), r = |v_{N+2} − v_{N+1}| / |v_{N+1} − v_N|
-/// (geometric tail with a 25 % margin; docs/theory.md §6). Needs v_N, v_{N+1}, v_{N+2}; if r ≥ 1 the error is
-/// |v_{N+1} − v_N| + |v_{N+2} − v_{N+1}| and `converging` is false.
+/// Returns v_N with error (5/4)|Δ1|/(1 − r), Δ1 = v_{N+1} − v_N, r = Δ2/Δ1 (signed),
+/// Δ2 = v_{N+2} − v_{N+1}: the geometric tail, monotone or alternating, with a 25 % margin
+/// (docs/theory.md §6). If |r| ≥ 1 the error is |Δ1| + |Δ2| and `converging` is false.
 TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1, const Rational& v_n2);
 
 }  // namespace gkt

@@ -12,9 +12,10 @@
 
 namespace gkt {
 
-/// A model parameter: its key, kind and allowed closed/open range (used to validate input).
+/// A model parameter: its key, kind and allowed closed/open range or choices (used to validate
+/// input).
 struct ParameterSpec {
-  enum class Kind { integer, real };
+  enum class Kind { integer, real, choice };
   std::string name;
   Kind kind = Kind::real;
   Rational min, max;
@@ -22,10 +23,23 @@ struct ParameterSpec {
   bool max_inclusive = true;
   Rational default_value;
   std::string description;
+  std::vector<std::string> choices;  ///< allowed strings of a `choice` parameter (first = default)
   /// Returns a one-line description of the allowed values, e.g. "an integer in [2, 3]".
   [[nodiscard]] std::string allowed() const;
   /// Throws std::invalid_argument "<name>: must be …, got …" if v is not allowed.
   void check(const Rational& v) const;
+  /// Throws std::invalid_argument "<name>: must be one of …, got …" if c is not a choice.
+  void check(const std::string& c) const;
+};
+
+/// The parameters of one evaluation: numbers (exact) and named choices.
+struct ParameterPoint {
+  std::map<std::string, Rational> numbers;
+  std::map<std::string, std::string> choices;
+  /// Returns the number `key`, or `fallback` if absent.
+  [[nodiscard]] Rational number(const std::string& key, const Rational& fallback) const;
+  /// Returns the choice `key`, or `fallback` if absent.
+  [[nodiscard]] std::string choice(const std::string& key, const std::string& fallback) const;
 };
 
 /// Sonine order to use: a fixed order, or the smallest order whose estimated truncation
@@ -42,6 +56,7 @@ struct CoefficientValue {
   int order = 0;          ///< Sonine order used
   bool converged = true;  ///< false if the tolerance was not met or the series does not converge
   bool exact = true;      ///< value and error are exact rationals
+  bool defined = true;    ///< false if no value with an error estimate exists at this order
 };
 
 /// A transport model: named coefficients as functions of named parameters.
@@ -58,7 +73,7 @@ class TransportModel {
   [[nodiscard]] virtual int max_order() const = 0;
   /// Returns the requested coefficients at one parameter point (reduced as in
   /// docs/conventions.md), computing only those; state is reused between calls.
-  virtual std::vector<CoefficientValue> evaluate(const std::map<std::string, Rational>& parameters,
+  virtual std::vector<CoefficientValue> evaluate(const ParameterPoint& parameters,
                                                  const std::vector<std::string>& coefficients,
                                                  const OrderRequest& order) = 0;
 };

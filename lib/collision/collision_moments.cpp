@@ -130,6 +130,36 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
   return contract_with_sonine(sonine, y, n_max);
 }
 
+template <class Ring>
+ScalarMomentTable<Ring> scalar_collision_moments(const CollisionPair& pair, const Ring& alpha, int k_max) {
+  pair.validate();
+  if (k_max < 0) throw std::invalid_argument("k_max: must be >= 0");
+  std::array<detail::ExactForm, 3> dq{};
+  dq[0][0][0] = -pair.theta_i;  // x0 ↔ X1
+  dq[1][1][1] = -pair.theta_j;  // x1 ↔ X2
+  dq[2][2][2] = -pair.theta_i;  // x2 ↔ X1'
+  const auto f =
+      detail::expand_gaussian_collision_integral<Ring>(pair, alpha, reference_form(pair), dq, {2 * k_max, k_max, k_max});
+  ScalarMomentTable<Ring> table;
+  table.k_max = k_max;
+  table.values.reserve(f.coefficients.size());
+  for (int a = 0; a <= 2 * k_max; ++a)
+    for (int b = 0; b <= k_max; ++b)
+      for (int c = 0; c <= k_max; ++c) {
+        Ring v = f(a, b, c);  // (4.1): ⟨X1^a X2^b X1'^c⟩/J0 = a! b! c! f_abc
+        detail::scale(v, Rational::factorial(static_cast<unsigned long>(a)) *
+                             Rational::factorial(static_cast<unsigned long>(b)) *
+                             Rational::factorial(static_cast<unsigned long>(c)));
+        table.values.push_back(std::move(v));
+      }
+  return table;
+}
+
+template ScalarMomentTable<Rational> scalar_collision_moments<Rational>(const CollisionPair&, const Rational&, int);
+template ScalarMomentTable<RationalPolynomial> scalar_collision_moments<RationalPolynomial>(const CollisionPair&,
+                                                                                         const RationalPolynomial&,
+                                                                                         int);
+
 template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot, Slot,
                                                                   int, int);
 template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(const CollisionPair&,

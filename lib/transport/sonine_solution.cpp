@@ -37,14 +37,16 @@ Rational solve_first_component(const DenseMatrix<Rational>& l, int first, int n)
 }
 
 TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1, const Rational& v_n2) {
-  const Rational first = (v_n1 - v_n).abs();
-  const Rational second = (v_n2 - v_n1).abs();
-  if (first.is_zero()) return {v_n, second, second.is_zero()};
+  const Rational first = v_n1 - v_n;
+  const Rational second = v_n2 - v_n1;
+  if (first.is_zero()) return {v_n, second.abs(), second.is_zero()};
+  // Signed ratio: monotone (r > 0) and alternating (r < 0) geometric tails both sum to
+  // first/(1 − r).
   const Rational ratio = second / first;
-  if (ratio >= Rational(1)) return {v_n, first + second, false};
+  if (ratio.abs() >= Rational(1)) return {v_n, first.abs() + second.abs(), false};
   // The geometric tail underestimates slowly accelerating-ratio sequences by ~2 % (elastic hard
   // spheres, N = 1..25: actual/estimate = 0.98–1.00); the 5/4 margin makes it an upper bound there.
-  return {v_n, Rational(5, 4) * first / (Rational(1) - ratio), true};
+  return {v_n, Rational(5, 4) * first.abs() / (Rational(1) - ratio), true};
 }
 
 }  // namespace gkt

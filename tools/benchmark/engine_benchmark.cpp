@@ -89,7 +89,7 @@ void Sweep10kReusingMatrices(benchmark::State& state) {
     for (int k = 0; k < 10000; ++k) {
       gkt::OrderRequest request;
       request.tolerance = Rational(1, 1000) * Rational(1, 10).pow(k % 8);
-      benchmark::DoNotOptimize(model->evaluate({{"dimension", Rational(3)}}, all, request));
+      benchmark::DoNotOptimize(model->evaluate({{{"dimension", Rational(3)}}, {}}, all, request));
     }
   }
 }

@@ -106,10 +106,24 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   const auto model = make_transport_model(scene.model);  // throws on unknown names
 
   std::vector<ParameterSpec> specs = model->parameters();
-  specs.push_back({"order", ParameterSpec::Kind::integer, Rational(1), Rational(model->max_order()), true, true,
-                   Rational(1), "Sonine order (number of polynomials)"});
-  specs.push_back({"tolerance", ParameterSpec::Kind::real, Rational(0), Rational(1), false, true, Rational(0),
-                   "target estimated truncation error"});
+  specs.push_back({"order",
+                   ParameterSpec::Kind::integer,
+                   Rational(1),
+                   Rational(model->max_order()),
+                   true,
+                   true,
+                   Rational(1),
+                   "Sonine order (number of polynomials)",
+                   {}});
+  specs.push_back({"tolerance",
+                   ParameterSpec::Kind::real,
+                   Rational(0),
+                   Rational(1),
+                   false,
+                   true,
+                   Rational(0),
+                   "target estimated truncation error",
+                   {}});
 
   std::set<std::string> valid_keys{"model", "coefficients"};
   for (const auto& s : specs) valid_keys.insert(s.name);
@@ -148,6 +162,15 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   for (const auto& spec : specs) {
     const auto* node = table.get(spec.name);
     if (node == nullptr) continue;
+    if (spec.kind == ParameterSpec::Kind::choice) {
+      if (!node->is_string()) throw error(spec.name + ": must be " + spec.allowed());
+      const std::string value = node->as_string()->get();
+      spec.check(value);
+      scene.choices[spec.name] = value;
+      continue;
+    }
+    if (node->is_string())
+      throw error(spec.name + ": must be a number, a list of numbers or { from = a, to = b, points = k }");
     Axis axis = read_axis(spec.name, *node);
     for (const auto& v : axis.values) spec.check(v);
     scene.axes.push_back(std::move(axis));

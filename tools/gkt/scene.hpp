@@ -2,6 +2,7 @@
 // through the public model interface (gkt/transport_model.hpp).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,8 @@ struct Axis {
 struct Scene {
   std::string model;
   std::vector<std::string> coefficients;
-  std::vector<Axis> axes;  ///< model parameters first, then order or tolerance
+  std::vector<Axis> axes;                      ///< model parameters first, then order or tolerance
+  std::map<std::string, std::string> choices;  ///< choice parameters (e.g. hcs = "linear")
 };
 
 /// Returns the scene read from `path` with `overrides` ("key=value", value in TOML syntax)

@@ -53,7 +53,8 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
   // Cartesian product of the axes, last axis fastest.
   std::vector<std::size_t> index(scene.axes.size(), 0);
   for (;;) {
-    std::map<std::string, Rational> parameters;
+    ParameterPoint parameters;
+    parameters.choices = scene.choices;
     OrderRequest request;
     std::vector<std::string> row;
     for (std::size_t a = 0; a < scene.axes.size(); ++a) {
@@ -64,7 +65,7 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
       else if (axis.key == "tolerance")
         request.tolerance = v;
       else
-        parameters[axis.key] = v;
+        parameters.numbers[axis.key] = v;
       if (axis.swept && axis.key != "order") row.push_back(options.exact ? v.to_string() : format_parameter(v));
     }
     auto values = model->evaluate(parameters, scene.coefficients, request);
@@ -72,10 +73,22 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
       // One order per row: the smallest at which every requested coefficient meets the tolerance.
       int common = 0;
       for (const auto& v : values) common = std::max(common, v.order);
-      for (const auto& v : values)
-        if (!v.converged)
-          warnings.push_back("tolerance " + format_error(request.tolerance->to_double()) + " not reached by order " +
-                             std::to_string(v.order) + " (estimated error " + format_error(v.error.to_double()) + ")");
+      std::string worst;
+      double worst_error = -1;
+      for (std::size_t k = 0; k < values.size(); ++k)
+        if (!values[k].converged && values[k].error.to_double() > worst_error) {
+          worst_error = values[k].error.to_double();
+          worst = scene.coefficients[k];
+        }
+      if (!worst.empty()) {
+        std::string at;
+        for (std::size_t a = 0; a < scene.axes.size(); ++a)
+          if (scene.axes[a].swept && scene.axes[a].key != "tolerance")
+            at += scene.axes[a].key + "=" + format_parameter(scene.axes[a].values[index[a]]) + " ";
+        warnings.push_back(at + "tolerance " + format_error(request.tolerance->to_double()) +
+                           " not reached: row at order " + std::to_string(common) + ", largest estimated error " +
+                           format_error(worst_error) + " (" + worst + ")");
+      }
       request.tolerance.reset();
       request.order = common;
       auto flags = values;
@@ -84,10 +97,14 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
     }
     for (const auto& v : values) {
       if (options.exact && !v.exact)
-        throw std::invalid_argument("--exact: a requested coefficient is not rational here");
-      row.push_back(options.exact ? v.value.to_string() : format_value(v.value.to_double()));
+        throw std::invalid_argument("--exact: a requested coefficient is not a rational number here (model " +
+                                    scene.model + "); drop --exact");
+      if (!v.defined)
+        row.emplace_back("nan");  // no solution at this order
+      else
+        row.push_back(options.exact ? v.value.to_string() : format_value(v.value.to_double()));
     }
-    for (const auto& v : values) row.push_back(format_error(v.error.to_double()));
+    for (const auto& v : values) row.push_back(v.defined ? format_error(v.error.to_double()) : "inf");
     row.push_back(std::to_string(values.empty() ? request.order : values.front().order));
     table.rows.push_back(std::move(row));
 

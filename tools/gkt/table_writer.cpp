@@ -33,7 +33,9 @@ std::string to_json(const Table& t) {
   for (const auto& row : t.rows) {
     nlohmann::ordered_json r;
     for (std::size_t c = 0; c < row.size(); ++c) {
-      if (t.numeric[c])
+      if (t.numeric[c] && (row[c] == "nan" || row[c] == "inf"))
+        r[t.columns[c]] = nullptr;  // JSON has no NaN/Inf: null means "no value at this order"
+      else if (t.numeric[c])
         r[t.columns[c]] = nlohmann::ordered_json::parse(row[c]);
       else
         r[t.columns[c]] = row[c];

@@ -1,0 +1,23 @@
+// Quotients of polynomials in α over Q: the closed forms of first-Sonine results.
+#pragma once
+
+#include <string>
+
+#include "gkt/rational_polynomial.hpp"
+
+namespace gkt {
+
+/// numerator(α)/denominator(α), exact, with a common content removed (denominator monic).
+struct RationalFunction {
+  RationalPolynomial numerator;
+  RationalPolynomial denominator{1L};
+
+  /// Returns the value at α (exact); throws std::domain_error at a pole.
+  [[nodiscard]] Rational evaluate(const Rational& alpha) const;
+  /// Returns the function with gcd(numerator, denominator) removed and the denominator monic.
+  [[nodiscard]] RationalFunction reduced() const;
+  /// True if a/b == c/d as rational functions (a·d == b·c).
+  [[nodiscard]] bool equals(const RationalFunction& other) const;
+};
+
+}  // namespace gkt

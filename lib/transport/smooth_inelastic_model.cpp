@@ -1,0 +1,147 @@
+// The "smooth-inelastic" model: smooth inelastic hard spheres/disks with constant normal
+// restitution α. Provides the homogeneous cooling state: cumulants a2…a16 and the cooling rate
+// (homogeneous_cooling_state.hpp). Order N keeps the cumulants a_2 … a_{N+1}.
+#include <array>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "gkt/homogeneous_cooling_state.hpp"
+#include "transport/models.hpp"
+
+namespace gkt::detail {
+
+namespace {
+
+constexpr int kHighestCumulant = 16;
+constexpr int kMaxOrder = kHighestCumulant - 1;
+
+/// Returns the canonical name "a<k>" of the k-th cumulant.
+std::string cumulant_name(int k) {
+  std::string name(1, 'a');
+  name += std::to_string(k);
+  return name;
+}
+
+class SmoothInelasticModel final : public TransportModel {
+ public:
+  [[nodiscard]] std::string name() const override { return "smooth-inelastic"; }
+  [[nodiscard]] std::string description() const override {
+    return "smooth inelastic hard spheres (d = 3) or disks (d = 2), constant restitution alpha: "
+           "homogeneous cooling state";
+  }
+  [[nodiscard]] std::vector<std::string> coefficient_names() const override {
+    std::vector<std::string> names;
+    for (int k = 2; k <= kHighestCumulant; ++k) names.push_back(cumulant_name(k));
+    names.emplace_back("cooling_rate");
+    return names;
+  }
+  [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
+    return {{"dimension",
+             ParameterSpec::Kind::integer,
+             Rational(2),
+             Rational(3),
+             true,
+             true,
+             Rational(3),
+             "spatial dimension",
+             {}},
+            {"alpha",
+             ParameterSpec::Kind::real,
+             Rational(0),
+             Rational(1),
+             false,
+             true,
+             Rational(1),
+             "normal restitution coefficient",
+             {}},
+            {"hcs",
+             ParameterSpec::Kind::choice,
+             Rational(0),
+             Rational(0),
+             true,
+             true,
+             Rational(0),
+             "cumulant scheme of the homogeneous cooling state",
+             {"nonlinear", "linear"}}};
+  }
+  [[nodiscard]] int max_order() const override { return kMaxOrder; }
+
+  std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
+                                         const OrderRequest& order) override {
+    const auto specs = parameters();
+    const Rational dim = point.number("dimension", Rational(3));
+    specs[0].check(dim);
+    const Rational alpha = point.number("alpha", Rational(1));
+    specs[1].check(alpha);
+    const std::string scheme = point.choice("hcs", "nonlinear");
+    specs[2].check(scheme);
+    const int d = dim == Rational(2) ? 2 : 3;
+    auto& hcs = solvers_[static_cast<std::size_t>(d - 2)];
+    if (!hcs) hcs = std::make_unique<HomogeneousCoolingState>(d);
+    if (scheme == "linear" && (order.tolerance || order.order != 1))
+      throw std::invalid_argument(
+          "hcs: \"linear\" is the first Sonine approximation: use order = 1, or hcs = \"nonlinear\"");
+
+    if (memo_.size() > 4096) memo_.clear();  // bound memory in long sweeps (never mid-evaluation)
+    std::vector<CoefficientValue> out;
+    for (const auto& c : coefficients) {
+      const int k = c == "cooling_rate" ? -1 : cumulant_index(c);
+      if (scheme == "linear") {
+        if (k > 2)
+          throw std::invalid_argument(std::string("coefficients: ") + c +
+                                      " is not computed by hcs = \"linear\" (a2 only)");
+        const HcsState lin = hcs->solve(alpha, 2, HcsScheme::linear);
+        const Rational exact = k == 2 ? *lin.exact_a2 : *lin.exact_cooling_rate;
+        // Error of the first-Sonine value: against the next two nonlinear orders.
+        const auto next1 = nonlinear(*hcs, d, alpha, 3), next2 = nonlinear(*hcs, d, alpha, 4);
+        TruncationEstimate e =
+            estimate_truncation(exact, Rational::from_double(pick(next1, k)), Rational::from_double(pick(next2, k)));
+        e.value = exact;
+        out.push_back({e.value, e.error, 1, e.converging && next1.solved && next2.solved, true, true});
+        continue;
+      }
+      out.push_back(choose_order(order, max_order(), [&](int n) {
+        const auto& s0 = nonlinear(*hcs, d, alpha, n + 1);
+        const auto& s1 = nonlinear(*hcs, d, alpha, n + 2);
+        const auto& s2 = nonlinear(*hcs, d, alpha, n + 3);
+        OrderValue v;
+        v.exact = false;
+        v.defined = s0.solved && s1.solved && s2.solved;
+        if (!v.defined) return v;
+        v.estimate = estimate_truncation(Rational::from_double(pick(s0, k)), Rational::from_double(pick(s1, k)),
+                                         Rational::from_double(pick(s2, k)));
+        return v;
+      }));
+    }
+    return out;
+  }
+
+ private:
+  static int cumulant_index(const std::string& c) {
+    for (int k = 2; k <= kHighestCumulant; ++k)
+      if (c == cumulant_name(k)) return k;
+    throw std::invalid_argument(std::string("coefficients: unknown coefficient '") + c +
+                                "' for model smooth-inelastic");
+  }
+  static double pick(const HcsState& s, int k) {
+    if (k < 0) return s.cooling_rate;
+    return k < static_cast<int>(s.a.size()) ? s.a[static_cast<std::size_t>(k)] : 0.0;
+  }
+  /// The nonlinear HCS keeping a_2..a_K, memoised per (d, α, K).
+  const HcsState& nonlinear(HomogeneousCoolingState& hcs, int d, const Rational& alpha, int k_max) {
+    auto key = std::make_tuple(d, alpha.to_string(), k_max);
+    const auto it = memo_.find(key);
+    if (it != memo_.end()) return it->second;
+    return memo_.emplace(std::move(key), hcs.solve(alpha, k_max, HcsScheme::nonlinear)).first->second;
+  }
+
+  std::array<std::unique_ptr<HomogeneousCoolingState>, 2> solvers_;
+  std::map<std::tuple<int, std::string, int>, HcsState> memo_;
+};
+
+}  // namespace
+
+std::unique_ptr<TransportModel> make_smooth_inelastic_model() { return std::make_unique<SmoothInelasticModel>(); }
+
+}  // namespace gkt::detail
