@@ -5,11 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
+#include <iostream>
 #include <string>
+#include <tuple>
 
 #include "gkt/collision_moments.hpp"
 #include "gkt/gaussian_collision_integral.hpp"
+#include "gkt/linearized_operator.hpp"
 #include "gkt/sonine.hpp"
 #include "monte_carlo.hpp"
 
@@ -136,4 +140,62 @@ TEST(CollisionMoments, OddRankNeedsRationalGeometricMean) {
   EXPECT_THROW((void)gkt::sonine_collision_moments<Rational>(pair, Rational(1), Slot::v1, Slot::v2_post, 1, 1),
                std::domain_error);
   EXPECT_NO_THROW((void)gkt::sonine_collision_moments<Rational>(pair, Rational(1), Slot::v1, Slot::v2_post, 2, 1));
+}
+
+// The operator about the HCS, L^(k) (partner weighted by S_k(c²)), by an identity that takes a
+// different path through the engine: a Maxwellian of temperature τ is
+// f_M Σ_k (1−τ)^k S_k(c²) (Sonine generating function), so Σ_k (1−τ)^k L^(k) must equal the
+// operator whose partner is a Maxwellian at temperature τ — computed here directly from moment
+// tables of a pair with unequal widths θ = 1/τ and no weight variable. τ = 16/25 (√θ = 5/4
+// rational), α = 3/5, d = 2, 3, ranks 0–2, p, q ≤ 2; series to k = 30 (0.36^30 ≈ 5e-14).
+TEST(HcsLinearizedOperator, WeightedOperatorEqualsHotterPartner) {
+  const Rational alpha(3, 5), tau(16, 25), theta(25, 16);
+  const int k_max = 30, n_max = 2;
+  for (int d : {3, 2}) {
+    for (int rank = 0; rank <= 2; ++rank) {
+      const auto weighted = gkt::hcs_linearized_operator_matrices<Rational>(d, alpha, rank, n_max, k_max);
+      const long twice_m = gkt::sonine_twice_m(d, rank);
+      // One term: ⟨ψ_q(a)·ψ_p(b)⟩ for a pair whose partner of the unknown has width θ, with the basis
+      // scaled at θ = 1 (x = u², c = u) — rescaled onto the table's X = θ_s u², c = √(θ_aθ_b) u.
+      auto term = [&](const gkt::CollisionPair& pair, Slot a, Slot b, int p, int q) {
+        const auto sq = gkt::sonine_coefficients(twice_m, q), sp = gkt::sonine_coefficients(twice_m, p);
+        const Rational ta = pair.theta(a), tb = pair.theta(b);
+        Rational sum;
+        if (a == b) {
+          const gkt::CollisionMomentTable<Rational> t(pair, alpha, {a}, {2 * n_max + rank}, std::nullopt, 0);
+          const Rational yy = rank == 2 ? Rational(d - 1, static_cast<unsigned long>(d)) : Rational(1);
+          for (int i = 0; i <= q; ++i)
+            for (int j = 0; j <= p; ++j) sum += sq[i] * sp[j] * yy * t.moment({i + j + rank}) / ta.pow(i + j + rank);
+          return sum;
+        }
+        const gkt::CollisionMomentTable<Rational> t(pair, alpha, {a, b}, {n_max + 1, n_max + 1}, std::make_pair(a, b),
+                                                    rank);
+        const Rational cscale = (ta * tb).exact_sqrt();  // c_table = √(θ_aθ_b) u_a·u_b
+        for (int i = 0; i <= q; ++i)
+          for (int j = 0; j <= p; ++j) {
+            Rational y = t.moment({i, j}, rank) / (ta.pow(i) * tb.pow(j) * cscale.pow(rank));
+            if (rank == 2) y -= t.moment({i + 1, j + 1}, 0) / (ta.pow(i + 1) * tb.pow(j + 1) * Rational(d));
+            sum += sq[i] * sp[j] * y;
+          }
+        return sum;
+      };
+      // Unknown at v1 with a hot partner at v2; unknown at v2 (θ = 1) with the hot particle at v1
+      // carrying the test function (basis at θ = 1 there too).
+      const gkt::CollisionPair hot_partner{d, Rational(1), Rational(1), Rational(1), theta};
+      const gkt::CollisionPair hot_tested{d, Rational(1), Rational(1), theta, Rational(1)};
+      // Normalisation: ∫∫∫ w φ_M φ_τ F = ν √((1+τ)/2) ⟨F⟩_table; φ_M φ_M Σ h_k S_k gives ν Σ h_k L^(k).
+      const double norm = std::sqrt((1 + tau.to_double()) / 2);
+      for (int p = 0; p <= n_max; ++p)
+        for (int q = 0; q <= n_max; ++q) {
+          const Rational direct =
+              term(hot_partner, Slot::v1, Slot::v1, p, q) - term(hot_partner, Slot::v1, Slot::v1_post, p, q) +
+              term(hot_tested, Slot::v2, Slot::v1, p, q) - term(hot_tested, Slot::v2, Slot::v1_post, p, q);
+          Rational series;
+          Rational h(1);
+          for (int k = 0; k <= k_max; ++k, h *= Rational(1) - tau) series += h * weighted[k](p, q);
+          EXPECT_NEAR(series.to_double(), norm * direct.to_double(), 1e-12 * (1 + std::abs(series.to_double())))
+              << "d=" << d << " rank=" << rank << " p=" << p << " q=" << q;
+        }
+    }
+  }
 }

@@ -5,6 +5,8 @@
 // m = d/2 − 1 + r, Y_0 = 1, Y_1 = c, Y_2 = c c − (c²/d) I (traceless).
 #pragma once
 
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "gkt/collision_rule.hpp"
@@ -39,6 +41,25 @@ struct ScalarMomentTable {
 template <class Ring>
 ScalarMomentTable<Ring> scalar_collision_moments(const CollisionPair& pair, const Ring& alpha, int k_max);
 
+/// Moments ⟨Π_i X_{s_i}^{k_i} (c_a·c_b)^j⟩/J0 for up to three distinct slots s_i carrying
+/// X = θu² and an optional contraction c_a·c_b (c = √θ u) between two distinct slots; one exact
+/// Taylor expansion of J serves every polynomial integrand of this shape (theory.md (4.1)).
+template <class Ring>
+class CollisionMomentTable {
+ public:
+  /// Expands J up to degree max_degree[i] in X_{x_slots[i]} and max_contraction in c_a·c_b.
+  CollisionMomentTable(const CollisionPair& pair, const Ring& alpha, std::vector<Slot> x_slots,
+                       std::vector<int> max_degree, std::optional<std::pair<Slot, Slot>> contraction,
+                       int max_contraction);
+  /// Returns ⟨Π_i X_{x_slots[i]}^{k[i]} (c_a·c_b)^j⟩/J0 (exact).
+  [[nodiscard]] Ring moment(const std::vector<int>& k, int j = 0) const;
+
+ private:
+  std::vector<Slot> x_slots_;
+  std::vector<int> box_;
+  std::vector<Ring> values_;  // already multiplied by the factorials and (√θ_aθ_b)^j
+};
+
 /// Returns J0 = ∫dv1 dv2 dσ̂ Θ(σ̂·g)(σ̂·g) e^{−θ_i v1² − θ_j v2²} = K_d √(θ_i+θ_j) (θ_iθ_j)^{−(d+1)/2}
 /// (velocity units of the pair's θ; double precision).
 double reference_collision_integral(const CollisionPair& pair);
@@ -47,6 +68,8 @@ extern template ScalarMomentTable<Rational> scalar_collision_moments<Rational>(c
                                                                                int);
 extern template ScalarMomentTable<RationalPolynomial> scalar_collision_moments<RationalPolynomial>(
     const CollisionPair&, const RationalPolynomial&, int);
+extern template class CollisionMomentTable<Rational>;
+extern template class CollisionMomentTable<RationalPolynomial>;
 extern template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot,
                                                                          Slot, int, int);
 extern template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(const CollisionPair&,

@@ -9,6 +9,8 @@
 //   ⟨ψ_p, 𝓛ψ_q⟩ / (n σ^{d−1} v0) = ν · L(p, q),   v0 = √(2T/m),   ν = √(2π) π^{d/2−1}/Γ(d/2).
 #pragma once
 
+#include <vector>
+
 #include "gkt/dense_matrix.hpp"
 #include "gkt/rational.hpp"
 #include "gkt/rational_polynomial.hpp"
@@ -26,9 +28,21 @@ enum class OperatorPart {
 template <class Ring>
 DenseMatrix<Ring> linearized_operator_matrix(int dimension, const Ring& alpha, OperatorPart part, int rank, int n_max);
 
+/// Returns L^(k)(p, q), k = 0..k_max, p, q = 0..n_max: the operator −(J[φ_k, ·] + J[·, φ_k]) with the
+/// reference φ_k = f_M S_{d/2−1}^(k)(c²) in place of f_M, in the basis S_m^(n)(c²) Y_rank(c). The
+/// operator about the homogeneous cooling state f0 = f_M Σ_k a_k S_k is Σ_k a_k L^(k) (theory.md
+/// §10); L^(0) is linearized_operator_matrix(…, OperatorPart::full, …). Same prefactor ν.
+template <class Ring>
+std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, const Ring& alpha, int rank, int n_max,
+                                                                int k_max);
+
 /// Returns ν = √(2π) π^{d/2−1}/Γ(d/2), the factor between L and ⟨ψ_p, 𝓛ψ_q⟩/(nσ^{d−1}v0).
 double linearized_operator_prefactor(int dimension);
 
+extern template std::vector<DenseMatrix<Rational>> hcs_linearized_operator_matrices<Rational>(int, const Rational&, int,
+                                                                                              int, int);
+extern template std::vector<DenseMatrix<RationalPolynomial>> hcs_linearized_operator_matrices<RationalPolynomial>(
+    int, const RationalPolynomial&, int, int, int);
 extern template DenseMatrix<Rational> linearized_operator_matrix<Rational>(int, const Rational&, OperatorPart, int,
                                                                            int);
 extern template DenseMatrix<RationalPolynomial> linearized_operator_matrix<RationalPolynomial>(

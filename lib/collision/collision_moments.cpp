@@ -69,14 +69,14 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
   const Rational& theta_a = pair.theta(unknown);
   const Rational& theta_b = pair.theta(test);
   const detail::ExactForm q0 = reference_form(pair);
-  std::array<detail::ExactForm, 3> dq{};
+  std::array<detail::ExactForm, detail::kVariables> dq{};
   DenseMatrix<Ring> y(n_max + 1, n_max + 1);
 
   if (a == b) {
     // One variable: ⟨x^n⟩ = n! f_n with exp(+x0 θ u²).
     dq[0][a][a] = -theta_a;
     const int top = 2 * n_max + rank;
-    const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq, {top, 0, 0});
+    const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq, {top, 0, 0, 0});
     // Y_r(c)·Y_r(c) = 1, x, (1 − 1/d) x².
     const Rational tensor_factor = rank == 2 ? Rational(d - 1, static_cast<unsigned long>(d)) : Rational(1);
     for (int k = 0; k <= n_max; ++k)
@@ -106,7 +106,7 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
   dq[2][b][a] = Rational(-1, 2);
   const int extra = rank == 2 ? 1 : 0;
   const auto f =
-      detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq, {n_max + extra, n_max + extra, rank});
+      detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq, {n_max + extra, n_max + extra, rank, 0});
   auto moment = [&](int k, int kp, int j) {  // ⟨x_a^k x_b^kp (u_a·u_b)^j⟩ / J0
     Ring v = f(k, kp, j);
     detail::scale(v, Rational::factorial(static_cast<unsigned long>(k)) *
@@ -131,15 +131,78 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
 }
 
 template <class Ring>
+CollisionMomentTable<Ring>::CollisionMomentTable(const CollisionPair& pair, const Ring& alpha,
+                                                 std::vector<Slot> x_slots, std::vector<int> max_degree,
+                                                 std::optional<std::pair<Slot, Slot>> contraction, int max_contraction)
+    : x_slots_(std::move(x_slots)) {
+  pair.validate();
+  if (x_slots_.size() > 3 || x_slots_.size() != max_degree.size())
+    throw std::invalid_argument("CollisionMomentTable: up to three X slots, one degree each");
+  std::array<detail::ExactForm, detail::kVariables> dq{};
+  detail::Exponents box{};
+  for (std::size_t i = 0; i < x_slots_.size(); ++i) {
+    const int s = static_cast<int>(x_slots_[i]);
+    for (std::size_t k = 0; k < i; ++k)
+      if (x_slots_[k] == x_slots_[i]) throw std::invalid_argument("CollisionMomentTable: repeated X slot");
+    dq[i][s][s] = -pair.theta(x_slots_[i]);
+    box[i] = max_degree[i];
+  }
+  Rational cross_scale(1);
+  if (contraction) {
+    const int a = static_cast<int>(contraction->first), b = static_cast<int>(contraction->second);
+    if (a == b) throw std::invalid_argument("CollisionMomentTable: contraction needs two distinct slots");
+    dq[3][a][b] = Rational(-1, 2);
+    dq[3][b][a] = Rational(-1, 2);
+    box[3] = max_contraction;
+    const Rational product = pair.theta(contraction->first) * pair.theta(contraction->second);
+    if (max_contraction > 0) {
+      if (!product.is_square())
+        throw std::domain_error("CollisionMomentTable: θ_a θ_b = " + product.to_string() + " is not a square");
+      cross_scale = product.exact_sqrt();
+    }
+  }
+  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, reference_form(pair), dq, box);
+  box_.assign(box.begin(), box.end());
+  values_.reserve(f.coefficients.size());
+  for (int k0 = 0; k0 <= box[0]; ++k0)
+    for (int k1 = 0; k1 <= box[1]; ++k1)
+      for (int k2 = 0; k2 <= box[2]; ++k2)
+        for (int k3 = 0; k3 <= box[3]; ++k3) {
+          Ring v = f(k0, k1, k2, k3);
+          detail::scale(v, Rational::factorial(static_cast<unsigned long>(k0)) *
+                               Rational::factorial(static_cast<unsigned long>(k1)) *
+                               Rational::factorial(static_cast<unsigned long>(k2)) *
+                               Rational::factorial(static_cast<unsigned long>(k3)) * cross_scale.pow(k3));
+          values_.push_back(std::move(v));
+        }
+}
+
+template <class Ring>
+Ring CollisionMomentTable<Ring>::moment(const std::vector<int>& k, int j) const {
+  std::array<int, 4> e{0, 0, 0, j};
+  for (std::size_t i = 0; i < k.size(); ++i) e[i] = k[i];
+  std::size_t index = 0;
+  for (int v = 0; v < 4; ++v) {
+    if (e[v] < 0 || e[v] > box_[static_cast<std::size_t>(v)])
+      throw std::out_of_range("CollisionMomentTable: degree outside the expanded box");
+    index = index * static_cast<std::size_t>(box_[static_cast<std::size_t>(v)] + 1) + static_cast<std::size_t>(e[v]);
+  }
+  return values_[index];
+}
+
+template class CollisionMomentTable<Rational>;
+template class CollisionMomentTable<RationalPolynomial>;
+
+template <class Ring>
 ScalarMomentTable<Ring> scalar_collision_moments(const CollisionPair& pair, const Ring& alpha, int k_max) {
   pair.validate();
   if (k_max < 0) throw std::invalid_argument("k_max: must be >= 0");
-  std::array<detail::ExactForm, 3> dq{};
+  std::array<detail::ExactForm, detail::kVariables> dq{};
   dq[0][0][0] = -pair.theta_i;  // x0 ↔ X1
   dq[1][1][1] = -pair.theta_j;  // x1 ↔ X2
   dq[2][2][2] = -pair.theta_i;  // x2 ↔ X1'
-  const auto f =
-      detail::expand_gaussian_collision_integral<Ring>(pair, alpha, reference_form(pair), dq, {2 * k_max, k_max, k_max});
+  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, reference_form(pair), dq,
+                                                                  {2 * k_max, k_max, k_max, 0});
   ScalarMomentTable<Ring> table;
   table.k_max = k_max;
   table.values.reserve(f.coefficients.size());
@@ -157,8 +220,8 @@ ScalarMomentTable<Ring> scalar_collision_moments(const CollisionPair& pair, cons
 
 template ScalarMomentTable<Rational> scalar_collision_moments<Rational>(const CollisionPair&, const Rational&, int);
 template ScalarMomentTable<RationalPolynomial> scalar_collision_moments<RationalPolynomial>(const CollisionPair&,
-                                                                                         const RationalPolynomial&,
-                                                                                         int);
+                                                                                            const RationalPolynomial&,
+                                                                                            int);
 
 template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot, Slot,
                                                                   int, int);

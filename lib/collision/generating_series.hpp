@@ -1,5 +1,5 @@
-// Private: exact Taylor expansion of the Gaussian collision integral J(Q(x)) in up to three
-// auxiliary variables x = (x0, x1, x2), Q(x) = Q0 + Σ_v x_v Q_v (docs/theory.md §3).
+// Private: exact Taylor expansion of the Gaussian collision integral J(Q(x)) in up to four
+// auxiliary variables x = (x0, x1, x2, x3), Q(x) = Q0 + Σ_v x_v Q_v (docs/theory.md §3).
 //
 // J/J(0) = a^{1/2} n1^{−(d−1)/2} n2^{−1} with a, n1, n2 polynomials (degree 1, 2, 2) in x
 // normalised to constant term 1. Its coefficients follow from the Euler-operator identity
@@ -19,16 +19,20 @@ namespace gkt::detail {
 
 using ExactForm = std::array<std::array<Rational, 4>, 4>;
 
-/// A polynomial in three variables with few terms (exponent vectors e, coefficients c).
+/// Number of auxiliary expansion variables the engine supports.
+inline constexpr int kVariables = 4;
+using Exponents = std::array<int, kVariables>;
+
+/// A polynomial in the auxiliary variables with few terms (exponent vectors e, coefficients c).
 template <class Ring>
 struct SmallPolynomial {
   struct Term {
-    std::array<int, 3> e;
+    Exponents e;
     Ring c;
   };
   std::vector<Term> terms;
 
-  void add(const std::array<int, 3>& e, const Ring& c) {
+  void add(const Exponents& e, const Ring& c) {
     if (c.is_zero()) return;
     for (auto& t : terms)
       if (t.e == e) {
@@ -39,7 +43,7 @@ struct SmallPolynomial {
   }
   [[nodiscard]] Rational constant() const {
     for (const auto& t : terms)
-      if (t.e == std::array<int, 3>{0, 0, 0}) return constant_term(t.c);
+      if (t.e == Exponents{}) return constant_term(t.c);
     return Rational(0);
   }
   friend SmallPolynomial operator+(const SmallPolynomial& a, const SmallPolynomial& b) {
@@ -55,7 +59,11 @@ struct SmallPolynomial {
   friend SmallPolynomial operator*(const SmallPolynomial& a, const SmallPolynomial& b) {
     SmallPolynomial r;
     for (const auto& x : a.terms)
-      for (const auto& y : b.terms) r.add({x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2]}, x.c * y.c);
+      for (const auto& y : b.terms) {
+        Exponents e{};
+        for (int v = 0; v < kVariables; ++v) e[v] = x.e[v] + y.e[v];
+        r.add(e, x.c * y.c);
+      }
     return r;
   }
   friend SmallPolynomial operator*(const Ring& c, const SmallPolynomial& a) {
@@ -66,7 +74,11 @@ struct SmallPolynomial {
   /// Returns E p = Σ |e| c_e x^e (Euler operator).
   [[nodiscard]] SmallPolynomial euler() const {
     SmallPolynomial r;
-    for (const auto& t : terms) r.add(t.e, Ring(static_cast<long>(t.e[0] + t.e[1] + t.e[2])) * t.c);
+    for (const auto& t : terms) {
+      long degree = 0;
+      for (int v = 0; v < kVariables; ++v) degree += t.e[v];
+      r.add(t.e, Ring(degree) * t.c);
+    }
     return r;
   }
   void divide_by(const Rational& c) {
@@ -74,25 +86,28 @@ struct SmallPolynomial {
   }
 };
 
-/// Dense box of Taylor coefficients f(k0, k1, k2), 0 ≤ k_v ≤ box_v, of J(Q(x))/J(Q0).
+/// Dense box of Taylor coefficients f(k0, …, k3), 0 ≤ k_v ≤ box_v, of J(Q(x))/J(Q0).
 template <class Ring>
 struct GeneratingSeries {
-  std::array<int, 3> box{};
+  Exponents box{};
   std::vector<Ring> coefficients;
   /// Constant terms: J(Q0) = K_d √a0 / (n1_0^{(d−1)/2} n2_0).
   Rational a0, n1_0, n2_0;
 
-  [[nodiscard]] std::size_t index(int k0, int k1, int k2) const {
-    return (static_cast<std::size_t>(k0) * (box[1] + 1) + k1) * (box[2] + 1) + k2;
+  [[nodiscard]] std::size_t index(int k0, int k1, int k2, int k3 = 0) const {
+    return ((static_cast<std::size_t>(k0) * (box[1] + 1) + k1) * (box[2] + 1) + k2) * (box[3] + 1) + k3;
   }
-  [[nodiscard]] const Ring& operator()(int k0, int k1, int k2) const { return coefficients[index(k0, k1, k2)]; }
+  [[nodiscard]] const Ring& operator()(int k0, int k1, int k2, int k3 = 0) const {
+    return coefficients[index(k0, k1, k2, k3)];
+  }
 };
 
 /// Returns the Taylor coefficients of J(Q0 + Σ x_v Q_v)/J(Q0) in the box (exact in Ring).
 template <class Ring>
 GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& pair, const Ring& alpha,
-                                                          const ExactForm& q0, const std::array<ExactForm, 3>& dq,
-                                                          const std::array<int, 3>& box) {
+                                                          const ExactForm& q0,
+                                                          const std::array<ExactForm, kVariables>& dq,
+                                                          const Exponents& box) {
   const auto t = pair.velocity_map();
   // M = Tᵀ Q T for Q0 and each direction; entries become polynomials in x of degree ≤ 1.
   auto congruence = [&](const ExactForm& q) {
@@ -108,10 +123,10 @@ GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& p
   {
     const auto m0 = congruence(q0);
     for (int r = 0; r < 3; ++r)
-      for (int s = 0; s < 3; ++s) m[r][s].add({0, 0, 0}, Ring(m0[r][s]));
-    for (int v = 0; v < 3; ++v) {
+      for (int s = 0; s < 3; ++s) m[r][s].add(Exponents{}, Ring(m0[r][s]));
+    for (int v = 0; v < kVariables; ++v) {
       const auto mv = congruence(dq[v]);
-      std::array<int, 3> e{0, 0, 0};
+      Exponents e{};
       e[v] = 1;
       for (int r = 0; r < 3; ++r)
         for (int s = 0; s < 3; ++s) m[r][s].add(e, Ring(mv[r][s]));
@@ -146,12 +161,12 @@ GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& p
   const auto qc = half * (a.euler() * n1 * n2) - r1 * (a * n1.euler() * n2) - a * n1 * n2.euler();
 
   struct RecurrenceTerm {
-    std::array<int, 3> e;
+    Exponents e;
     Ring q, p;
   };
   std::vector<RecurrenceTerm> rec;
   for (const auto& term : pi.terms)
-    if (term.e != std::array<int, 3>{0, 0, 0}) rec.push_back({term.e, Ring(0L), term.c});
+    if (term.e != Exponents{}) rec.push_back({term.e, Ring(0L), term.c});
   for (const auto& term : qc.terms) {
     bool merged = false;
     for (auto& r : rec)
@@ -162,28 +177,31 @@ GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& p
     if (!merged) rec.push_back({term.e, term.c, Ring(0L)});
   }
 
-  const std::size_t size = static_cast<std::size_t>(box[0] + 1) * (box[1] + 1) * (box[2] + 1);
+  std::size_t size = 1;
+  for (int v = 0; v < kVariables; ++v) size *= static_cast<std::size_t>(box[v] + 1);
   out.coefficients.assign(size, Ring(0L));
   std::vector<Ring> weighted(size, Ring(0L));  // |m| f_m
   out.coefficients[0] = Ring(1L);
+  // Lexicographic order: every m − e (e ≥ 0, e ≠ 0) comes before m.
   for (int k0 = 0; k0 <= box[0]; ++k0)
     for (int k1 = 0; k1 <= box[1]; ++k1)
-      for (int k2 = 0; k2 <= box[2]; ++k2) {
-        const int degree = k0 + k1 + k2;
-        if (degree == 0) continue;
-        Ring acc(0L);
-        for (const auto& r : rec) {
-          const int j0 = k0 - r.e[0], j1 = k1 - r.e[1], j2 = k2 - r.e[2];
-          if (j0 < 0 || j1 < 0 || j2 < 0) continue;
-          const std::size_t src = out.index(j0, j1, j2);
-          if (!r.q.is_zero()) acc.add_product(r.q, out.coefficients[src]);
-          if (!r.p.is_zero()) acc.sub_product(r.p, weighted[src]);
+      for (int k2 = 0; k2 <= box[2]; ++k2)
+        for (int k3 = 0; k3 <= box[3]; ++k3) {
+          const int degree = k0 + k1 + k2 + k3;
+          if (degree == 0) continue;
+          Ring acc(0L);
+          for (const auto& r : rec) {
+            const int j0 = k0 - r.e[0], j1 = k1 - r.e[1], j2 = k2 - r.e[2], j3 = k3 - r.e[3];
+            if (j0 < 0 || j1 < 0 || j2 < 0 || j3 < 0) continue;
+            const std::size_t src = out.index(j0, j1, j2, j3);
+            if (!r.q.is_zero()) acc.add_product(r.q, out.coefficients[src]);
+            if (!r.p.is_zero()) acc.sub_product(r.p, weighted[src]);
+          }
+          const std::size_t dst = out.index(k0, k1, k2, k3);
+          weighted[dst] = acc;
+          divide(acc, Rational(degree));
+          out.coefficients[dst] = std::move(acc);
         }
-        const std::size_t dst = out.index(k0, k1, k2);
-        weighted[dst] = acc;
-        divide(acc, Rational(degree));
-        out.coefficients[dst] = std::move(acc);
-      }
   return out;
 }
 

@@ -3,8 +3,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "collision/ring.hpp"
 #include "gkt/collision_moments.hpp"
 #include "gkt/gaussian_collision_integral.hpp"
+#include "gkt/sonine.hpp"
+
+#include <optional>
+#include <stdexcept>
+#include <utility>
 
 namespace gkt {
 
@@ -31,6 +37,122 @@ DenseMatrix<Ring> linearized_operator_matrix(int dimension, const Ring& alpha, O
   }
   return l;
 }
+
+namespace {
+
+/// Exact Sonine coefficient table c(n, j) of S_m^(n), n ≤ n_max.
+std::vector<std::vector<Rational>> sonine_rows(long twice_m, int n_max) {
+  std::vector<std::vector<Rational>> rows;
+  for (int n = 0; n <= n_max; ++n) rows.push_back(sonine_coefficients(twice_m, n));
+  return rows;
+}
+
+/// M_k(p, q) = Σ_{i ≤ k} Σ_{j ≤ q} Σ_{l ≤ p} w_k[i] s_q[j] s_p[l] y(i, j, l), contracted one index at a
+/// time: weight power i, unknown power j, test power l.
+template <class Ring, class Integrand>
+std::vector<DenseMatrix<Ring>> contract_weighted(const std::vector<std::vector<Rational>>& w,
+                                                 const std::vector<std::vector<Rational>>& s, int k_max, int n_max,
+                                                 Integrand&& y) {
+  const int ni = k_max + 1, nn = n_max + 1;
+  auto at = [nn](int i, int j, int p) { return (static_cast<std::size_t>(i) * nn + j) * nn + p; };
+  std::vector<Ring> g(static_cast<std::size_t>(ni) * nn * nn, Ring(0L)), h(g.size(), Ring(0L));
+  for (int i = 0; i < ni; ++i)
+    for (int j = 0; j < nn; ++j)
+      for (int p = 0; p < nn; ++p) {
+        Ring acc(0L);
+        for (int l = 0; l <= p; ++l) acc.add_product(y(i, j, l), Ring(s[p][l]));
+        g[at(i, j, p)] = std::move(acc);
+      }
+  for (int i = 0; i < ni; ++i)
+    for (int q = 0; q < nn; ++q)
+      for (int p = 0; p < nn; ++p) {
+        Ring acc(0L);
+        for (int j = 0; j <= q; ++j) acc.add_product(g[at(i, j, p)], Ring(s[q][j]));
+        h[at(i, q, p)] = std::move(acc);
+      }
+  std::vector<DenseMatrix<Ring>> out;
+  for (int k = 0; k < ni; ++k) {
+    DenseMatrix<Ring> m(nn, nn);
+    for (int p = 0; p < nn; ++p)
+      for (int q = 0; q < nn; ++q) {
+        Ring acc(0L);
+        for (int i = 0; i <= k; ++i) acc.add_product(h[at(i, q, p)], Ring(w[k][i]));
+        m(p, q) = std::move(acc);
+      }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+}  // namespace
+
+template <class Ring>
+std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, const Ring& alpha, int rank, int n_max,
+                                                                int k_max) {
+  if (rank < 0 || rank > 2) throw std::invalid_argument("rank: must be 0, 1 or 2");
+  const CollisionPair pair{dimension, Rational(1), Rational(1), Rational(1), Rational(1)};
+  const auto w = sonine_rows(sonine_twice_m(dimension, 0), k_max);
+  const auto s = sonine_rows(sonine_twice_m(dimension, rank), n_max);
+  const int e = rank == 2 ? 1 : 0;  // the trace term of Y_2·Y_2 needs one more power
+  const Rational inv_d(1, static_cast<unsigned long>(dimension));
+  const Rational self_factor = rank == 2 ? Rational(dimension - 1, static_cast<unsigned long>(dimension)) : Rational(1);
+  const std::optional<std::pair<Slot, Slot>> none;
+
+  // Partner-weighted gain/loss with the unknown at a ∈ {v1, v2} and the test at b ∈ {v1', v1}.
+  // (a) weight at v2, unknown v1, test v1'      (b) weight v2, unknown v1, test v1
+  // (c) weight at v1, unknown v2, test v1'      (d) weight v1, unknown v2, test v1 (shares the X1 slot)
+  const CollisionMomentTable<Ring> ta(pair, alpha, {Slot::v2, Slot::v1, Slot::v1_post}, {k_max, n_max + e, n_max + e},
+                                      std::make_pair(Slot::v1, Slot::v1_post), rank);
+  const CollisionMomentTable<Ring> tb(pair, alpha, {Slot::v2, Slot::v1}, {k_max, 2 * n_max + rank}, none, 0);
+  const CollisionMomentTable<Ring> tc(pair, alpha, {Slot::v1, Slot::v2, Slot::v1_post}, {k_max, n_max + e, n_max + e},
+                                      std::make_pair(Slot::v2, Slot::v1_post), rank);
+  const CollisionMomentTable<Ring> td(pair, alpha, {Slot::v1, Slot::v2}, {k_max + n_max + e, n_max + e},
+                                      std::make_pair(Slot::v2, Slot::v1), rank);
+  auto contracted = [&](const CollisionMomentTable<Ring>& t, std::vector<int> k) {  // Y_r(c_a)·Y_r(c_b) terms
+    if (rank < 2) return t.moment(k, rank);
+    Ring v = t.moment(k, 2);
+    // ⟨… (c_a·c_b)²⟩ − ⟨… X_a X_b⟩/d: the last two entries of k are the unknown's and test's powers,
+    // except for (d), where the caller passes them separately.
+    k[k.size() - 1] += 1;
+    k[k.size() - 2] += 1;
+    Ring trace = t.moment(k, 0);
+    detail::scale(trace, inv_d);
+    v -= trace;
+    return v;
+  };
+  const auto ma = contract_weighted<Ring>(w, s, k_max, n_max, [&](int i, int j, int l) {
+    return contracted(ta, {i, j, l});
+  });
+  const auto mb = contract_weighted<Ring>(w, s, k_max, n_max, [&](int i, int j, int l) {
+    Ring v = tb.moment({i, j + l + rank});
+    detail::scale(v, self_factor);
+    return v;
+  });
+  const auto mc = contract_weighted<Ring>(w, s, k_max, n_max, [&](int i, int j, int l) {
+    return contracted(tc, {i, j, l});
+  });
+  const auto md = contract_weighted<Ring>(w, s, k_max, n_max, [&](int i, int j, int l) {
+    if (rank < 2) return td.moment({i + l, j}, rank);
+    Ring v = td.moment({i + l, j}, 2);
+    Ring trace = td.moment({i + l + 1, j + 1}, 0);
+    detail::scale(trace, inv_d);
+    v -= trace;
+    return v;
+  });
+  std::vector<DenseMatrix<Ring>> out;
+  for (int k = 0; k <= k_max; ++k) {
+    DenseMatrix<Ring> l(n_max + 1, n_max + 1);
+    for (int p = 0; p <= n_max; ++p)
+      for (int q = 0; q <= n_max; ++q) l(p, q) = mb[k](p, q) + md[k](p, q) - ma[k](p, q) - mc[k](p, q);
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
+template std::vector<DenseMatrix<Rational>> hcs_linearized_operator_matrices<Rational>(int, const Rational&, int, int,
+                                                                                       int);
+template std::vector<DenseMatrix<RationalPolynomial>> hcs_linearized_operator_matrices<RationalPolynomial>(
+    int, const RationalPolynomial&, int, int, int);
 
 template DenseMatrix<Rational> linearized_operator_matrix<Rational>(int, const Rational&, OperatorPart, int, int);
 template DenseMatrix<RationalPolynomial> linearized_operator_matrix<RationalPolynomial>(int, const RationalPolynomial&,

@@ -20,7 +20,8 @@ struct OrderValue {
 
 /// Applies an OrderRequest: the fixed order, or the smallest order whose estimate converges
 /// below the tolerance; if none does, the order with the smallest estimated error (optimal
-/// truncation of an asymptotic series), flagged not converged.
+/// truncation of an asymptotic series), flagged not converged. The scan stops once the estimated
+/// error has grown for three successive orders past its minimum.
 template <class ValueAt>
 CoefficientValue choose_order(const OrderRequest& request, int max_order, ValueAt&& value_at) {
   auto to_value = [](const OrderValue& v, int order, bool converged) {
@@ -30,7 +31,7 @@ CoefficientValue choose_order(const OrderRequest& request, int max_order, ValueA
     const OrderValue v = value_at(request.order);
     return to_value(v, request.order, v.defined && v.estimate.converging);
   }
-  int best = 0;
+  int best = 0, growing = 0;
   OrderValue best_value{};
   for (int n = 1; n <= max_order; ++n) {
     const OrderValue v = value_at(n);
@@ -39,6 +40,9 @@ CoefficientValue choose_order(const OrderRequest& request, int max_order, ValueA
     if (best == 0 || v.estimate.error < best_value.estimate.error) {
       best = n;
       best_value = v;
+      growing = 0;
+    } else if (++growing == 3) {
+      break;  // the error grew three orders in a row past its minimum: an asymptotic series
     }
   }
   if (best == 0) return to_value(value_at(max_order), max_order, false);

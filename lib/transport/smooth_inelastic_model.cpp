@@ -1,11 +1,15 @@
 // The "smooth-inelastic" model: smooth inelastic hard spheres/disks with constant normal
-// restitution α. Provides the homogeneous cooling state: cumulants a2…a16 and the cooling rate
-// (homogeneous_cooling_state.hpp). Order N keeps the cumulants a_2 … a_{N+1}.
+// restitution α, dilute. Provides the homogeneous cooling state (cumulants a2…a13, cooling rate;
+// homogeneous_cooling_state.hpp) and the Navier–Stokes coefficients η*, κ*, μ*
+// (dilute_navier_stokes.hpp). Order N keeps N Sonine polynomials per transport mode and the
+// cumulants a_2 … a_{N+1}.
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <tuple>
 
+#include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "transport/models.hpp"
 
@@ -13,7 +17,7 @@ namespace gkt::detail {
 
 namespace {
 
-constexpr int kHighestCumulant = 16;
+constexpr int kHighestCumulant = 13;
 constexpr int kMaxOrder = kHighestCumulant - 1;
 
 /// Returns the canonical name "a<k>" of the k-th cumulant.
@@ -28,12 +32,15 @@ class SmoothInelasticModel final : public TransportModel {
   [[nodiscard]] std::string name() const override { return "smooth-inelastic"; }
   [[nodiscard]] std::string description() const override {
     return "smooth inelastic hard spheres (d = 3) or disks (d = 2), constant restitution alpha: "
-           "homogeneous cooling state";
+           "homogeneous cooling state and dilute Navier-Stokes coefficients (standard Sonine scheme)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     std::vector<std::string> names;
     for (int k = 2; k <= kHighestCumulant; ++k) names.push_back(cumulant_name(k));
     names.emplace_back("cooling_rate");
+    names.emplace_back("shear_viscosity");
+    names.emplace_back("thermal_conductivity");
+    names.emplace_back("density_heat_coefficient");
     return names;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -84,8 +91,14 @@ class SmoothInelasticModel final : public TransportModel {
           "hcs: \"linear\" is the first Sonine approximation: use order = 1, or hcs = \"nonlinear\"");
 
     if (memo_.size() > 4096) memo_.clear();  // bound memory in long sweeps (never mid-evaluation)
+    if (ns_memo_.size() > 4096) ns_memo_.clear();
     std::vector<CoefficientValue> out;
     for (const auto& c : coefficients) {
+      const int transport = transport_index(c);
+      if (transport >= 0) {
+        out.push_back(transport_value(*hcs, d, alpha, scheme, transport, order));
+        continue;
+      }
       const int k = c == "cooling_rate" ? -1 : cumulant_index(c);
       if (scheme == "linear") {
         if (k > 2)
@@ -118,6 +131,61 @@ class SmoothInelasticModel final : public TransportModel {
   }
 
  private:
+  /// 0 shear viscosity, 1 thermal conductivity, 2 density heat coefficient; −1 otherwise.
+  static int transport_index(const std::string& c) {
+    if (c == "shear_viscosity") return 0;
+    if (c == "thermal_conductivity") return 1;
+    if (c == "density_heat_coefficient") return 2;
+    return -1;
+  }
+  static double pick_transport(const NavierStokesValues& v, int which) {
+    return which == 0 ? v.shear_viscosity : which == 1 ? v.thermal_conductivity : v.density_heat_coefficient;
+  }
+  CoefficientValue transport_value(HomogeneousCoolingState& hcs, int d, const Rational& alpha,
+                                   const std::string& scheme, int which, const OrderRequest& order) {
+    if (scheme == "linear") {
+      // Standard first Sonine, linear in a2 (theory.md (10.8)): exact; error against orders 2, 3.
+      auto& fs = first_sonine_[static_cast<std::size_t>(d - 2)];
+      if (!fs) fs = first_sonine_navier_stokes(d);
+      const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
+      const Rational exact = fs->evaluate(alpha, a2)[static_cast<std::size_t>(which)];
+      const auto* n2 = navier_stokes(hcs, d, alpha, 2);
+      const auto* n3 = navier_stokes(hcs, d, alpha, 3);
+      if (n2 == nullptr || n3 == nullptr) return {exact, Rational(0), 1, false, true, true};
+      const TruncationEstimate e = estimate_truncation(exact, Rational::from_double(pick_transport(*n2, which)),
+                                                       Rational::from_double(pick_transport(*n3, which)));
+      return {exact, e.error, 1, e.converging, true, true};
+    }
+    return choose_order(order, max_order(), [&](int n) {
+      OrderValue v;
+      v.exact = false;
+      const auto* s0 = navier_stokes(hcs, d, alpha, n);
+      const auto* s1 = navier_stokes(hcs, d, alpha, n + 1);
+      const auto* s2 = navier_stokes(hcs, d, alpha, n + 2);
+      v.defined = s0 != nullptr && s1 != nullptr && s2 != nullptr;
+      if (!v.defined) return v;
+      v.estimate = estimate_truncation(Rational::from_double(pick_transport(*s0, which)),
+                                       Rational::from_double(pick_transport(*s1, which)),
+                                       Rational::from_double(pick_transport(*s2, which)));
+      return v;
+    });
+  }
+  /// η*, κ*, μ* at Sonine order N about the nonlinear HCS with a_2..a_{N+1}; null if that HCS has
+  /// no solution. Memoised per (d, α, N).
+  const NavierStokesValues* navier_stokes(HomogeneousCoolingState& hcs, int d, const Rational& alpha, int n) {
+    auto key = std::make_tuple(d, alpha.to_string(), n);
+    const auto it = ns_memo_.find(key);
+    if (it != ns_memo_.end()) return it->second ? &*it->second : nullptr;
+    const HcsState& state = nonlinear(hcs, d, alpha, n + 1);
+    std::optional<NavierStokesValues> value;
+    if (state.solved) {
+      auto& solver = ns_[static_cast<std::size_t>(d - 2)];
+      if (!solver) solver = std::make_unique<DiluteNavierStokes>(d);
+      value = solver->solve(alpha, n, state.a);
+    }
+    const auto& stored = ns_memo_.emplace(std::move(key), value).first->second;
+    return stored ? &*stored : nullptr;
+  }
   static int cumulant_index(const std::string& c) {
     for (int k = 2; k <= kHighestCumulant; ++k)
       if (c == cumulant_name(k)) return k;
@@ -138,6 +206,9 @@ class SmoothInelasticModel final : public TransportModel {
 
   std::array<std::unique_ptr<HomogeneousCoolingState>, 2> solvers_;
   std::map<std::tuple<int, std::string, int>, HcsState> memo_;
+  std::array<std::unique_ptr<DiluteNavierStokes>, 2> ns_;
+  std::array<std::optional<FirstSonineNavierStokes>, 2> first_sonine_;
+  std::map<std::tuple<int, std::string, int>, std::optional<NavierStokesValues>> ns_memo_;
 };
 
 }  // namespace

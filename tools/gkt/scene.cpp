@@ -78,6 +78,9 @@ void apply_override(toml::table& scene, const std::string& assignment) {
     parsed = toml::table{{"value", value}};
   }
   scene.insert_or_assign(key, *parsed.get("value"));
+  // `order` and `tolerance` are alternatives: setting one replaces the other.
+  if (key == "order") scene.erase("tolerance");
+  if (key == "tolerance") scene.erase("order");
 }
 
 }  // namespace

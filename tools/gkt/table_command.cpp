@@ -73,6 +73,12 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
       // One order per row: the smallest at which every requested coefficient meets the tolerance.
       int common = 0;
       for (const auto& v : values) common = std::max(common, v.order);
+      const Rational tolerance = *request.tolerance;
+      request.tolerance.reset();
+      request.order = common;
+      auto flags = values;
+      values = model->evaluate(parameters, scene.coefficients, request);
+      for (std::size_t k = 0; k < values.size(); ++k) values[k].converged = flags[k].converged;
       std::string worst;
       double worst_error = -1;
       for (std::size_t k = 0; k < values.size(); ++k)
@@ -85,15 +91,10 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
         for (std::size_t a = 0; a < scene.axes.size(); ++a)
           if (scene.axes[a].swept && scene.axes[a].key != "tolerance")
             at += scene.axes[a].key + "=" + format_parameter(scene.axes[a].values[index[a]]) + " ";
-        warnings.push_back(at + "tolerance " + format_error(request.tolerance->to_double()) +
-                           " not reached: row at order " + std::to_string(common) + ", largest estimated error " +
-                           format_error(worst_error) + " (" + worst + ")");
+        warnings.push_back(at + "tolerance " + format_error(tolerance.to_double()) + " not reached: row at order " +
+                           std::to_string(common) + ", largest estimated error " + format_error(worst_error) + " (" +
+                           worst + ")");
       }
-      request.tolerance.reset();
-      request.order = common;
-      auto flags = values;
-      values = model->evaluate(parameters, scene.coefficients, request);
-      for (std::size_t k = 0; k < values.size(); ++k) values[k].converged = flags[k].converged;
     }
     for (const auto& v : values) {
       if (options.exact && !v.exact)

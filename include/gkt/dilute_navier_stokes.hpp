@@ -1,0 +1,63 @@
+// Navier–Stokes transport coefficients of the dilute gas of smooth inelastic hard spheres
+// (d = 3) or disks (d = 2), standard Sonine scheme (Maxwellian-weighted basis) about the
+// homogeneous cooling state (docs/theory.md §10; [brey1998], [garzo2019] ch. 3).
+//
+// Reduced as in docs/conventions.md: η* = η/η0, κ* = κ/κ0, μ* = nμ/(Tκ0).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "gkt/dense_matrix.hpp"
+#include "gkt/rational.hpp"
+#include "gkt/rational_polynomial.hpp"
+
+namespace gkt {
+
+/// First Sonine approximation, linear in a2, as exact polynomials in α and a2:
+/// ν = ν0(α) + a2 ν2(α) for the collision frequencies of the shear and heat modes
+/// (normalised so that both equal 1 … (d−1)/d at α = 1 as in [garzo2019]).
+struct FirstSonineNavierStokes {
+  RationalPolynomial nu_eta_0, nu_eta_a2;      ///< ν_η* = nu_eta_0 + a2 nu_eta_a2
+  RationalPolynomial nu_kappa_0, nu_kappa_a2;  ///< ν_κ* = nu_kappa_0 + a2 nu_kappa_a2
+  RationalPolynomial zeta_0, zeta_a2;          ///< ζ* = zeta_0 + a2 zeta_a2
+  /// Returns η*, κ*, μ* at exact α and a2 (standard first-Sonine formulas, theory.md (10.8)).
+  [[nodiscard]] std::vector<Rational> evaluate(const Rational& alpha, const Rational& a2) const;
+};
+
+/// Returns the first-Sonine closed forms derived by the engine for dimension d.
+FirstSonineNavierStokes first_sonine_navier_stokes(int dimension);
+
+/// η*, κ*, μ* of one Sonine order.
+struct NavierStokesValues {
+  double shear_viscosity = 0;
+  double thermal_conductivity = 0;
+  double density_heat_coefficient = 0;
+};
+
+/// Solver for orders N ≥ 1: the operator about the HCS is built once per dimension as exact
+/// polynomials in α; each call evaluates it at α (long double) and solves in double.
+class DiluteNavierStokes {
+ public:
+  /// Throws std::invalid_argument unless dimension is 2 or 3.
+  explicit DiluteNavierStokes(int dimension);
+
+  /// Returns η*, κ*, μ* at Sonine order `order` (N polynomials per mode) about the HCS with
+  /// cumulants hcs_a (a[0] = 1, a[1] = 0, a[2..K]); α in (0, 1].
+  NavierStokesValues solve(const Rational& alpha, int order, const std::vector<double>& hcs_a);
+
+  [[nodiscard]] int dimension() const { return dimension_; }
+
+ private:
+  struct PolynomialMatrices {
+    int n_max = -1, k_max = -1;
+    std::vector<DenseMatrix<std::vector<long double>>> by_weight;  // [k](p, q): coefficients of α^j
+  };
+  void ensure_built(int order, int k_max);
+  int dimension_;
+  PolynomialMatrices vector_, tensor_;
+  std::optional<std::vector<std::vector<long double>>> energy_;  // E(k, l) polynomials
+  int energy_k_ = -1;
+};
+
+}  // namespace gkt
