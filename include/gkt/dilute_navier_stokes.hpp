@@ -53,7 +53,13 @@ class DiluteNavierStokes {
     int n_max = -1, k_max = -1;
     std::vector<DenseMatrix<std::vector<long double>>> by_weight;  // [k](p, q): coefficients of α^j
   };
+  /// The α-independent Galerkin pieces (theory.md (10.5)) at the built sizes, in double.
+  struct Pieces {
+    std::vector<std::vector<double>> d, m, u, u2;
+    std::vector<double> flux;
+  };
   void ensure_built(int order, int k_max);
+  Pieces vector_pieces_, tensor_pieces_;
   int dimension_;
   PolynomialMatrices vector_, tensor_;
   std::optional<std::vector<std::vector<long double>>> energy_;  // E(k, l) polynomials

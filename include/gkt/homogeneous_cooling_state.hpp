@@ -63,6 +63,7 @@ class HomogeneousCoolingState {
   int dimension_;
   std::optional<FirstSonineHcs> first_sonine_;
   Tables tables_;
+  std::vector<std::vector<double>> derivative_weights_;  // ⟨x S_p' S_k⟩, p, k ≤ tables_.k_max
 };
 
 }  // namespace gkt

@@ -18,6 +18,20 @@ struct RationalFunction {
   [[nodiscard]] RationalFunction reduced() const;
   /// True if a/b == c/d as rational functions (a·d == b·c).
   [[nodiscard]] bool equals(const RationalFunction& other) const;
+
+  friend RationalFunction operator+(const RationalFunction& a, const RationalFunction& b) {
+    return RationalFunction{a.numerator * b.denominator + b.numerator * a.denominator, a.denominator * b.denominator}
+        .reduced();
+  }
+  friend RationalFunction operator-(const RationalFunction& a, const RationalFunction& b) {
+    return RationalFunction{a.numerator * b.denominator - b.numerator * a.denominator, a.denominator * b.denominator}
+        .reduced();
+  }
+  friend RationalFunction operator*(const RationalFunction& a, const RationalFunction& b) {
+    return RationalFunction{a.numerator * b.numerator, a.denominator * b.denominator}.reduced();
+  }
+  /// Throws std::domain_error when b is identically zero.
+  friend RationalFunction operator/(const RationalFunction& a, const RationalFunction& b);
 };
 
 }  // namespace gkt

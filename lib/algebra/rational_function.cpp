@@ -30,4 +30,9 @@ bool RationalFunction::equals(const RationalFunction& other) const {
   return numerator * other.denominator == denominator * other.numerator;
 }
 
+RationalFunction operator/(const RationalFunction& a, const RationalFunction& b) {
+  if (b.numerator.is_zero()) throw std::domain_error("RationalFunction: division by zero");
+  return RationalFunction{a.numerator * b.denominator, a.denominator * b.numerator}.reduced();
+}
+
 }  // namespace gkt

@@ -181,8 +181,17 @@ void DiluteNavierStokes::ensure_built(int order, int k_max) {
     target.n_max = n;
     target.k_max = k;
   };
+  const int vector_before = vector_.n_max, tensor_before = tensor_.n_max, k_before = vector_.k_max;
   build(vector_, 1, order);      // S_1 … S_N (index 0 is momentum)
   build(tensor_, 2, order - 1);  // S_0 … S_{N−1}
+  if (vector_.n_max != vector_before || vector_.k_max != k_before) {
+    const ModePieces v = vector_pieces(dimension_, vector_.n_max, vector_.k_max);
+    vector_pieces_ = {v.d, v.m, v.u, v.u2, v.flux};
+  }
+  if (tensor_.n_max != tensor_before || tensor_.k_max != k_before) {
+    const ModePieces t = tensor_pieces(dimension_, tensor_.n_max, tensor_.k_max);
+    tensor_pieces_ = {t.d, t.m, t.u, t.u2, t.flux};
+  }
   if (energy_k_ < k_max) {
     const int k = std::max({k_max + 2, energy_k_ + 4, 1});
     const auto e = bilinear_collision_moments<RationalPolynomial>(dimension_, alpha, k);
@@ -220,7 +229,7 @@ NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, c
   NavierStokesValues out;
   {  // heat and density modes: S_1 … S_N
     const int n = order;
-    const ModePieces v = vector_pieces(d, order, k_max);
+    const Pieces& v = vector_pieces_;
     const Eigen::MatrixXd l = operator_matrix(vector_, 1, n);
     Eigen::MatrixXd a_matrix(n, n), b_matrix(n, n), mass(n, n);
     Eigen::VectorXd sa(n), sb(n);
@@ -250,7 +259,7 @@ NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, c
   }
   {  // shear mode: S_0 … S_{N−1}
     const int n = order;
-    const ModePieces t = tensor_pieces(d, order - 1, k_max);
+    const Pieces& t = tensor_pieces_;
     const Eigen::MatrixXd l = operator_matrix(tensor_, 0, n);
     Eigen::MatrixXd c_matrix(n, n);
     Eigen::VectorXd sc(n);

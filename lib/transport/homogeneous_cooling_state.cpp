@@ -66,6 +66,9 @@ void HomogeneousCoolingState::ensure_tables(int k_max) {
     return c;
   };
   tables_.k_max = target;
+  derivative_weights_.assign(static_cast<std::size_t>(target) + 1, std::vector<double>(target + 1));
+  for (int p = 0; p <= target; ++p)
+    for (int k = 0; k <= target; ++k) derivative_weights_[p][k] = derivative_weight(dimension_, p, k).to_double();
   tables_.t.clear();
   tables_.e.clear();
   for (const auto& p : m.sonine) tables_.t.push_back(to_coefficients(p));
@@ -109,7 +112,7 @@ HcsState HomogeneousCoolingState::solve(const Rational& alpha, int k_max, HcsSch
   auto e = [&](int k, int l) { return e_values[static_cast<std::size_t>(k) * kn + l]; };
   std::vector<std::vector<double>> w(static_cast<std::size_t>(k_max) + 1, std::vector<double>(k_max + 1));
   for (int p = 2; p <= k_max; ++p)
-    for (int k = 0; k <= k_max; ++k) w[p][k] = derivative_weight(dimension_, p, k).to_double();
+    for (int k = 0; k <= k_max; ++k) w[p][k] = derivative_weights_[p][k];
   const double two_over_d = 2.0 / dimension_;
   const int unknowns = k_max - 1;  // a_2..a_K
 

@@ -8,6 +8,7 @@
 
 #include <map>
 
+#include "gkt/first_sonine_formulas.hpp"
 #include "gkt/hard_spheres.hpp"
 #include "gkt/linearized_operator.hpp"
 #include "gkt/transport_model.hpp"
@@ -94,6 +95,34 @@ void Sweep10kReusingMatrices(benchmark::State& state) {
   }
 }
 BENCHMARK(Sweep10kReusingMatrices)->Unit(benchmark::kMillisecond);
+
+/// One first-Sonine evaluation of a2, ζ*, η*, κ*, μ* through the generated closed forms.
+void FirstSonineFullSetGenerated(benchmark::State& state) {
+  double alpha = 0.5;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(gkt::first_sonine_values(3, alpha));
+    alpha = alpha < 0.99 ? alpha + 1e-3 : 0.5;
+  }
+}
+BENCHMARK(FirstSonineFullSetGenerated)->Unit(benchmark::kNanosecond);
+
+/// 10⁴-point α sweep (α from 0.5 to 1) of all smooth-inelastic coefficients at order 4 through
+/// the model interface (nonlinear HCS a2…a5 and η*, κ*, μ* with error estimates), matrices reused.
+void SmoothInelasticSweepOrder4(benchmark::State& state) {
+  const std::vector<std::string> all{
+      "a2", "a3", "cooling_rate", "shear_viscosity", "thermal_conductivity", "density_heat_coefficient"};
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  gkt::OrderRequest request;
+  request.order = 4;
+  (void)model->evaluate({{{"alpha", Rational(1, 2)}}, {}}, all, request);  // build the matrices once
+  const long points = state.range(0);
+  for (auto _ : state)
+    for (long k = 0; k < points; ++k)
+      benchmark::DoNotOptimize(model->evaluate(
+          {{{"alpha", Rational(1, 2) + Rational(k, static_cast<unsigned long>(2 * points))}}, {}}, all, request));
+  state.counters["points"] = static_cast<double>(points);
+}
+BENCHMARK(SmoothInelasticSweepOrder4)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

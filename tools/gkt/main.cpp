@@ -1,11 +1,13 @@
 // gkt: command-line front end. Exit codes: 0 success, 2 bad input or usage, 1 internal error.
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "formula_command.hpp"
 #include "gkt/transport_model.hpp"
 #include "scene.hpp"
 #include "table_command.hpp"
@@ -58,6 +60,17 @@ int main(int argc, char** argv) {
   table->add_option("--output", output, "Output file (written atomically); default: standard output");
   table->add_flag("--exact", exact, "Print exact rationals (refused where a result is not rational)");
 
+  auto* formula = app.add_subcommand("formula", "Print a coefficient's exact closed form (text, LaTeX or C++)");
+  std::string formula_scene, coefficient, formula_format = "text", formula_output;
+  std::vector<std::string> formula_overrides;
+  std::optional<int> formula_order;
+  formula->add_option("scene", formula_scene, "Scene file (TOML): model, dimension")->required();
+  formula->add_option("--coefficient", coefficient, "Canonical coefficient name")->required();
+  formula->add_option("--order", formula_order, "Sonine order (default 1)");
+  formula->add_option("--format", formula_format, "Output format")->check(CLI::IsMember({"text", "latex", "cpp"}));
+  formula->add_option("--set", formula_overrides, "Override a scene key: KEY=VALUE; repeatable");
+  formula->add_option("--output", formula_output, "Output file (written atomically); default: standard output");
+
   app.add_subcommand("models", "List the models with their coefficients and parameters");
 
   try {
@@ -75,6 +88,11 @@ int main(int argc, char** argv) {
 
   try {
     if (table->parsed()) return run_table(scene_path, overrides, format, output, exact);
+    if (formula->parsed()) {
+      gkt::cli::write_output(formula_output, gkt::cli::formula(formula_scene, formula_overrides, coefficient,
+                                                               formula_order, formula_format));
+      return 0;
+    }
     return run_models();
   } catch (const std::invalid_argument& e) {
     std::cerr << "gkt: error: " << e.what() << "\n";

@@ -85,7 +85,7 @@ void apply_override(toml::table& scene, const std::string& assignment) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order) {
   std::ifstream in(path);
   if (!in) throw error("scene: cannot open '" + path + "'");
   std::stringstream text;
@@ -159,7 +159,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   }
 
   const bool has_order = table.contains("order"), has_tolerance = table.contains("tolerance");
-  if (has_order == has_tolerance)
+  if ((has_order && has_tolerance) || (require_order && !has_order && !has_tolerance))
     throw error("order: give exactly one of 'order' (an integer in [1, " + std::to_string(model->max_order()) +
                 "]) or 'tolerance' (a number in (0, 1])");
   for (const auto& spec : specs) {

@@ -29,6 +29,7 @@ struct Scene {
 /// Returns the scene read from `path` with `overrides` ("key=value", value in TOML syntax)
 /// applied; validates every key, type and range against `model`'s parameter list.
 /// Throws std::invalid_argument with a one-line message naming the field on bad input.
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides);
+/// With require_order = false a scene may omit both `order` and `tolerance` (gkt formula).
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order = true);
 
 }  // namespace gkt::cli
