@@ -124,6 +124,42 @@ void SmoothInelasticSweepOrder4(benchmark::State& state) {
 }
 BENCHMARK(SmoothInelasticSweepOrder4)->Arg(1000)->Unit(benchmark::kMillisecond);
 
+/// Warm time for all smooth-inelastic coefficients at order N and α ∈ {0.9, 0.5, 0.2} (matrices
+/// already built; every call solves the HCS and the Navier–Stokes systems anew for a new α).
+void SmoothInelasticOrderWarm(benchmark::State& state) {
+  const Rational alphas[] = {Rational(9, 10), Rational(1, 2), Rational(1, 5)};
+  const Rational alpha = alphas[state.range(0)];
+  const int order = static_cast<int>(state.range(1));
+  const std::vector<std::string> all{"a2", "cooling_rate", "shear_viscosity", "thermal_conductivity",
+                                     "density_heat_coefficient"};
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  gkt::OrderRequest request;
+  request.order = order;
+  (void)model->evaluate({{{"alpha", Rational(1, 3)}}, {}}, all, request);  // build
+  long k = 0;
+  for (auto _ : state)  // perturb α in the 12th digit so nothing is memoised
+    benchmark::DoNotOptimize(model->evaluate(
+        {{{"alpha", alpha - Rational(++k % 1000, 1000000000000UL)}}, {}}, all, request));
+}
+BENCHMARK(SmoothInelasticOrderWarm)
+    ->ArgsProduct({{0, 1, 2}, {1, 2, 4, 6, 8}})
+    ->Unit(benchmark::kMicrosecond);
+
+/// Cold: a new model per iteration at order N, α = 0.9 (one-time symbolic builds included).
+void SmoothInelasticOrderCold(benchmark::State& state) {
+  const int order = static_cast<int>(state.range(0));
+  gkt::OrderRequest request;
+  request.order = order;
+  for (auto _ : state) {
+    auto model = gkt::make_transport_model("smooth-inelastic");
+    benchmark::DoNotOptimize(model->evaluate({{{"alpha", Rational(9, 10)}}, {}},
+                                             {"a2", "cooling_rate", "shear_viscosity", "thermal_conductivity",
+                                              "density_heat_coefficient"},
+                                             request));
+  }
+}
+BENCHMARK(SmoothInelasticOrderCold)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();
