@@ -190,6 +190,36 @@ TEST(CliFormula, TextLatexAndHardSpheres) {
   }
 }
 
+TEST(CliEvolve, GoldenAndBadInput) {
+  const CliRun r = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("cvode: steps="), std::string::npos);
+  // Regression data (ODE output: relative tolerance 1e-12 covers only rounding; see golden/README).
+  expect_csv_close(r.out, read_file(golden_path("cooling_constant_alpha.csv")));
+  const fs::path dir = fs::temp_directory_path() / ("gkt_evolve_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string out = (dir / "series.csv").string();
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {" --set t_end=0", "t_end: must be a number > 0"},
+           {" --set rtol=0", "rtol: must be a number in (0, 0.1]"},
+           {" --set atol=-1", "atol: must be a number in (0, 1]"},
+           {" --set a2=0.9", "a2: must be a number in [-0.5333333333333333, 0.8]"},
+           {" --set temperature=-2", "temperature: must be a number > 0"},
+           {" --set alpha=1.2", "alpha: must be a number in (0, 1]"},
+           {" --set points=0", "points: must be an integer in [1, 1000000]"},
+           {" --set order=13", "order: must be an integer in [1, 12]"},
+           {" --set 'times=[2, 1]'", "times: give either times or t_end/points"},
+           {" --set delta=0.1", "delta: unknown key for gkt evolve"},
+           {" --set 'model=\"hard-spheres\"'", "model: gkt evolve supports \"smooth-inelastic\""}}) {
+    const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --output " + out + args);
+    EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_EQ(bad.err.find('\n'), bad.err.size() - 1) << bad.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(Cli, SetOverridesSceneKeys) {
   const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") +
                            " --exact --set order=2 --set 'coefficients=[\"self_diffusion\"]'");

@@ -20,8 +20,9 @@ template <class Ring>
 struct BilinearCollisionMoments {
   int dimension = 3;
   int k_max = 0;
-  std::vector<Ring> sonine;  ///< T(p; k, l) at (p·(K+1) + k)·(K+1) + l
-  std::vector<Ring> energy;  ///< E(k, l) at k·(K+1) + l
+  std::vector<Ring> sonine;     ///< T(p; k, l) at (p·(K+1) + k)·(K+1) + l
+  std::vector<Ring> energy;     ///< E(k, l) at k·(K+1) + l
+  std::vector<Ring> frequency;  ///< C(k, l) = ⟨S_k(X1) S_l(X2)⟩/J0 (collision rate) at k·(K+1) + l
   [[nodiscard]] const Ring& t(int p, int k, int l) const {
     return sonine[(static_cast<std::size_t>(p) * (k_max + 1) + k) * (k_max + 1) + l];
   }

@@ -73,6 +73,18 @@ BilinearCollisionMoments<Ring> bilinear_collision_moments(int dimension, const R
         }
       out.energy[static_cast<std::size_t>(k) * n + l] = std::move(acc);
     }
+  out.frequency.assign(static_cast<std::size_t>(n) * n, Ring(0L));
+  for (int k = 0; k < n; ++k)
+    for (int l = 0; l < n; ++l) {
+      Ring acc(0L);
+      for (int a = 0; a <= k; ++a)
+        for (int b = 0; b <= l; ++b) {
+          Ring v = moments(a, b, 0);
+          detail::scale(v, s[k][a] * s[l][b]);
+          acc += v;
+        }
+      out.frequency[static_cast<std::size_t>(k) * n + l] = std::move(acc);
+    }
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "evolve_command.hpp"
 #include "formula_command.hpp"
 #include "gkt/transport_model.hpp"
 #include "scene.hpp"
@@ -71,6 +72,14 @@ int main(int argc, char** argv) {
   formula->add_option("--set", formula_overrides, "Override a scene key: KEY=VALUE; repeatable");
   formula->add_option("--output", formula_output, "Output file (written atomically); default: standard output");
 
+  auto* evolve = app.add_subcommand("evolve", "Integrate the cooling of a homogeneous gas: T(t), a2(t), ... (CVODE)");
+  std::string evolve_scene, evolve_format = "csv", evolve_output;
+  std::vector<std::string> evolve_overrides;
+  evolve->add_option("scene", evolve_scene, "Scene file (TOML)")->required();
+  evolve->add_option("--set", evolve_overrides, "Override a scene key: KEY=VALUE; repeatable");
+  evolve->add_option("--format", evolve_format, "Output format")->check(CLI::IsMember({"csv", "json"}));
+  evolve->add_option("--output", evolve_output, "Output file (written atomically); default: standard output");
+
   app.add_subcommand("models", "List the models with their coefficients and parameters");
 
   try {
@@ -88,6 +97,14 @@ int main(int argc, char** argv) {
 
   try {
     if (table->parsed()) return run_table(scene_path, overrides, format, output, exact);
+    if (evolve->parsed()) {
+      std::string counters;
+      const auto table = gkt::cli::evolve(evolve_scene, evolve_overrides, counters);
+      gkt::cli::write_output(evolve_output,
+                             evolve_format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table));
+      std::cerr << "gkt: " << counters << "\n";
+      return 0;
+    }
     if (formula->parsed()) {
       gkt::cli::write_output(formula_output, gkt::cli::formula(formula_scene, formula_overrides, coefficient,
                                                                formula_order, formula_format));

@@ -18,8 +18,10 @@ constexpr long kMaxSweepPoints = 1000000;
 
 std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
 
+}  // namespace
+
 /// Exact value of a TOML number: integers exactly, floats by their shortest round-trip decimal.
-Rational exact_number(const toml::node& node, const std::string& key) {
+Rational scene_number(const toml::node& node, const std::string& key) {
   if (const auto* i = node.as_integer()) return Rational(static_cast<long>(i->get()));
   if (const auto* f = node.as_floating_point()) {
     const double x = f->get();
@@ -31,13 +33,15 @@ Rational exact_number(const toml::node& node, const std::string& key) {
   throw error(key + ": must be a number, a list of numbers or { from = a, to = b, points = k }");
 }
 
+namespace {
+
 /// Values of a numeric key: a number, an array, or an inclusive linear range.
 Axis read_axis(const std::string& key, const toml::node& node) {
   Axis axis{key, {}, false};
   if (const auto* array = node.as_array()) {
     if (array->empty()) throw error(key + ": a sweep list must not be empty");
     axis.swept = true;
-    for (const auto& item : *array) axis.values.push_back(exact_number(item, key));
+    for (const auto& item : *array) axis.values.push_back(scene_number(item, key));
     return axis;
   }
   if (const auto* range = node.as_table()) {
@@ -48,8 +52,8 @@ Axis read_axis(const std::string& key, const toml::node& node) {
     }
     if (!range->contains("from") || !range->contains("to") || !range->contains("points"))
       throw error(key + ": a range needs from, to and points");
-    const Rational from = exact_number(*range->get("from"), key + ".from");
-    const Rational to = exact_number(*range->get("to"), key + ".to");
+    const Rational from = scene_number(*range->get("from"), key + ".from");
+    const Rational to = scene_number(*range->get("to"), key + ".to");
     const auto* points_node = range->get("points")->as_integer();
     if (points_node == nullptr || points_node->get() < 1 || points_node->get() > kMaxSweepPoints)
       throw error(key + ".points: must be an integer in [1, " + std::to_string(kMaxSweepPoints) + "]");
@@ -60,7 +64,7 @@ Axis read_axis(const std::string& key, const toml::node& node) {
                                         : from + (to - from) * Rational(k, static_cast<unsigned long>(points - 1)));
     return axis;
   }
-  axis.values.push_back(exact_number(node, key));
+  axis.values.push_back(scene_number(node, key));
   return axis;
 }
 
@@ -85,7 +89,7 @@ void apply_override(toml::table& scene, const std::string& assignment) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order) {
+toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides) {
   std::ifstream in(path);
   if (!in) throw error("scene: cannot open '" + path + "'");
   std::stringstream text;
@@ -97,7 +101,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     throw error("scene: " + path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
   }
   for (const auto& o : overrides) apply_override(table, o);
+  return table;
+}
 
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order) {
+  toml::table table = read_scene_table(path, overrides);
   Scene scene;
   const auto* model_node = table.get("model");
   if (model_node == nullptr || !model_node->is_string()) {

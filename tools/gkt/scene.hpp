@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <toml++/toml.h>
+
 #include "gkt/rational.hpp"
 #include "gkt/transport_model.hpp"
 
@@ -29,6 +31,12 @@ struct Scene {
 /// Returns the scene read from `path` with `overrides` ("key=value", value in TOML syntax)
 /// applied; validates every key, type and range against `model`'s parameter list.
 /// Throws std::invalid_argument with a one-line message naming the field on bad input.
+/// Returns the parsed TOML table of a scene file with `overrides` applied (one-line errors).
+toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides);
+
+/// Returns the exact value of a numeric TOML node; throws "<key>: must be a number …".
+Rational scene_number(const toml::node& node, const std::string& key);
+
 /// With require_order = false a scene may omit both `order` and `tolerance` (gkt formula).
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order = true);
 

@@ -1,0 +1,155 @@
+#include "gkt/homogeneous_cooling_evolution.hpp"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+namespace gkt {
+
+namespace {
+
+// RAII owners of the SUNDIALS objects (C API).
+struct ContextDeleter {
+  void operator()(SUNContext c) const { SUNContext_Free(&c); }
+};
+struct VectorDeleter {
+  void operator()(N_Vector v) const { N_VDestroy(v); }
+};
+struct MatrixDeleter {
+  void operator()(SUNMatrix m) const { SUNMatDestroy(m); }
+};
+struct SolverDeleter {
+  void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); }
+};
+struct CvodeDeleter {
+  void operator()(void* mem) const { CVodeFree(&mem); }
+};
+
+/// State y = (θ = T/T0, C, a_2 … a_K); rates (theory.md (12.2)).
+struct Problem {
+  const CumulantHierarchy* h;
+  int k_max;
+  double zeta_factor;  // 4/(d+2) · (d+2)/(2d) = 2/d: dθ/dτ = (2/d) R_1 θ^{3/2}
+  mutable std::vector<double> a, f, jac, grad_e, grad_c;
+
+  void unpack(const double* y) const {
+    a.assign(static_cast<std::size_t>(k_max) + 1, 0.0);
+    a[0] = 1.0;
+    for (int k = 2; k <= k_max; ++k) a[k] = y[k];
+  }
+};
+
+int rates(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
+  const auto& p = *static_cast<const Problem*>(data);
+  const double* yv = N_VGetArrayPointer(y);
+  double* dv = N_VGetArrayPointer(ydot);
+  const double theta = yv[0];
+  if (!(theta > 0)) return 1;  // recoverable: CVODE retries with a smaller step
+  p.unpack(yv);
+  const double sq = std::sqrt(theta);
+  dv[0] = p.zeta_factor * p.h->energy_moment(p.a) * theta * sq;
+  dv[1] = sq * p.h->collision_rate(p.a);
+  p.h->residual(p.a, p.f, nullptr);
+  for (int k = 2; k <= p.k_max; ++k) dv[k] = sq * p.f[static_cast<std::size_t>(k - 2)] / p.h->norm(k);
+  return 0;
+}
+
+int jacobian(sunrealtype, N_Vector y, N_Vector, SUNMatrix jm, void* data, N_Vector, N_Vector, N_Vector) {
+  const auto& p = *static_cast<const Problem*>(data);
+  const double* yv = N_VGetArrayPointer(y);
+  const double theta = yv[0];
+  if (!(theta > 0)) return 1;
+  p.unpack(yv);
+  const int n = p.k_max + 1, unknowns = p.k_max - 1;
+  const double sq = std::sqrt(theta);
+  p.jac.assign(static_cast<std::size_t>(unknowns) * unknowns, 0.0);
+  p.h->residual(p.a, p.f, &p.jac);
+  p.h->gradients(p.a, p.grad_e, p.grad_c);
+  const double r1 = p.h->energy_moment(p.a), rate = p.h->collision_rate(p.a);
+  SUNMatZero(jm);
+  SM_ELEMENT_D(jm, 0, 0) = 1.5 * p.zeta_factor * r1 * sq;
+  SM_ELEMENT_D(jm, 1, 0) = 0.5 * rate / sq;
+  for (int k = 2; k < n; ++k) {
+    SM_ELEMENT_D(jm, 0, k) = p.zeta_factor * p.grad_e[k] * theta * sq;
+    SM_ELEMENT_D(jm, 1, k) = sq * p.grad_c[k];
+    SM_ELEMENT_D(jm, k, 0) = 0.5 * p.f[static_cast<std::size_t>(k - 2)] / (sq * p.h->norm(k));
+    for (int q = 2; q < n; ++q)
+      SM_ELEMENT_D(jm, k, q) = sq * p.jac[static_cast<std::size_t>(k - 2) * unknowns + (q - 2)] / p.h->norm(k);
+  }
+  return 0;
+}
+
+void check(int flag, const char* what) {
+  if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + what + " failed (flag " + std::to_string(flag) + ")");
+}
+
+}  // namespace
+
+EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
+                                           const std::vector<double>& initial_a, const std::vector<double>& times,
+                                           double rtol, double atol) {
+  if (!(temperature0 > 0)) throw std::invalid_argument("temperature: must be > 0");
+  if (!(rtol > 0) || !(atol > 0)) throw std::invalid_argument("rtol, atol: must be > 0");
+  for (std::size_t i = 0; i < times.size(); ++i)
+    if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
+      throw std::invalid_argument("times: must be positive and increasing");
+  const int k_max = hierarchy.k_max(), n = k_max + 1;
+  Problem problem{&hierarchy, k_max, 2.0 / hierarchy.dimension(), {}, {}, {}, {}, {}};
+
+  SUNContext raw_context = nullptr;
+  check(SUNContext_Create(nullptr, &raw_context), "SUNContext_Create");
+  const std::unique_ptr<std::remove_pointer_t<SUNContext>, ContextDeleter> context(raw_context);
+  const std::unique_ptr<std::remove_pointer_t<N_Vector>, VectorDeleter> y(N_VNew_Serial(n, raw_context));
+  double* yv = N_VGetArrayPointer(y.get());
+  yv[0] = temperature0;
+  yv[1] = 0.0;
+  for (int k = 2; k <= k_max; ++k)
+    yv[k] = static_cast<std::size_t>(k - 2) < initial_a.size() ? initial_a[static_cast<std::size_t>(k - 2)] : 0.0;
+
+  const std::unique_ptr<void, CvodeDeleter> cvode(CVodeCreate(CV_BDF, raw_context));
+  if (!cvode) throw std::runtime_error("CVODE: CVodeCreate failed");
+  check(CVodeInit(cvode.get(), rates, 0.0, y.get()), "CVodeInit");
+  check(CVodeSStolerances(cvode.get(), rtol, atol), "CVodeSStolerances");
+  check(CVodeSetUserData(cvode.get(), &problem), "CVodeSetUserData");
+  check(CVodeSetMaxNumSteps(cvode.get(), 1000000), "CVodeSetMaxNumSteps");
+  const std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter> matrix(SUNDenseMatrix(n, n, raw_context));
+  const std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter> solver(
+      SUNLinSol_Dense(y.get(), matrix.get(), raw_context));
+  check(CVodeSetLinearSolver(cvode.get(), solver.get(), matrix.get()), "CVodeSetLinearSolver");
+  check(CVodeSetJacFn(cvode.get(), jacobian), "CVodeSetJacFn");
+
+  EvolutionResult result;
+  for (double target : times) {
+    sunrealtype reached = 0;
+    check(CVode(cvode.get(), target, y.get(), &reached, CV_NORMAL), "CVode");
+    EvolutionSample s;
+    s.time = reached;
+    s.temperature = yv[0];
+    s.collisions = yv[1];
+    problem.unpack(yv);
+    s.a = problem.a;
+    s.cooling_rate = -(hierarchy.dimension() + 2) * hierarchy.energy_moment(s.a) / (2.0 * hierarchy.dimension());
+    result.samples.push_back(std::move(s));
+  }
+  long v = 0;
+  CVodeGetNumSteps(cvode.get(), &v);
+  result.counters.steps = v;
+  CVodeGetNumRhsEvals(cvode.get(), &v);
+  result.counters.rhs_evaluations = v;
+  CVodeGetNumJacEvals(cvode.get(), &v);
+  result.counters.jacobian_evaluations = v;
+  CVodeGetNumErrTestFails(cvode.get(), &v);
+  result.counters.error_test_failures = v;
+  CVodeGetNumNonlinSolvIters(cvode.get(), &v);
+  result.counters.nonlinear_iterations = v;
+  return result;
+}
+
+}  // namespace gkt

@@ -1,0 +1,126 @@
+#include "evolve_command.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "gkt/homogeneous_cooling_evolution.hpp"
+#include "gkt/homogeneous_cooling_state.hpp"
+#include "scene.hpp"
+
+namespace gkt::cli {
+
+namespace {
+
+constexpr int kMaxOrder = 12;
+constexpr long kMaxPoints = 1000000;
+
+std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
+
+std::string format_value(double x) {
+  char buffer[64];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return {buffer, r.ptr};
+}
+
+/// A single number with an allowed (open or closed) range.
+double number(const toml::table& t, const std::string& key, double fallback, double lo, bool lo_open, double hi,
+              const std::string& allowed) {
+  const auto* node = t.get(key);
+  if (node == nullptr) return fallback;
+  if (node->is_array() || node->is_table()) throw error(key + ": must be a single number (" + allowed + ")");
+  const double v = scene_number(*node, key).to_double();
+  if ((lo_open ? v <= lo : v < lo) || v > hi) throw error(key + ": must be " + allowed + ", got " + format_value(v));
+  return v;
+}
+
+}  // namespace
+
+Table evolve(const std::string& scene_path, const std::vector<std::string>& overrides, std::string& counters) {
+  const toml::table t = read_scene_table(scene_path, overrides);
+  const std::set<std::string> valid{"model", "dimension", "alpha", "order", "t_end",      "points",
+                                    "times", "rtol",      "atol",  "a2",    "temperature"};
+  for (const auto& [key, value] : t) {
+    const std::string k(key.str());
+    if (!valid.contains(k)) {
+      std::string list;
+      for (const auto& v : valid) {
+        if (!list.empty()) list += ", ";
+        list += v;
+      }
+      throw error(k + ": unknown key for gkt evolve; valid keys: " + list);
+    }
+  }
+  const auto* model = t.get("model");
+  if (model == nullptr || !model->is_string() || model->as_string()->get() != "smooth-inelastic")
+    throw error("model: gkt evolve supports \"smooth-inelastic\" (constant restitution)");
+  const double dim = number(t, "dimension", 3, 2, false, 3, "2 or 3");
+  if (dim != 2 && dim != 3) throw error("dimension: must be 2 or 3, got " + format_value(dim));
+  const int d = static_cast<int>(dim);
+  const auto* alpha_node = t.get("alpha");
+  if (alpha_node == nullptr) throw error("alpha: required, a number in (0, 1]");
+  if (alpha_node->is_array() || alpha_node->is_table()) throw error("alpha: must be a single number in (0, 1]");
+  const Rational alpha = scene_number(*alpha_node, "alpha");
+  if (alpha.sign() <= 0 || alpha > Rational(1))
+    throw error("alpha: must be a number in (0, 1], got " + alpha.to_string());
+  const double order = number(t, "order", 3, 1, false, kMaxOrder, "an integer in [1, 12]");
+  if (order != std::floor(order)) throw error("order: must be an integer in [1, 12], got " + format_value(order));
+  const int k_max = static_cast<int>(order) + 1;  // cumulants a_2 … a_{order+1}
+  const double rtol = number(t, "rtol", 1e-8, 0, true, 0.1, "a number in (0, 0.1]");
+  const double atol = number(t, "atol", 1e-12, 0, true, 1, "a number in (0, 1]");
+  const double temperature = number(t, "temperature", 1, 0, true, 1e300, "a number > 0");
+  // Positivity of f_M(1 + a2 S_2): at c = 0 (a2 ≥ −8/(d(d+2))) and at the minimum of S_2
+  // (a2 ≤ 4/(d+2)); docs/theory.md §12.
+  const double a2_lo = -8.0 / (d * (d + 2)), a2_hi = 4.0 / (d + 2);
+  const double a2 = number(t, "a2", 0, a2_lo, false, a2_hi,
+                           "a number in [" + format_value(a2_lo) + ", " + format_value(a2_hi) +
+                               "] (a positive distribution at c = 0 and at the minimum of S2)");
+  std::vector<double> times;
+  if (const auto* list = t.get("times")) {
+    if (t.contains("t_end") || t.contains("points")) throw error("times: give either times or t_end/points");
+    const auto* array = list->as_array();
+    if (array == nullptr || array->empty()) throw error("times: must be a non-empty list of increasing times > 0");
+    for (const auto& item : *array) {
+      const double v = scene_number(item, "times").to_double();
+      if (!(v > 0) || (!times.empty() && !(v > times.back())))
+        throw error("times: must be a non-empty list of increasing times > 0");
+      times.push_back(v);
+    }
+  } else {
+    if (!t.contains("t_end")) throw error("t_end: required (a number > 0), or give times = [...]");
+    const double t_end = number(t, "t_end", 1, 0, true, 1e300, "a number > 0");
+    const double points = number(t, "points", 50, 1, false, kMaxPoints, "an integer in [1, 1000000]");
+    if (points != std::floor(points)) throw error("points: must be an integer in [1, 1000000]");
+    // Log-spaced over four decades up to t_end.
+    const int n = static_cast<int>(points);
+    for (int i = 0; i < n; ++i) times.push_back(n == 1 ? t_end : t_end * std::pow(10.0, -4.0 + 4.0 * i / (n - 1)));
+  }
+
+  HomogeneousCoolingState hcs(d);
+  const auto result = evolve_homogeneous_cooling(hcs.hierarchy(alpha, k_max), temperature, {a2}, times, rtol, atol);
+  Table table;
+  table.model = "smooth-inelastic";
+  table.columns = {"time", "collisions", "temperature"};
+  for (int k = 2; k <= k_max; ++k) {
+    std::string name(1, 'a');
+    name += std::to_string(k);
+    table.columns.push_back(name);
+  }
+  table.columns.emplace_back("cooling_rate");
+  table.numeric.assign(table.columns.size(), true);
+  for (const auto& s : result.samples) {
+    std::vector<std::string> row{format_value(s.time), format_value(s.collisions), format_value(s.temperature)};
+    for (int k = 2; k <= k_max; ++k) row.push_back(format_value(s.a[static_cast<std::size_t>(k)]));
+    row.push_back(format_value(s.cooling_rate));
+    table.rows.push_back(std::move(row));
+  }
+  const auto& c = result.counters;
+  counters = "cvode: steps=" + std::to_string(c.steps) + " rhs=" + std::to_string(c.rhs_evaluations) +
+             " jacobians=" + std::to_string(c.jacobian_evaluations) +
+             " error_test_failures=" + std::to_string(c.error_test_failures) +
+             " newton_iterations=" + std::to_string(c.nonlinear_iterations);
+  return table;
+}
+
+}  // namespace gkt::cli
