@@ -138,12 +138,10 @@ void SmoothInelasticOrderWarm(benchmark::State& state) {
   (void)model->evaluate({{{"alpha", Rational(1, 3)}}, {}}, all, request);  // build
   long k = 0;
   for (auto _ : state)  // perturb α in the 12th digit so nothing is memoised
-    benchmark::DoNotOptimize(model->evaluate(
-        {{{"alpha", alpha - Rational(++k % 1000, 1000000000000UL)}}, {}}, all, request));
+    benchmark::DoNotOptimize(
+        model->evaluate({{{"alpha", alpha - Rational(++k % 1000, 1000000000000UL)}}, {}}, all, request));
 }
-BENCHMARK(SmoothInelasticOrderWarm)
-    ->ArgsProduct({{0, 1, 2}, {1, 2, 4, 6, 8}})
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(SmoothInelasticOrderWarm)->ArgsProduct({{0, 1, 2}, {1, 2, 4, 6, 8}})->Unit(benchmark::kMicrosecond);
 
 /// Cold: a new model per iteration at order N, α = 0.9 (one-time symbolic builds included).
 void SmoothInelasticOrderCold(benchmark::State& state) {
@@ -152,10 +150,9 @@ void SmoothInelasticOrderCold(benchmark::State& state) {
   request.order = order;
   for (auto _ : state) {
     auto model = gkt::make_transport_model("smooth-inelastic");
-    benchmark::DoNotOptimize(model->evaluate({{{"alpha", Rational(9, 10)}}, {}},
-                                             {"a2", "cooling_rate", "shear_viscosity", "thermal_conductivity",
-                                              "density_heat_coefficient"},
-                                             request));
+    benchmark::DoNotOptimize(model->evaluate(
+        {{{"alpha", Rational(9, 10)}}, {}},
+        {"a2", "cooling_rate", "shear_viscosity", "thermal_conductivity", "density_heat_coefficient"}, request));
   }
 }
 BENCHMARK(SmoothInelasticOrderCold)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
