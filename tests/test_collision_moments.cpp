@@ -199,3 +199,31 @@ TEST(HcsLinearizedOperator, WeightedOperatorEqualsHotterPartner) {
     }
   }
 }
+
+// The extra power (σ̂·g)^s of viscoelastic restitution (theory.md (2.9)): moments
+// ⟨(σ̂·g)^s X_1^a X_1'^b⟩/J0 against Monte Carlo, masses 1:3, θ = 1, 1/4, α = 0.6, s = 1/5, 2/5, 1.
+TEST(CollisionMomentTable, FractionalPowerOfImpactVelocityVsMonteCarlo) {
+  const gkt::CollisionPair pair{3, Rational(1), Rational(3), Rational(1), Rational(1, 4)};
+  for (const Rational& s : {Rational(1, 5), Rational(2, 5), Rational(1)}) {
+    const gkt::CollisionMomentTable<Rational> t(pair, Rational(3, 5), {Slot::v1, Slot::v1_post}, {2, 2}, std::nullopt,
+                                                0, s);
+    std::vector<std::function<double(const Collision&)>> integrands;
+    std::vector<std::pair<int, int>> powers;
+    for (int a = 0; a <= 2; ++a)
+      for (int b = 0; b <= 2 - a; ++b) {
+        powers.emplace_back(a, b);
+        integrands.emplace_back([a, b, s](const Collision& c) {
+          const double x1 = dot(c.v1, c.v1, 3), x1p = dot(c.v1p, c.v1p, 3);
+          return std::pow(c.weight, s.to_double()) * std::pow(x1, a) * std::pow(x1p, b);
+        });
+      }
+    gkt::test::CollisionSampler sampler(3, 1, 3, 1, 0.25, 0.6, 4242);
+    const auto mc = gkt::test::weighted_averages(sampler, 400000, integrands);
+    for (std::size_t i = 0; i < powers.size(); ++i) {
+      const double engine = t.moment({powers[i].first, powers[i].second}).to_double() * t.power_factor();
+      EXPECT_NEAR(engine, mc[i].mean, 5 * mc[i].error)
+          << "s=" << s << " a=" << powers[i].first << " b=" << powers[i].second;
+      EXPECT_LT(mc[i].error, 0.02 * std::abs(mc[i].mean)) << "Monte Carlo too noisy to discriminate";
+    }
+  }
+}

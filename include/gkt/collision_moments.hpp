@@ -47,17 +47,22 @@ ScalarMomentTable<Ring> scalar_collision_moments(const CollisionPair& pair, cons
 template <class Ring>
 class CollisionMomentTable {
  public:
-  /// Expands J up to degree max_degree[i] in X_{x_slots[i]} and max_contraction in c_a·c_b.
+  /// Expands J up to degree max_degree[i] in X_{x_slots[i]} and max_contraction in c_a·c_b; with
+  /// power = s the integrand carries the extra factor (σ̂·g)^s (theory.md (2.9)).
   CollisionMomentTable(const CollisionPair& pair, const Ring& alpha, std::vector<Slot> x_slots,
                        std::vector<int> max_degree, std::optional<std::pair<Slot, Slot>> contraction,
-                       int max_contraction);
-  /// Returns ⟨Π_i X_{x_slots[i]}^{k[i]} (c_a·c_b)^j⟩/J0 (exact).
+                       int max_contraction, const Rational& power = Rational(0));
+  /// Returns ⟨(σ̂·g)^s Π_i X_{x_slots[i]}^{k[i]} (c_a·c_b)^j⟩/J_s0 (exact), J_s0 = ⟨(σ̂·g)^s⟩.
   [[nodiscard]] Ring moment(const std::vector<int>& k, int j = 0) const;
+  /// Returns J_s0/J0 = Γ(1 + s/2)(A0/N2_0)^{s/2} (double; 1 for s = 0): multiply moment() by it
+  /// to normalise by J0.
+  [[nodiscard]] double power_factor() const { return power_factor_; }
 
  private:
   std::vector<Slot> x_slots_;
   std::vector<int> box_;
   std::vector<Ring> values_;  // already multiplied by the factorials and (√θ_aθ_b)^j
+  double power_factor_ = 1.0;
 };
 
 /// Returns J0 = ∫dv1 dv2 dσ̂ Θ(σ̂·g)(σ̂·g) e^{−θ_i v1² − θ_j v2²} = K_d √(θ_i+θ_j) (θ_iθ_j)^{−(d+1)/2}

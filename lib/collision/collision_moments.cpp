@@ -133,7 +133,8 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
 template <class Ring>
 CollisionMomentTable<Ring>::CollisionMomentTable(const CollisionPair& pair, const Ring& alpha,
                                                  std::vector<Slot> x_slots, std::vector<int> max_degree,
-                                                 std::optional<std::pair<Slot, Slot>> contraction, int max_contraction)
+                                                 std::optional<std::pair<Slot, Slot>> contraction, int max_contraction,
+                                                 const Rational& power)
     : x_slots_(std::move(x_slots)) {
   pair.validate();
   if (x_slots_.size() > 3 || x_slots_.size() != max_degree.size())
@@ -161,7 +162,9 @@ CollisionMomentTable<Ring>::CollisionMomentTable(const CollisionPair& pair, cons
       cross_scale = product.exact_sqrt();
     }
   }
-  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, reference_form(pair), dq, box);
+  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, reference_form(pair), dq, box, power);
+  const double s = power.to_double();
+  power_factor_ = std::tgamma(1 + s / 2) * std::pow((f.a0 / f.n2_0).to_double(), s / 2);
   box_.assign(box.begin(), box.end());
   values_.reserve(f.coefficients.size());
   for (int k0 = 0; k0 <= box[0]; ++k0)

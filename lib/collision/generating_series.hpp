@@ -86,12 +86,13 @@ struct SmallPolynomial {
   }
 };
 
-/// Dense box of Taylor coefficients f(k0, …, k3), 0 ≤ k_v ≤ box_v, of J(Q(x))/J(Q0).
+/// Dense box of Taylor coefficients f(k0, …, k3), 0 ≤ k_v ≤ box_v, of J_s(Q(x))/J_s(Q0), where
+/// J_s carries the extra factor (σ̂·g)^s (s = 0: the hard-sphere rate).
 template <class Ring>
 struct GeneratingSeries {
   Exponents box{};
   std::vector<Ring> coefficients;
-  /// Constant terms: J(Q0) = K_d √a0 / (n1_0^{(d−1)/2} n2_0).
+  /// Constant terms: J_s(Q0) = K_d Γ(1 + s/2) a0^{(1+s)/2} n1_0^{−(d−1)/2} n2_0^{−1−s/2}.
   Rational a0, n1_0, n2_0;
 
   [[nodiscard]] std::size_t index(int k0, int k1, int k2, int k3 = 0) const {
@@ -107,7 +108,7 @@ template <class Ring>
 GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& pair, const Ring& alpha,
                                                           const ExactForm& q0,
                                                           const std::array<ExactForm, kVariables>& dq,
-                                                          const Exponents& box) {
+                                                          const Exponents& box, const Rational& power = Rational(0)) {
   const auto t = pair.velocity_map();
   // M = Tᵀ Q T for Q0 and each direction; entries become polynomials in x of degree ≤ 1.
   auto congruence = [&](const ExactForm& q) {
@@ -155,10 +156,12 @@ GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& p
   n1.divide_by(out.n1_0);
   n2.divide_by(out.n2_0);
 
-  const Ring half(Rational(1, 2));
+  // f = a^{(1+s)/2} n1^{−(d−1)/2} n2^{−1−s/2}  (theory.md (2.9); s = 0 gives (3.1)).
+  const Ring ra((Rational(1) + power) / Rational(2));
   const Ring r1(Rational(pair.dimension - 1, 2));
+  const Ring r2(Rational(1) + power / Rational(2));
   const auto pi = a * n1 * n2;
-  const auto qc = half * (a.euler() * n1 * n2) - r1 * (a * n1.euler() * n2) - a * n1 * n2.euler();
+  const auto qc = ra * (a.euler() * n1 * n2) - r1 * (a * n1.euler() * n2) - r2 * (a * n1 * n2.euler());
 
   struct RecurrenceTerm {
     Exponents e;
