@@ -220,6 +220,28 @@ TEST(CliEvolve, GoldenAndBadInput) {
   fs::remove_all(dir);
 }
 
+TEST(CliViscoelastic, ConstantsAndBadInput) {
+  const CliRun r = run_gkt("table " + scene_path("viscoelastic_constants.toml"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("viscoelastic_constants.csv")));
+  for (const auto& [command, message] : std::vector<std::pair<std::string, std::string>>{
+           {"table " + scene_path("viscoelastic_constants.toml") + " --set c1=-1", "c1: must be a number in (0, 10]"},
+           {"table " + scene_path("viscoelastic_constants.toml") + " --set order=2", "order: must be exactly 1, got 2"},
+           {"table " + scene_path("viscoelastic_constants.toml") + " --exact",
+            "--exact: a requested coefficient is not"},
+           {"evolve " + scene_path("cooling_viscoelastic.toml") + " --set delta=0.5",
+            "delta: must be a number in [0, 0.3]"},
+           {"evolve " + scene_path("cooling_viscoelastic.toml") + " --set alpha=0.9",
+            "alpha: unknown key for gkt evolve"},
+           {"evolve " + scene_path("cooling_viscoelastic.toml") + " --set dimension=2",
+            "dimension: \"viscoelastic\" is three-dimensional"}}) {
+    const CliRun bad = run_gkt(command);
+    EXPECT_EQ(bad.status, 2) << command << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+  }
+}
+
 TEST(Cli, SetOverridesSceneKeys) {
   const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") +
                            " --exact --set order=2 --set 'coefficients=[\"self_diffusion\"]'");

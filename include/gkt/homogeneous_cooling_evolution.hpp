@@ -32,6 +32,13 @@ struct EvolutionResult {
   EvolutionCounters counters;
 };
 
+/// Returns the trajectory for viscoelastic spheres (d = 3): the hierarchy is evaluated at
+/// δ'(θ) = δ 2^{1/10} θ^{1/10} (BP's δ' = δ[2T/T0]^{1/10}, δ at the initial temperature T0 = 1);
+/// CVODE uses its difference-quotient Jacobian here.
+EvolutionResult evolve_viscoelastic_cooling(const class ViscoelasticHierarchy& hierarchy, double delta,
+                                            const std::vector<double>& initial_a, const std::vector<double>& times,
+                                            double rtol, double atol);
+
 /// Returns the trajectory from T/T0 = temperature0 and cumulants initial_a (a_2 … a_K; missing
 /// ones 0) at the increasing positive `times`, with CVODE tolerances rtol (relative) and atol
 /// (absolute). Throws std::invalid_argument on bad input, std::runtime_error if CVODE fails.

@@ -1,7 +1,9 @@
 #include "gkt/homogeneous_cooling_evolution.hpp"
+#include "gkt/viscoelastic.hpp"
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -32,13 +34,23 @@ struct CvodeDeleter {
   void operator()(void* mem) const { CVodeFree(&mem); }
 };
 
-/// State y = (θ = T/T0, C, a_2 … a_K); rates (theory.md (12.2)).
+/// State y = (θ = T/T0, C, a_2 … a_K); rates (theory.md (12.1)). The hierarchy is fixed (constant
+/// α) or re-evaluated at δ'(θ) (viscoelastic).
 struct Problem {
   const CumulantHierarchy* h;
+  const ViscoelasticHierarchy* viscoelastic = nullptr;
+  double delta = 0;
+  mutable std::optional<CumulantHierarchy> current;
   int k_max;
   double zeta_factor;  // 4/(d+2) · (d+2)/(2d) = 2/d: dθ/dτ = (2/d) R_1 θ^{3/2}
   mutable std::vector<double> a, f, jac, grad_e, grad_c;
 
+  /// The hierarchy at the state's temperature.
+  const CumulantHierarchy& at(double theta) const {
+    if (viscoelastic == nullptr) return *h;
+    current.emplace(viscoelastic->at(delta * std::pow(2.0 * theta, 0.1)));
+    return *current;
+  }
   void unpack(const double* y) const {
     a.assign(static_cast<std::size_t>(k_max) + 1, 0.0);
     a[0] = 1.0;
@@ -54,10 +66,11 @@ int rates(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   if (!(theta > 0)) return 1;  // recoverable: CVODE retries with a smaller step
   p.unpack(yv);
   const double sq = std::sqrt(theta);
-  dv[0] = p.zeta_factor * p.h->energy_moment(p.a) * theta * sq;
-  dv[1] = sq * p.h->collision_rate(p.a);
-  p.h->residual(p.a, p.f, nullptr);
-  for (int k = 2; k <= p.k_max; ++k) dv[k] = sq * p.f[static_cast<std::size_t>(k - 2)] / p.h->norm(k);
+  const CumulantHierarchy& h = p.at(theta);
+  dv[0] = p.zeta_factor * h.energy_moment(p.a) * theta * sq;
+  dv[1] = sq * h.collision_rate(p.a);
+  h.residual(p.a, p.f, nullptr);
+  for (int k = 2; k <= p.k_max; ++k) dv[k] = sq * p.f[static_cast<std::size_t>(k - 2)] / h.norm(k);
   return 0;
 }
 
@@ -92,16 +105,16 @@ void check(int flag, const char* what) {
 
 }  // namespace
 
-EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
-                                           const std::vector<double>& initial_a, const std::vector<double>& times,
-                                           double rtol, double atol) {
+namespace {
+
+EvolutionResult integrate(Problem& problem, int dimension, double temperature0, const std::vector<double>& initial_a,
+                          const std::vector<double>& times, double rtol, double atol, bool analytic_jacobian) {
   if (!(temperature0 > 0)) throw std::invalid_argument("temperature: must be > 0");
   if (!(rtol > 0) || !(atol > 0)) throw std::invalid_argument("rtol, atol: must be > 0");
   for (std::size_t i = 0; i < times.size(); ++i)
     if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
       throw std::invalid_argument("times: must be positive and increasing");
-  const int k_max = hierarchy.k_max(), n = k_max + 1;
-  Problem problem{&hierarchy, k_max, 2.0 / hierarchy.dimension(), {}, {}, {}, {}, {}};
+  const int k_max = problem.k_max, n = k_max + 1;
 
   SUNContext raw_context = nullptr;
   check(SUNContext_Create(nullptr, &raw_context), "SUNContext_Create");
@@ -123,7 +136,7 @@ EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, d
   const std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter> solver(
       SUNLinSol_Dense(y.get(), matrix.get(), raw_context));
   check(CVodeSetLinearSolver(cvode.get(), solver.get(), matrix.get()), "CVodeSetLinearSolver");
-  check(CVodeSetJacFn(cvode.get(), jacobian), "CVodeSetJacFn");
+  if (analytic_jacobian) check(CVodeSetJacFn(cvode.get(), jacobian), "CVodeSetJacFn");
 
   EvolutionResult result;
   for (double target : times) {
@@ -135,7 +148,7 @@ EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, d
     s.collisions = yv[1];
     problem.unpack(yv);
     s.a = problem.a;
-    s.cooling_rate = -(hierarchy.dimension() + 2) * hierarchy.energy_moment(s.a) / (2.0 * hierarchy.dimension());
+    s.cooling_rate = -(dimension + 2) * problem.at(yv[0] / temperature0).energy_moment(s.a) / (2.0 * dimension);
     result.samples.push_back(std::move(s));
   }
   long v = 0;
@@ -150,6 +163,27 @@ EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, d
   CVodeGetNumNonlinSolvIters(cvode.get(), &v);
   result.counters.nonlinear_iterations = v;
   return result;
+}
+
+}  // namespace
+
+EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
+                                           const std::vector<double>& initial_a, const std::vector<double>& times,
+                                           double rtol, double atol) {
+  Problem problem{&hierarchy};
+  problem.k_max = hierarchy.k_max();
+  problem.zeta_factor = 2.0 / hierarchy.dimension();
+  return integrate(problem, hierarchy.dimension(), temperature0, initial_a, times, rtol, atol, true);
+}
+
+EvolutionResult evolve_viscoelastic_cooling(const ViscoelasticHierarchy& hierarchy, double delta,
+                                            const std::vector<double>& initial_a, const std::vector<double>& times,
+                                            double rtol, double atol) {
+  if (!(delta >= 0)) throw std::invalid_argument("delta: must be >= 0");
+  Problem problem{nullptr, &hierarchy, delta};
+  problem.k_max = hierarchy.k_max();
+  problem.zeta_factor = 2.0 / 3;
+  return integrate(problem, 3, 1.0, initial_a, times, rtol, atol, false);
 }
 
 }  // namespace gkt

@@ -16,7 +16,8 @@ std::string ParameterSpec::allowed() const {
     return "one of " + list;
   }
   const std::string kind_name = kind == Kind::integer ? "an integer" : "a number";
-  if (kind == Kind::integer && min_inclusive && max_inclusive && max - min <= Rational(1))
+  if (kind == Kind::integer && min_inclusive && max_inclusive && min == max) return "exactly " + min.to_string();
+  if (kind == Kind::integer && min_inclusive && max_inclusive && max - min == Rational(1))
     return min.to_string() + " or " + max.to_string();
   std::string out = kind_name;
   out += min_inclusive ? " in [" : " in (";

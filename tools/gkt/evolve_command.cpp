@@ -7,6 +7,7 @@
 
 #include "gkt/homogeneous_cooling_evolution.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/viscoelastic.hpp"
 #include "scene.hpp"
 
 namespace gkt::cli {
@@ -39,8 +40,16 @@ double number(const toml::table& t, const std::string& key, double fallback, dou
 
 Table evolve(const std::string& scene_path, const std::vector<std::string>& overrides, std::string& counters) {
   const toml::table t = read_scene_table(scene_path, overrides);
-  const std::set<std::string> valid{"model", "dimension", "alpha", "order", "t_end",      "points",
-                                    "times", "rtol",      "atol",  "a2",    "temperature"};
+  const auto* model_node = t.get("model");
+  const bool viscoelastic =
+      model_node != nullptr && model_node->is_string() && model_node->as_string()->get() == "viscoelastic";
+  std::set<std::string> valid{"model", "dimension", "order", "t_end", "points", "times", "rtol", "atol", "a2"};
+  if (viscoelastic) {
+    valid.insert("delta");
+  } else {
+    valid.insert("alpha");
+    valid.insert("temperature");
+  }
   for (const auto& [key, value] : t) {
     const std::string k(key.str());
     if (!valid.contains(k)) {
@@ -52,18 +61,26 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
       throw error(k + ": unknown key for gkt evolve; valid keys: " + list);
     }
   }
-  const auto* model = t.get("model");
-  if (model == nullptr || !model->is_string() || model->as_string()->get() != "smooth-inelastic")
-    throw error("model: gkt evolve supports \"smooth-inelastic\" (constant restitution)");
+  if (model_node == nullptr || !model_node->is_string() ||
+      (!viscoelastic && model_node->as_string()->get() != "smooth-inelastic"))
+    throw error("model: gkt evolve supports \"smooth-inelastic\" (constant restitution) and \"viscoelastic\"");
   const double dim = number(t, "dimension", 3, 2, false, 3, "2 or 3");
   if (dim != 2 && dim != 3) throw error("dimension: must be 2 or 3, got " + format_value(dim));
   const int d = static_cast<int>(dim);
-  const auto* alpha_node = t.get("alpha");
-  if (alpha_node == nullptr) throw error("alpha: required, a number in (0, 1]");
-  if (alpha_node->is_array() || alpha_node->is_table()) throw error("alpha: must be a single number in (0, 1]");
-  const Rational alpha = scene_number(*alpha_node, "alpha");
-  if (alpha.sign() <= 0 || alpha > Rational(1))
-    throw error("alpha: must be a number in (0, 1], got " + alpha.to_string());
+  if (viscoelastic && d != 3) throw error("dimension: \"viscoelastic\" is three-dimensional (3)");
+  Rational alpha(1);
+  double delta = 0;
+  if (viscoelastic) {
+    if (!t.contains("delta")) throw error("delta: required for \"viscoelastic\", a number in [0, 0.3]");
+    delta = number(t, "delta", 0, 0, false, 0.3, "a number in [0, 0.3] (the delta expansion is for small delta)");
+  } else {
+    const auto* alpha_node = t.get("alpha");
+    if (alpha_node == nullptr) throw error("alpha: required, a number in (0, 1]");
+    if (alpha_node->is_array() || alpha_node->is_table()) throw error("alpha: must be a single number in (0, 1]");
+    alpha = scene_number(*alpha_node, "alpha");
+    if (alpha.sign() <= 0 || alpha > Rational(1))
+      throw error("alpha: must be a number in (0, 1], got " + alpha.to_string());
+  }
   const double order = number(t, "order", 3, 1, false, kMaxOrder, "an integer in [1, 12]");
   if (order != std::floor(order)) throw error("order: must be an integer in [1, 12], got " + format_value(order));
   const int k_max = static_cast<int>(order) + 1;  // cumulants a_2 … a_{order+1}
@@ -97,10 +114,15 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     for (int i = 0; i < n; ++i) times.push_back(n == 1 ? t_end : t_end * std::pow(10.0, -4.0 + 4.0 * i / (n - 1)));
   }
 
-  HomogeneousCoolingState hcs(d);
-  const auto result = evolve_homogeneous_cooling(hcs.hierarchy(alpha, k_max), temperature, {a2}, times, rtol, atol);
+  EvolutionResult result;
+  if (viscoelastic) {
+    result = evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {a2}, times, rtol, atol);
+  } else {
+    HomogeneousCoolingState hcs(d);
+    result = evolve_homogeneous_cooling(hcs.hierarchy(alpha, k_max), temperature, {a2}, times, rtol, atol);
+  }
   Table table;
-  table.model = "smooth-inelastic";
+  table.model = viscoelastic ? "viscoelastic" : "smooth-inelastic";
   table.columns = {"time", "collisions", "temperature"};
   for (int k = 2; k <= k_max; ++k) {
     std::string name(1, 'a');

@@ -1,0 +1,85 @@
+// Viscoelastic spheres (Brilliantov & Pöschel, Phil. Trans. R. Soc. A 360, 415 (2002), seed 004):
+// constants derived by the engine against the closed forms of PHYSICS.md (verified there), the
+// adiabatic a2 against the full dynamics, and the late-time cooling law T ∝ t^{−5/3}.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "gkt/homogeneous_cooling_evolution.hpp"
+#include "gkt/viscoelastic.hpp"
+
+namespace {
+const double kC1 = 1.15344;
+const double kSqrt2Pi = std::sqrt(2 * std::numbers::pi);
+}  // namespace
+
+// ω0 = 2√(2π) 2^{1/10} Γ(21/10) C1 ≈ 6.48562, ω1 = √(2π) 2^{1/5} Γ(16/5) C1², q0 = 2^{1/5} Γ(21/10) C1/8
+// ≈ 0.173318, a21 = −3ω0/(20√(2π)) ≈ −0.38811 (PHYSICS.md, verified closed forms; the OCR of seed 004
+// drops C1 from ω0). The engine derives them from the δ'-expansion of the collision moments.
+TEST(Viscoelastic, ConstantsEqualClosedForms) {
+  const auto c = gkt::viscoelastic_constants();
+  const double omega0 = 2 * kSqrt2Pi * std::pow(2.0, 0.1) * std::tgamma(2.1) * kC1;
+  const double omega1 = kSqrt2Pi * std::pow(2.0, 0.2) * std::tgamma(3.2) * kC1 * kC1;
+  EXPECT_NEAR(c.omega0 / omega0, 1.0, 1e-12);
+  EXPECT_NEAR(c.omega1 / omega1, 1.0, 1e-12);
+  EXPECT_NEAR(c.q0 / (std::pow(2.0, 0.2) * std::tgamma(2.1) * kC1 / 8), 1.0, 1e-12);
+  EXPECT_NEAR(c.a2_1 / (-3 * omega0 / (20 * kSqrt2Pi)), 1.0, 1e-9);
+  // Printed digits: ω0 ≈ 6.48562, q0 ≈ 0.173318, a21 ≈ −0.38811.
+  EXPECT_EQ(std::round(c.omega0 * 1e5) / 1e5, 6.48562);
+  EXPECT_EQ(std::round(c.q0 * 1e6) / 1e6, 0.173318);
+  EXPECT_EQ(std::round(c.a2_1 * 1e5) / 1e5, -0.38811);
+}
+
+// The adiabatic a2 = a21 δ' + a22 δ'² against the full (T, a2) dynamics of CVODE: once the initial
+// transient has decayed, (a2(τ) − a21 δ'(τ))/δ'(τ)² tends to a22 as δ' → 0. The engine's a22 =
+// +2.690 (it includes the drift da2/dτ = a21 dδ'/dτ); BP's printed −11.509 is not reproduced
+// (docs/theory.md §13).
+TEST(Viscoelastic, AdiabaticA2FollowsTheDynamics) {
+  const gkt::ViscoelasticHierarchy h(2);
+  const auto c = gkt::viscoelastic_constants();
+  const double delta = 0.05;
+  const auto r = gkt::evolve_viscoelastic_cooling(h, delta, {0.0}, {1e5, 1e6, 1e7}, 1e-10, 1e-16);
+  double previous = 0;
+  for (const auto& s : r.samples) {
+    const double dp = delta * std::pow(2 * s.temperature, 0.1);
+    const double second = (s.a[2] - c.a2_1 * dp) / (dp * dp);
+    EXPECT_NEAR(second, c.a2_2, 0.05) << "tau=" << s.time;
+    EXPECT_GT(second, previous);  // approaches a22 from below as δ' decreases
+    previous = second;
+  }
+  EXPECT_GT(c.a2_2, 2.6);
+  EXPECT_LT(c.a2_2, 2.8);
+}
+
+// Late-time cooling T ∝ τ^{−5/3} (seed 004 eq. 3.19): the local exponent d ln T/d ln τ between
+// τ = 10⁶ and 10⁷ is −5/3 within 0.5 % (the correction is O(δ'), δ' ≈ 0.01 there); a2(τ) is
+// non-monotonic: |a2| rises from 0, peaks, and decays as the gas becomes more elastic.
+TEST(Viscoelastic, LateTimeCoolingAndNonMonotonicA2) {
+  const gkt::ViscoelasticHierarchy h(3);
+  std::vector<double> times;
+  for (int i = 0; i <= 16; ++i) times.push_back(std::pow(10.0, -1 + 0.5 * i));
+  const auto r = gkt::evolve_viscoelastic_cooling(h, 0.05, {0.0}, times, 1e-10, 1e-16);
+  const auto& a = r.samples[r.samples.size() - 3];  // τ = 10⁶
+  const auto& b = r.samples.back();                 // τ = 10⁷
+  const double exponent = std::log(b.temperature / a.temperature) / std::log(b.time / a.time);
+  EXPECT_NEAR(exponent, -5.0 / 3.0, 0.005 * 5.0 / 3.0);
+  double peak = 0;
+  std::size_t where = 0;
+  for (std::size_t i = 0; i < r.samples.size(); ++i)
+    if (std::abs(r.samples[i].a[2]) > peak) {
+      peak = std::abs(r.samples[i].a[2]);
+      where = i;
+    }
+  EXPECT_GT(where, 0U);
+  EXPECT_LT(where, r.samples.size() - 1);
+  EXPECT_LT(std::abs(r.samples.back().a[2]), 0.5 * peak);
+}
+
+// δ = 0 is the elastic gas: T constant, a Maxwellian stays Maxwellian.
+TEST(Viscoelastic, ElasticLimit) {
+  const gkt::ViscoelasticHierarchy h(2);
+  const auto r = gkt::evolve_viscoelastic_cooling(h, 0.0, {0.0}, {10.0, 1000.0}, 1e-10, 1e-14);
+  EXPECT_NEAR(r.samples.back().temperature, 1.0, 1e-12);
+  EXPECT_NEAR(r.samples.back().a[2], 0.0, 1e-12);
+}
