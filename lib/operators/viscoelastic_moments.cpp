@@ -61,7 +61,8 @@ ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestit
           const auto mu = shifted(gain.moment({a, b, c}));
           double v = 0;
           for (int m = (order == 0 ? 0 : 1); m <= order && m < static_cast<int>(mu.size()); ++m)
-            v += coef[static_cast<std::size_t>(m)][static_cast<std::size_t>(order)] * mu[static_cast<std::size_t>(m)].to_double();
+            v += coef[static_cast<std::size_t>(m)][static_cast<std::size_t>(order)] *
+                 mu[static_cast<std::size_t>(m)].to_double();
           g[idx3(a, b, c)] = factor * v;
         }
     // The loss term ⟨S_k S_l ψ(X1)⟩ does not depend on ε: order 0 only.
@@ -112,7 +113,8 @@ ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestit
       Rational sum;  // ⟨x S_p' S_k⟩
       for (int j = 1; j <= p; ++j)
         for (int i = 0; i <= k; ++i)
-          sum += Rational(j) * s[p][j] * s[k][i] * Rational::rising_half(twice_m + 2, static_cast<unsigned long>(i + j));
+          sum +=
+              Rational(j) * s[p][j] * s[k][i] * Rational::rising_half(twice_m + 2, static_cast<unsigned long>(i + j));
       w_[p][k] = sum.to_double();
     }
   }

@@ -20,8 +20,15 @@ class ViscoelasticModel final : public TransportModel {
     return {"omega0", "omega1", "q0", "a2_1", "a2_2"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    return {{"c1", ParameterSpec::Kind::real, Rational(0), Rational(10), false, true, Rational::parse("1.15344"),
-             "first coefficient C1 of the viscoelastic restitution series", {}}};
+    return {{"c1",
+             ParameterSpec::Kind::real,
+             Rational(0),
+             Rational(10),
+             false,
+             true,
+             Rational::parse("1.15344"),
+             "first coefficient C1 of the viscoelastic restitution series",
+             {}}};
   }
   [[nodiscard]] int max_order() const override { return 1; }
 
