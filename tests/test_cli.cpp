@@ -208,7 +208,7 @@ TEST(CliEvolve, GoldenAndBadInput) {
            {" --set alpha=1.2", "alpha: must be a number in (0, 1]"},
            {" --set points=0", "points: must be an integer in [1, 1000000]"},
            {" --set order=13", "order: must be an integer in [1, 12]"},
-           {" --set 'times=[2, 1]'", "times: give either times or t_end/points"},
+           {" --set 'times=[2, 1]'", "times: must be a non-empty list of increasing times > 0"},
            {" --set delta=0.1", "delta: unknown key for gkt evolve"},
            {" --set 'model=\"hard-spheres\"'", "model: gkt evolve supports \"smooth-inelastic\""}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --output " + out + args);

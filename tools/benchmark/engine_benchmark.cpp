@@ -10,8 +10,10 @@
 
 #include "gkt/first_sonine_formulas.hpp"
 #include "gkt/hard_spheres.hpp"
+#include "gkt/homogeneous_cooling_evolution.hpp"
 #include "gkt/linearized_operator.hpp"
 #include "gkt/transport_model.hpp"
+#include "gkt/viscoelastic.hpp"
 
 namespace {
 
@@ -156,6 +158,34 @@ void SmoothInelasticOrderCold(benchmark::State& state) {
   }
 }
 BENCHMARK(SmoothInelasticOrderCold)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
+
+/// Free cooling to τ = 10⁶ initial mean free times at rtol = 1e-8 from a Maxwellian, cumulants
+/// a2…a4: viscoelastic (δ = 0.1, state-dependent hierarchy) and constant α = 0.8; the hierarchy
+/// is built once outside the loop. Counters: CVODE steps.
+void CoolingViscoelastic(benchmark::State& state) {
+  const gkt::ViscoelasticHierarchy h(4);
+  long steps = 0;
+  for (auto _ : state) {
+    const auto r = gkt::evolve_viscoelastic_cooling(h, 0.1, {0.0}, {1e6}, 1e-8, 1e-14);
+    steps = r.counters.steps;
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["steps"] = static_cast<double>(steps);
+}
+BENCHMARK(CoolingViscoelastic)->Unit(benchmark::kMillisecond);
+
+void CoolingConstantAlpha(benchmark::State& state) {
+  gkt::HomogeneousCoolingState hcs(3);
+  const auto h = hcs.hierarchy(Rational(4, 5), 4);
+  long steps = 0;
+  for (auto _ : state) {
+    const auto r = gkt::evolve_homogeneous_cooling(h, 1.0, {0.0}, {1e6}, 1e-8, 1e-14);
+    steps = r.counters.steps;
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["steps"] = static_cast<double>(steps);
+}
+BENCHMARK(CoolingConstantAlpha)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -1,5 +1,6 @@
 #include "evolve_command.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <set>
@@ -109,9 +110,11 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     const double t_end = number(t, "t_end", 1, 0, true, 1e300, "a number > 0");
     const double points = number(t, "points", 50, 1, false, kMaxPoints, "an integer in [1, 1000000]");
     if (points != std::floor(points)) throw error("points: must be an integer in [1, 1000000]");
-    // Log-spaced over four decades up to t_end.
+    // Log-spaced from the first collisions (τ = 0.01, or t_end/100 if earlier) to t_end.
     const int n = static_cast<int>(points);
-    for (int i = 0; i < n; ++i) times.push_back(n == 1 ? t_end : t_end * std::pow(10.0, -4.0 + 4.0 * i / (n - 1)));
+    const double start = std::min(0.01, t_end / 100);
+    for (int i = 0; i < n; ++i)
+      times.push_back(n == 1 ? t_end : start * std::pow(t_end / start, static_cast<double>(i) / (n - 1)));
   }
 
   EvolutionResult result;

@@ -85,6 +85,12 @@ void apply_override(toml::table& scene, const std::string& assignment) {
   // `order` and `tolerance` are alternatives: setting one replaces the other.
   if (key == "order") scene.erase("tolerance");
   if (key == "tolerance") scene.erase("order");
+  // `times` and `t_end`/`points` (gkt evolve) are alternatives too.
+  if (key == "times") {
+    scene.erase("t_end");
+    scene.erase("points");
+  }
+  if (key == "t_end" || key == "points") scene.erase("times");
 }
 
 }  // namespace
