@@ -37,12 +37,12 @@ struct CvodeDeleter {
 /// State y = (θ = T/T0, C, a_2 … a_K); rates (theory.md (12.1)). The hierarchy is fixed (constant
 /// α) or re-evaluated at δ'(θ) (viscoelastic).
 struct Problem {
-  const CumulantHierarchy* h;
+  const CumulantHierarchy* h = nullptr;
   const ViscoelasticHierarchy* viscoelastic = nullptr;
   double delta = 0;
   mutable std::optional<CumulantHierarchy> current;
-  int k_max;
-  double zeta_factor;  // 4/(d+2) · (d+2)/(2d) = 2/d: dθ/dτ = (2/d) R_1 θ^{3/2}
+  int k_max = 0;
+  double zeta_factor = 0;  // 4/(d+2) · (d+2)/(2d) = 2/d: dθ/dτ = (2/d) R_1 θ^{3/2}
   mutable std::vector<double> a, f, jac, grad_e, grad_c;
 
   /// The hierarchy at the state's temperature.
@@ -170,7 +170,8 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
 EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
                                            const std::vector<double>& initial_a, const std::vector<double>& times,
                                            double rtol, double atol) {
-  Problem problem{&hierarchy};
+  Problem problem;
+  problem.h = &hierarchy;
   problem.k_max = hierarchy.k_max();
   problem.zeta_factor = 2.0 / hierarchy.dimension();
   return integrate(problem, hierarchy.dimension(), temperature0, initial_a, times, rtol, atol, true);
@@ -180,7 +181,9 @@ EvolutionResult evolve_viscoelastic_cooling(const ViscoelasticHierarchy& hierarc
                                             const std::vector<double>& initial_a, const std::vector<double>& times,
                                             double rtol, double atol) {
   if (!(delta >= 0)) throw std::invalid_argument("delta: must be >= 0");
-  Problem problem{nullptr, &hierarchy, delta};
+  Problem problem;
+  problem.viscoelastic = &hierarchy;
+  problem.delta = delta;
   problem.k_max = hierarchy.k_max();
   problem.zeta_factor = 2.0 / 3;
   return integrate(problem, 3, 1.0, initial_a, times, rtol, atol, false);
