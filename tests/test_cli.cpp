@@ -242,6 +242,18 @@ TEST(CliViscoelastic, ConstantsAndBadInput) {
   }
 }
 
+TEST(CliStability, GoldenAndErrors) {
+  const CliRun r = run_gkt("stability " + scene_path("hcs_stability.toml"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("hcs_stability.csv")));
+  const fs::path scene = fs::temp_directory_path() / ("gkt_stability_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(scene) << "model = \"hard-spheres\"\norder = 2\n";
+  const CliRun bad = run_gkt("stability " + scene.string());
+  fs::remove(scene);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("model: \"hard-spheres\" has no stability analysis"), std::string::npos) << bad.err;
+}
+
 TEST(Cli, SetOverridesSceneKeys) {
   const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") +
                            " --exact --set order=2 --set 'coefficients=[\"self_diffusion\"]'");

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "gkt/dilute_navier_stokes.hpp"
+#include "gkt/hcs_stability.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "transport/models.hpp"
 
@@ -41,6 +42,9 @@ class SmoothInelasticModel final : public TransportModel {
     names.emplace_back("shear_viscosity");
     names.emplace_back("thermal_conductivity");
     names.emplace_back("density_heat_coefficient");
+    names.emplace_back("critical_wavenumber_shear");
+    names.emplace_back("critical_wavenumber_heat");
+    names.emplace_back("critical_length");
     return names;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -131,30 +135,46 @@ class SmoothInelasticModel final : public TransportModel {
   }
 
  private:
-  /// 0 shear viscosity, 1 thermal conductivity, 2 density heat coefficient; −1 otherwise.
+  /// 0 shear viscosity, 1 thermal conductivity, 2 density heat coefficient, 3–5 the HCS stability
+  /// values of theory.md §14 (from ζ*, η*, κ*, μ* at the same order); −1 otherwise.
   static int transport_index(const std::string& c) {
     if (c == "shear_viscosity") return 0;
     if (c == "thermal_conductivity") return 1;
     if (c == "density_heat_coefficient") return 2;
+    if (c == "critical_wavenumber_shear") return 3;
+    if (c == "critical_wavenumber_heat") return 4;
+    if (c == "critical_length") return 5;
     return -1;
   }
-  static double pick_transport(const NavierStokesValues& v, int which) {
-    return which == 0 ? v.shear_viscosity : which == 1 ? v.thermal_conductivity : v.density_heat_coefficient;
+  static double pick_transport(const NavierStokesValues& v, int which, int d, double zeta) {
+    if (which < 3)
+      return which == 0 ? v.shear_viscosity : which == 1 ? v.thermal_conductivity : v.density_heat_coefficient;
+    const HcsStability s =
+        hcs_stability(d, zeta, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient);
+    return which == 3 ? s.shear_wavenumber : which == 4 ? s.heat_wavenumber : s.critical_length;
   }
   CoefficientValue transport_value(HomogeneousCoolingState& hcs, int d, const Rational& alpha,
                                    const std::string& scheme, int which, const OrderRequest& order) {
     if (scheme == "linear") {
-      // Standard first Sonine, linear in a2 (theory.md (10.8)): exact; error against orders 2, 3.
+      // Standard first Sonine, linear in a2 (theory.md (10.8)): exact for η*, κ*, μ* (the stability
+      // values take square roots); error against orders 2, 3.
       auto& fs = first_sonine_[static_cast<std::size_t>(d - 2)];
       if (!fs) fs = first_sonine_navier_stokes(d);
       const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
-      const Rational exact = fs->evaluate(alpha, a2)[static_cast<std::size_t>(which)];
+      const auto v = fs->evaluate(alpha, a2);
+      const Rational zeta = fs->zeta_0.evaluate(alpha) + a2 * fs->zeta_a2.evaluate(alpha);
+      const bool exact = which < 3;
+      const Rational value =
+          exact ? v[static_cast<std::size_t>(which)]
+                : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()}, which, d,
+                                                       zeta.to_double()));
       const auto* n2 = navier_stokes(hcs, d, alpha, 2);
       const auto* n3 = navier_stokes(hcs, d, alpha, 3);
-      if (n2 == nullptr || n3 == nullptr) return {exact, Rational(0), 1, false, true, true};
-      const TruncationEstimate e = estimate_truncation(exact, Rational::from_double(pick_transport(*n2, which)),
-                                                       Rational::from_double(pick_transport(*n3, which)));
-      return {exact, e.error, 1, e.converging, true, true};
+      if (n2 == nullptr || n3 == nullptr) return {value, Rational(0), 1, false, exact, true};
+      const TruncationEstimate e = estimate_truncation(
+          value, Rational::from_double(pick_transport(*n2, which, d, nonlinear(hcs, d, alpha, 3).cooling_rate)),
+          Rational::from_double(pick_transport(*n3, which, d, nonlinear(hcs, d, alpha, 4).cooling_rate)));
+      return {value, e.error, 1, e.converging, exact, true};
     }
     return choose_order(order, max_order(), [&](int n) {
       OrderValue v;
@@ -164,9 +184,10 @@ class SmoothInelasticModel final : public TransportModel {
       const auto* s2 = navier_stokes(hcs, d, alpha, n + 2);
       v.defined = s0 != nullptr && s1 != nullptr && s2 != nullptr;
       if (!v.defined) return v;
-      v.estimate = estimate_truncation(Rational::from_double(pick_transport(*s0, which)),
-                                       Rational::from_double(pick_transport(*s1, which)),
-                                       Rational::from_double(pick_transport(*s2, which)));
+      v.estimate = estimate_truncation(
+          Rational::from_double(pick_transport(*s0, which, d, nonlinear(hcs, d, alpha, n + 1).cooling_rate)),
+          Rational::from_double(pick_transport(*s1, which, d, nonlinear(hcs, d, alpha, n + 2).cooling_rate)),
+          Rational::from_double(pick_transport(*s2, which, d, nonlinear(hcs, d, alpha, n + 3).cooling_rate)));
       return v;
     });
   }

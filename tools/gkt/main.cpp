@@ -1,4 +1,5 @@
 // gkt: command-line front end. Exit codes: 0 success, 2 bad input or usage, 1 internal error.
+#include <algorithm>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
@@ -18,9 +19,19 @@ namespace {
 
 constexpr int kBadInput = 2;
 
+/// `gkt stability` is `gkt table` whose default coefficients are the HCS stability values.
+const std::vector<std::string> kStabilityCoefficients{"critical_wavenumber_shear", "critical_wavenumber_heat",
+                                                      "critical_length"};
+
 int run_table(const std::string& scene_path, const std::vector<std::string>& overrides, const std::string& format,
-              const std::string& output, bool exact) {
-  const auto scene = gkt::cli::load_scene(scene_path, overrides);
+              const std::string& output, bool exact, bool stability = false) {
+  auto scene = gkt::cli::load_scene(scene_path, overrides);
+  if (stability && !scene.coefficients_given) {
+    const auto names = gkt::make_transport_model(scene.model)->coefficient_names();
+    if (std::find(names.begin(), names.end(), kStabilityCoefficients.front()) == names.end())
+      throw std::invalid_argument("model: \"" + scene.model + "\" has no stability analysis; use \"smooth-inelastic\"");
+    scene.coefficients = kStabilityCoefficients;
+  }
   std::vector<std::string> warnings;
   const auto table = gkt::cli::compute_table(scene, {exact}, warnings);
   const std::string content = format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table);
@@ -72,6 +83,15 @@ int main(int argc, char** argv) {
   formula->add_option("--set", formula_overrides, "Override a scene key: KEY=VALUE; repeatable");
   formula->add_option("--output", formula_output, "Output file (written atomically); default: standard output");
 
+  auto* stability = app.add_subcommand(
+      "stability", "Critical wave numbers and system size of the homogeneous cooling state (like table)");
+  std::string stability_scene, stability_format = "csv", stability_output;
+  std::vector<std::string> stability_overrides;
+  stability->add_option("scene", stability_scene, "Scene file (TOML), model smooth-inelastic")->required();
+  stability->add_option("--set", stability_overrides, "Override a scene key: KEY=VALUE; repeatable");
+  stability->add_option("--format", stability_format, "Output format")->check(CLI::IsMember({"csv", "json"}));
+  stability->add_option("--output", stability_output, "Output file (written atomically); default: standard output");
+
   auto* evolve = app.add_subcommand("evolve", "Integrate the cooling of a homogeneous gas: T(t), a2(t), ... (CVODE)");
   std::string evolve_scene, evolve_format = "csv", evolve_output;
   std::vector<std::string> evolve_overrides;
@@ -97,6 +117,8 @@ int main(int argc, char** argv) {
 
   try {
     if (table->parsed()) return run_table(scene_path, overrides, format, output, exact);
+    if (stability->parsed())
+      return run_table(stability_scene, stability_overrides, stability_format, stability_output, false, true);
     if (evolve->parsed()) {
       std::string counters;
       const auto table = gkt::cli::evolve(evolve_scene, evolve_overrides, counters);

@@ -168,6 +168,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       }
       scene.coefficients.push_back(name);
     }
+    scene.coefficients_given = true;
   } else {
     scene.coefficients = names;
   }

@@ -24,6 +24,7 @@ struct Axis {
 struct Scene {
   std::string model;
   std::vector<std::string> coefficients;
+  bool coefficients_given = false;             ///< the scene (or --set) named them; else all of the model's
   std::vector<Axis> axes;                      ///< model parameters first, then order or tolerance
   std::map<std::string, std::string> choices;  ///< choice parameters (e.g. hcs = "linear")
 };

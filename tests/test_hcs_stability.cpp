@@ -1,0 +1,76 @@
+// Linear stability of the HCS (theory.md §14): the closed-form critical wave numbers against the
+// eigenvalues of the linearised hydrodynamic matrix computed numerically (Eigen).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+#include "gkt/dilute_navier_stokes.hpp"
+#include "gkt/hcs_stability.hpp"
+#include "gkt/homogeneous_cooling_state.hpp"
+
+namespace {
+
+Eigen::Vector3cd eigenvalues(int d, double zeta, double eta, double kappa, double mu, double k) {
+  const auto m = gkt::longitudinal_matrix(d, zeta, eta, kappa, mu, k);
+  Eigen::Matrix3cd e;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) e(r, c) = m[r][c];
+  return Eigen::ComplexEigenSolver<Eigen::Matrix3cd>(e).eigenvalues();
+}
+
+/// The heat mode: the eigenvalue with the smallest imaginary part.
+std::complex<double> heat_mode(const Eigen::Vector3cd& values) {
+  int best = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(values(i).imag()) < std::abs(values(best).imag())) best = i;
+  return values(best);
+}
+
+}  // namespace
+
+// With the solver's ζ*, η*, κ*, μ* (α = 0.8 and 0.6, order 4, d = 2, 3): the heat-mode eigenvalue
+// of the 3×3 longitudinal matrix is real and changes sign exactly at k∥c (closed form (14.3)), and
+// the numerical determinant equals (k²/2)(ζ/2 − ((d+2)/(2(d−1)))(κ − μ) k²).
+TEST(HcsStability, HeatModeCrossesZeroAtTheClosedFormWavenumber) {
+  for (int d : {2, 3}) {
+    gkt::DiluteNavierStokes ns(d);
+    gkt::HomogeneousCoolingState hcs(d);
+    for (const gkt::Rational& alpha : {gkt::Rational(4, 5), gkt::Rational(3, 5)}) {
+      const auto state = hcs.solve(alpha, 5, gkt::HcsScheme::nonlinear);
+      const auto v = ns.solve(alpha, 4, state.a);
+      const double zeta = state.cooling_rate;
+      const auto s = gkt::hcs_stability(d, zeta, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient);
+      ASSERT_GT(s.heat_wavenumber, 0);
+      const auto below = heat_mode(eigenvalues(d, zeta, v.shear_viscosity, v.thermal_conductivity,
+                                               v.density_heat_coefficient, 0.999 * s.heat_wavenumber));
+      const auto above = heat_mode(eigenvalues(d, zeta, v.shear_viscosity, v.thermal_conductivity,
+                                               v.density_heat_coefficient, 1.001 * s.heat_wavenumber));
+      EXPECT_GT(below.real(), 0) << d << " " << alpha;
+      EXPECT_LT(above.real(), 0) << d << " " << alpha;
+      EXPECT_LT(std::abs(below.imag()), 1e-12);
+      for (double k : {0.3, 0.7, 1.3}) {
+        const auto ev = eigenvalues(d, zeta, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient, k);
+        const std::complex<double> det = ev(0) * ev(1) * ev(2);
+        const double closed =
+            k * k / 2 *
+            (zeta / 2 - (d + 2.0) / (2 * (d - 1)) * (v.thermal_conductivity - v.density_heat_coefficient) * k * k);
+        EXPECT_NEAR(det.real(), closed, 1e-12 * (1 + std::abs(closed)));
+        EXPECT_NEAR(det.imag(), 0.0, 1e-12);
+      }
+      // Shear modes: growth rate (ζ* − η* k*²)/2 vanishes at k⊥c; vortices come first (seed 003).
+      EXPECT_NEAR(zeta - v.shear_viscosity * s.shear_wavenumber * s.shear_wavenumber, 0.0, 1e-14);
+      EXPECT_GT(s.shear_wavenumber, s.heat_wavenumber);
+      EXPECT_NEAR(s.critical_length, 2 * M_PI / s.shear_wavenumber, 1e-12);
+    }
+  }
+}
+
+// Elastic gas: no cooling, no instability (infinite critical size).
+TEST(HcsStability, ElasticGasIsStable) {
+  const auto s = gkt::hcs_stability(3, 0.0, 1.016, 1.025, 0.0);
+  EXPECT_EQ(s.shear_wavenumber, 0.0);
+  EXPECT_EQ(s.heat_wavenumber, 0.0);
+  EXPECT_TRUE(std::isinf(s.critical_length));
+}
