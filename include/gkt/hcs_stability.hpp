@@ -13,8 +13,8 @@ namespace gkt {
 /// Critical values of one state.
 struct HcsStability {
   double shear_wavenumber = 0;  ///< k⊥c* = √(ζ*/η*): shear modes grow for k* < k⊥c*
-  double heat_wavenumber = 0;   ///< k∥c* = √((d−1)ζ*/((d+2)(κ* − μ*))): the heat mode grows below it (0 if κ* ≤ μ*)
-  double critical_length = 0;   ///< L_c* = 2π/max(k⊥c*, k∥c*): boxes larger than this are unstable
+  double heat_wavenumber = 0;  ///< k∥c* = √((d−1)ζ*/((d+2)(κ* − μ*))): the heat mode grows below it (0 if κ* ≤ μ*)
+  double critical_length = 0;  ///< L_c* = 2π/max(k⊥c*, k∥c*): boxes larger than this are unstable
 };
 
 /// Returns the critical values for dimension d from the reduced ζ*, η*, κ*, μ* (theory.md (14.3)).
@@ -23,8 +23,8 @@ HcsStability hcs_stability(int dimension, double cooling_rate, double shear_visc
 
 /// Returns the 3×3 matrix M(k*) of the longitudinal modes (ρ, θ, w∥): ∂_τ X = M X (theory.md (14.2)).
 std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimension, double cooling_rate,
-                                                                        double shear_viscosity,
-                                                                        double thermal_conductivity,
-                                                                        double density_heat_coefficient, double k);
+                                                                       double shear_viscosity,
+                                                                       double thermal_conductivity,
+                                                                       double density_heat_coefficient, double k);
 
 }  // namespace gkt

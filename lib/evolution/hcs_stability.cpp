@@ -8,11 +8,11 @@
 namespace gkt {
 
 std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimension, double cooling_rate,
-                                                                        double shear_viscosity,
-                                                                        double thermal_conductivity,
-                                                                        double density_heat_coefficient, double k) {
+                                                                       double shear_viscosity,
+                                                                       double thermal_conductivity,
+                                                                       double density_heat_coefficient, double k) {
   const double d = dimension, a = cooling_rate;
-  const double kappa = (d + 2) / (2 * (d - 1)) * thermal_conductivity;   // theory.md (14.2)
+  const double kappa = (d + 2) / (2 * (d - 1)) * thermal_conductivity;  // theory.md (14.2)
   const double mu = (d + 2) / (2 * (d - 1)) * density_heat_coefficient;
   const double eta = (d - 1) / d * shear_viscosity;
   const std::complex<double> i(0, 1);
@@ -30,8 +30,7 @@ HcsStability hcs_stability(int dimension, double cooling_rate, double shear_visc
   HcsStability s;
   s.shear_wavenumber = std::sqrt(std::max(cooling_rate, 0.0) / shear_viscosity);
   const double difference = thermal_conductivity - density_heat_coefficient;
-  s.heat_wavenumber =
-      difference > 0 ? std::sqrt((d - 1) * std::max(cooling_rate, 0.0) / ((d + 2) * difference)) : 0.0;
+  s.heat_wavenumber = difference > 0 ? std::sqrt((d - 1) * std::max(cooling_rate, 0.0) / ((d + 2) * difference)) : 0.0;
   const double k = std::max(s.shear_wavenumber, s.heat_wavenumber);
   s.critical_length = k > 0 ? 2 * std::numbers::pi / k : INFINITY;
   return s;
