@@ -31,6 +31,18 @@ TEST(Viscoelastic, ConstantsEqualClosedForms) {
   EXPECT_EQ(std::round(c.a2_1 * 1e5) / 1e5, -0.38811);
 }
 
+// First-order transport (first Sonine): η̃1 = (359/3840)√(2/π) ω0 ≈ 0.48379 and
+// μ̃1 = (19/80)√(2/π) ω0 ≈ 1.22901 (BP 2002, printed rationals; PHYSICS.md) — derived here from the
+// δ'-expansion of the operator, the cooling rate, a21, and the 3/5 of ζ ∝ n T^{3/5} (theory.md §13.2).
+TEST(Viscoelastic, FirstOrderTransportCoefficients) {
+  const auto c = gkt::viscoelastic_constants();
+  const double w = std::sqrt(2 / std::numbers::pi) * c.omega0;
+  EXPECT_NEAR(c.shear_viscosity_1 / (359.0 / 3840 * w), 1.0, 1e-9);
+  EXPECT_NEAR(c.density_heat_coefficient_1 / (19.0 / 80 * w), 1.0, 1e-9);
+  EXPECT_EQ(std::round(c.shear_viscosity_1 * 1e5) / 1e5, 0.48379);
+  EXPECT_EQ(std::round(c.density_heat_coefficient_1 * 1e5) / 1e5, 1.22901);
+}
+
 // The adiabatic a2 = a21 δ' + a22 δ'² against the full (T, a2) dynamics of CVODE: once the initial
 // transient has decayed, (a2(τ) − a21 δ'(τ))/δ'(τ)² tends to a22 as δ' → 0. The engine's a22 =
 // +2.690 (it includes the drift da2/dτ = a21 dδ'/dτ); BP's printed −11.509 is not reproduced

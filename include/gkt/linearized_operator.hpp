@@ -32,17 +32,20 @@ DenseMatrix<Ring> linearized_operator_matrix(int dimension, const Ring& alpha, O
 /// reference φ_k = f_M S_{d/2−1}^(k)(c²) in place of f_M, in the basis S_m^(n)(c²) Y_rank(c). The
 /// operator about the homogeneous cooling state f0 = f_M Σ_k a_k S_k is Σ_k a_k L^(k) (theory.md
 /// §10); L^(0) is linearized_operator_matrix(…, OperatorPart::full, …). Same prefactor ν.
+/// With power = s the collision rate carries the extra factor (σ̂·g)^s (moments normalised by
+/// J_s0; theory.md (2.9)) — used for velocity-dependent restitution.
 template <class Ring>
 std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, const Ring& alpha, int rank, int n_max,
-                                                                int k_max);
+                                                                int k_max, const Rational& power = Rational(0));
 
 /// Returns ν = √(2π) π^{d/2−1}/Γ(d/2), the factor between L and ⟨ψ_p, 𝓛ψ_q⟩/(nσ^{d−1}v0).
 double linearized_operator_prefactor(int dimension);
 
 extern template std::vector<DenseMatrix<Rational>> hcs_linearized_operator_matrices<Rational>(int, const Rational&, int,
-                                                                                              int, int);
+                                                                                              int, int,
+                                                                                              const Rational&);
 extern template std::vector<DenseMatrix<RationalPolynomial>> hcs_linearized_operator_matrices<RationalPolynomial>(
-    int, const RationalPolynomial&, int, int, int);
+    int, const RationalPolynomial&, int, int, int, const Rational&);
 extern template DenseMatrix<Rational> linearized_operator_matrix<Rational>(int, const Rational&, OperatorPart, int,
                                                                            int);
 extern template DenseMatrix<RationalPolynomial> linearized_operator_matrix<RationalPolynomial>(

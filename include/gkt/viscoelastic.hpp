@@ -45,6 +45,12 @@ class ViscoelasticHierarchy {
 /// a2 = a21 δ' + a22 δ'² of the first Sonine approximation (K = 2, quadratic in a2).
 struct ViscoelasticConstants {
   double omega0, omega1, q0, a2_1, a2_2;
+  /// First-order coefficients of η* = 1 + η̃1 δ' + … and μ* = μ̃1 δ' + … (first Sonine,
+  /// theory.md (13.5), (13.7)); both equal BP's printed rationals.
+  double shear_viscosity_1, density_heat_coefficient_1;
+  /// κ* = 1 + κ̃1 δ' from theory.md (13.6). Does NOT reproduce BP's printed 1.98071 (ours 0.394);
+  /// unresolved, not exposed by the CLI (theory.md §13.2).
+  double thermal_conductivity_1_unverified;
 };
 
 /// Returns the constants for the given restitution series.

@@ -88,7 +88,7 @@ std::vector<DenseMatrix<Ring>> contract_weighted(const std::vector<std::vector<R
 
 template <class Ring>
 std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, const Ring& alpha, int rank, int n_max,
-                                                                int k_max) {
+                                                                int k_max, const Rational& power) {
   if (rank < 0 || rank > 2) throw std::invalid_argument("rank: must be 0, 1 or 2");
   const CollisionPair pair{dimension, Rational(1), Rational(1), Rational(1), Rational(1)};
   const auto w = sonine_rows(sonine_twice_m(dimension, 0), k_max);
@@ -102,12 +102,12 @@ std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, c
   // (a) weight at v2, unknown v1, test v1'      (b) weight v2, unknown v1, test v1
   // (c) weight at v1, unknown v2, test v1'      (d) weight v1, unknown v2, test v1 (shares the X1 slot)
   const CollisionMomentTable<Ring> ta(pair, alpha, {Slot::v2, Slot::v1, Slot::v1_post}, {k_max, n_max + e, n_max + e},
-                                      std::make_pair(Slot::v1, Slot::v1_post), rank);
-  const CollisionMomentTable<Ring> tb(pair, alpha, {Slot::v2, Slot::v1}, {k_max, 2 * n_max + rank}, none, 0);
+                                      std::make_pair(Slot::v1, Slot::v1_post), rank, power);
+  const CollisionMomentTable<Ring> tb(pair, alpha, {Slot::v2, Slot::v1}, {k_max, 2 * n_max + rank}, none, 0, power);
   const CollisionMomentTable<Ring> tc(pair, alpha, {Slot::v1, Slot::v2, Slot::v1_post}, {k_max, n_max + e, n_max + e},
-                                      std::make_pair(Slot::v2, Slot::v1_post), rank);
+                                      std::make_pair(Slot::v2, Slot::v1_post), rank, power);
   const CollisionMomentTable<Ring> td(pair, alpha, {Slot::v1, Slot::v2}, {k_max + n_max + e, n_max + e},
-                                      std::make_pair(Slot::v2, Slot::v1), rank);
+                                      std::make_pair(Slot::v2, Slot::v1), rank, power);
   auto contracted = [&](const CollisionMomentTable<Ring>& t, std::vector<int> k) {  // Y_r(c_a)·Y_r(c_b) terms
     if (rank < 2) return t.moment(k, rank);
     Ring v = t.moment(k, 2);
@@ -150,9 +150,9 @@ std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, c
 }
 
 template std::vector<DenseMatrix<Rational>> hcs_linearized_operator_matrices<Rational>(int, const Rational&, int, int,
-                                                                                       int);
+                                                                                       int, const Rational&);
 template std::vector<DenseMatrix<RationalPolynomial>> hcs_linearized_operator_matrices<RationalPolynomial>(
-    int, const RationalPolynomial&, int, int, int);
+    int, const RationalPolynomial&, int, int, int, const Rational&);
 
 template DenseMatrix<Rational> linearized_operator_matrix<Rational>(int, const Rational&, OperatorPart, int, int);
 template DenseMatrix<RationalPolynomial> linearized_operator_matrix<RationalPolynomial>(int, const RationalPolynomial&,

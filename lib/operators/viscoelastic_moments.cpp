@@ -166,6 +166,38 @@ ViscoelasticConstants viscoelastic_constants(const ViscoelasticRestitution& rest
   // at the order of a22 (theory.md (13.4)): F_2 = N_2 a21 δ' (1/10)(2/d) R_1 with R_1 ≈ E^(1) δ'.
   const double drift = h.at(0).norm(2) * c.a2_1 * h.energy(1, 0, 0) / (5.0 * 3.0);
   c.a2_2 = (drift - f02 - f11 * c.a2_1 - f20 * c.a2_1 * c.a2_1) / f10;
+
+  // Transport at first order in δ' (theory.md §13.2). Operator entries about the HCS: the δ'^1 part
+  // is h_1 × [(α − 1)^1 coefficient at power 1/5] × J_{1/5}/J0, plus a21 × the a2-weighted elastic entry.
+  const int d = 3;
+  const auto alpha = RationalPolynomial::variable();
+  const double h1 = restitution.series()[0];
+  const double pf = std::tgamma(1.1) * std::pow(2.0, 0.1);  // J_s0/J0 at θ = 1: Γ(1 + s/2)(A0/N2_0)^{s/2}
+  auto first_order = [&](int rank, int n_max, int p, int q) {
+    const auto shifted_entry = shifted(
+        hcs_linearized_operator_matrices<RationalPolynomial>(d, alpha, rank, n_max, 0, Rational(1, 5))[0](p, q));
+    const double gain = shifted_entry.size() > 1 ? shifted_entry[1].to_double() : 0.0;
+    const double weighted =
+        hcs_linearized_operator_matrices<Rational>(d, Rational(1), rank, n_max, 2)[2](p, q).to_double();
+    return h1 * pf * gain + c.a2_1 * weighted;
+  };
+  const double nu_eta_1 = first_order(2, 0, 0, 0) / (d - 1);
+  const double nu_kappa_1 = first_order(1, 1, 1, 1) / d, nu_kappa_0 = (d - 1.0) / d;
+  const double zeta_1 = -(d + 2.0) / (2.0 * d) * h.energy(1, 0, 0);
+  // Heat source gains −(a21 δ'/10) c S_2 f_M (a2 depends on T through δ'): projected on c S_1 and
+  // normalised by d(d+2)/4.
+  Rational x_s1_s2;  // ⟨x S_1^(d/2) S_2^(d/2−1)⟩_M
+  {
+    const auto s1 = sonine_coefficients(sonine_twice_m(d, 1), 1), s2 = sonine_coefficients(sonine_twice_m(d, 0), 2);
+    for (std::size_t i = 0; i < s1.size(); ++i)
+      for (std::size_t j = 0; j < s2.size(); ++j)
+        x_s1_s2 += s1[i] * s2[j] * Rational::rising_half(d, static_cast<unsigned long>(i + j + 1));
+  }
+  const double source_1 = -c.a2_1 / 10 * x_s1_s2.to_double() * 4.0 / (d * (d + 2.0));
+  c.shear_viscosity_1 = -nu_eta_1 + zeta_1 / 2;  // (13.5)
+  c.thermal_conductivity_1_unverified =
+      2 * c.a2_1 + source_1 - nu_kappa_1 / nu_kappa_0 + 2.1 * zeta_1 / nu_kappa_0;  // (13.6)
+  c.density_heat_coefficient_1 = d * zeta_1 / (d - 1.0) + c.a2_1;                   // (13.7)
   return c;
 }
 

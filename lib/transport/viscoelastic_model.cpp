@@ -17,7 +17,7 @@ class ViscoelasticModel final : public TransportModel {
            "expansion constants of the cooling gas (first Sonine, as Brilliantov & Poeschel 2002)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"omega0", "omega1", "q0", "a2_1", "a2_2"};
+    return {"omega0", "omega1", "q0", "a2_1", "a2_2", "shear_viscosity_1", "density_heat_coefficient_1"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     return {{"c1",
@@ -43,17 +43,19 @@ class ViscoelasticModel final : public TransportModel {
     const ViscoelasticConstants c = viscoelastic_constants(restitution);
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
-      const double value = name == "omega0"   ? c.omega0
-                           : name == "omega1" ? c.omega1
-                           : name == "q0"     ? c.q0
-                           : name == "a2_1"   ? c.a2_1
-                           : name == "a2_2"   ? c.a2_2
-                                              : std::nan("");
+      const double value = name == "omega0"                       ? c.omega0
+                           : name == "omega1"                     ? c.omega1
+                           : name == "q0"                         ? c.q0
+                           : name == "a2_1"                       ? c.a2_1
+                           : name == "a2_2"                       ? c.a2_2
+                           : name == "shear_viscosity_1"          ? c.shear_viscosity_1
+                           : name == "density_heat_coefficient_1" ? c.density_heat_coefficient_1
+                                                                  : std::nan("");
       if (std::isnan(value))
         throw std::invalid_argument("coefficients: unknown coefficient '" + name + "' for model viscoelastic");
       // ω0, ω1, q0 are exact at a = 0 (no Sonine truncation); a2_1, a2_2 are first Sonine (K = 2)
       // like BP's; their truncation error is not estimated yet (reported as 0, flagged).
-      const bool truncated = name == "a2_1" || name == "a2_2";
+      const bool truncated = name != "omega0" && name != "omega1" && name != "q0";
       out.push_back({Rational::from_double(value), Rational(0), 1, !truncated, false, true});
     }
     return out;
