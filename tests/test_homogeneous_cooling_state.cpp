@@ -128,13 +128,12 @@ TEST(Hcs, ConvergencePatternInSonineOrder) {
 }
 
 namespace {
-/// ⟨x^p S_k(x)⟩ under x^m e^{−x}/Γ(m+1), m = d/2 − 1 (exact → double).
+/// ⟨x^p S_k(x)⟩ under the Maxwellian (x = c², S_k = S_{d/2−1}^(k)).
 double maxwell_moment(int d, int p, int k) {
-  const long twice_m = gkt::sonine_twice_m(d, 0);
-  const auto s = gkt::sonine_coefficients(twice_m, k);
-  Rational sum;
-  for (int i = 0; i <= k; ++i) sum += s[i] * Rational::rising_half(twice_m + 2, static_cast<unsigned long>(p + i));
-  return sum.to_double();
+  std::vector<Rational> poly(static_cast<std::size_t>(p), Rational(0));
+  const auto s = gkt::sonine_coefficients(gkt::sonine_twice_m(d, 0), k);
+  poly.insert(poly.end(), s.begin(), s.end());
+  return gkt::maxwell_average(d, poly).to_double();
 }
 }  // namespace
 

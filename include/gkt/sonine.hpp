@@ -27,6 +27,17 @@ Rational sonine_norm(long twice_m, int n);
 /// Returns the generating function (1-s)^{-m-1} exp(-x s/(1-s)) for |s| < 1 (double).
 double sonine_generating_function(long twice_m, double x, double s);
 
+/// Returns rows[n][k] = coefficient of x^k in S_m^(n)(x), n = 0..n_max (exact).
+std::vector<std::vector<Rational>> sonine_table(long twice_m, int n_max);
+
+/// Returns ⟨P(x)⟩ = Σ_j P_j (d/2)_j, the average of the polynomial P (coefficients of x^j) under the
+/// d-dimensional Maxwellian in x = c² (weight x^{d/2−1} e^{−x}/Γ(d/2)); exact.
+Rational maxwell_average(int dimension, const std::vector<Rational>& polynomial);
+
+/// Returns ⟨x S_p'(x) S_k(x)⟩ under that Maxwellian, S = S_{d/2−1} (the weight of the scaling term
+/// of the homogeneous cooling state, theory.md (9.2)); exact.
+Rational scaling_weight(int dimension, int p, int k);
+
 /// Returns the Sonine index 2m used for a velocity basis of tensor rank `rank` (0 scalar,
 /// 1 vector, 2 traceless tensor) in `dimension` dimensions: m = d/2 - 1 + rank.
 constexpr long sonine_twice_m(int dimension, int rank) { return dimension - 2 + 2L * rank; }

@@ -38,6 +38,32 @@ Rational sonine_norm(long twice_m, int n) {
          Rational::factorial(static_cast<unsigned long>(n));
 }
 
+std::vector<std::vector<Rational>> sonine_table(long twice_m, int n_max) {
+  std::vector<std::vector<Rational>> rows;
+  rows.reserve(static_cast<std::size_t>(n_max) + 1);
+  for (int n = 0; n <= n_max; ++n) rows.push_back(sonine_coefficients(twice_m, n));
+  return rows;
+}
+
+Rational maxwell_average(int dimension, const std::vector<Rational>& polynomial) {
+  Rational s;
+  for (std::size_t j = 0; j < polynomial.size(); ++j)
+    s += polynomial[j] * Rational::rising_half(dimension, static_cast<unsigned long>(j));
+  return s;
+}
+
+Rational scaling_weight(int dimension, int p, int k) {
+  const long twice_m = sonine_twice_m(dimension, 0);
+  const auto sp = sonine_coefficients(twice_m, p);
+  const auto sk = sonine_coefficients(twice_m, k);
+  std::vector<Rational> product(static_cast<std::size_t>(p + k) + 1);  // x S_p'(x) S_k(x)
+  for (int j = 1; j <= p; ++j)
+    for (int i = 0; i <= k; ++i)
+      product[static_cast<std::size_t>(i + j)] +=
+          Rational(j) * sp[static_cast<std::size_t>(j)] * sk[static_cast<std::size_t>(i)];
+  return maxwell_average(dimension, product);
+}
+
 double sonine_generating_function(long twice_m, double x, double s) {
   const double m = 0.5 * static_cast<double>(twice_m);
   return std::pow(1.0 - s, -m - 1.0) * std::exp(-x * s / (1.0 - s));

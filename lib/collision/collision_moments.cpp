@@ -11,32 +11,23 @@ namespace gkt {
 
 namespace {
 
-/// Exact Sonine coefficient table S(n, k) = coefficient of x^k in S_m^(n), n, k ≤ n_max.
-DenseMatrix<Rational> sonine_table(long twice_m, int n_max) {
-  DenseMatrix<Rational> s(n_max + 1, n_max + 1);
-  for (int n = 0; n <= n_max; ++n) {
-    const auto c = sonine_coefficients(twice_m, n);
-    for (int k = 0; k <= n; ++k) s(n, k) = c[static_cast<std::size_t>(k)];
-  }
-  return s;
-}
-
 /// Returns S · Y · Sᵀ-type contraction: out(p, q) = Σ_{k ≤ q, k' ≤ p} S(q,k) S(p,k') y(k, k').
 template <class Ring>
-DenseMatrix<Ring> contract_with_sonine(const DenseMatrix<Rational>& s, const DenseMatrix<Ring>& y, int n_max) {
+DenseMatrix<Ring> contract_with_sonine(const std::vector<std::vector<Rational>>& s, const DenseMatrix<Ring>& y,
+                                       int n_max) {
   // first: t(k, p) = Σ_{k'} y(k, k') S(p, k')
   DenseMatrix<Ring> t(n_max + 1, n_max + 1);
   for (int k = 0; k <= n_max; ++k)
     for (int p = 0; p <= n_max; ++p) {
       Ring acc(0L);
-      for (int kp = 0; kp <= p; ++kp) acc.add_product(y(k, kp), Ring(s(p, kp)));
+      for (int kp = 0; kp <= p; ++kp) acc.add_product(y(k, kp), Ring(s[p][kp]));
       t(k, p) = std::move(acc);
     }
   DenseMatrix<Ring> out(n_max + 1, n_max + 1);
   for (int p = 0; p <= n_max; ++p)
     for (int q = 0; q <= n_max; ++q) {
       Ring acc(0L);
-      for (int k = 0; k <= q; ++k) acc.add_product(t(k, p), Ring(s(q, k)));
+      for (int k = 0; k <= q; ++k) acc.add_product(t(k, p), Ring(s[q][k]));
       out(p, q) = std::move(acc);
     }
   return out;

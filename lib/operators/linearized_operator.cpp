@@ -40,13 +40,6 @@ DenseMatrix<Ring> linearized_operator_matrix(int dimension, const Ring& alpha, O
 
 namespace {
 
-/// Exact Sonine coefficient table c(n, j) of S_m^(n), n ≤ n_max.
-std::vector<std::vector<Rational>> sonine_rows(long twice_m, int n_max) {
-  std::vector<std::vector<Rational>> rows;
-  for (int n = 0; n <= n_max; ++n) rows.push_back(sonine_coefficients(twice_m, n));
-  return rows;
-}
-
 /// M_k(p, q) = Σ_{i ≤ k} Σ_{j ≤ q} Σ_{l ≤ p} w_k[i] s_q[j] s_p[l] y(i, j, l), contracted one index at a
 /// time: weight power i, unknown power j, test power l.
 template <class Ring, class Integrand>
@@ -91,8 +84,8 @@ std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, c
                                                                 int k_max, const Rational& power) {
   if (rank < 0 || rank > 2) throw std::invalid_argument("rank: must be 0, 1 or 2");
   const CollisionPair pair{dimension, Rational(1), Rational(1), Rational(1), Rational(1)};
-  const auto w = sonine_rows(sonine_twice_m(dimension, 0), k_max);
-  const auto s = sonine_rows(sonine_twice_m(dimension, rank), n_max);
+  const auto w = sonine_table(sonine_twice_m(dimension, 0), k_max);
+  const auto s = sonine_table(sonine_twice_m(dimension, rank), n_max);
   const int e = rank == 2 ? 1 : 0;  // the trace term of Y_2·Y_2 needs one more power
   const Rational inv_d(1, static_cast<unsigned long>(dimension));
   const Rational self_factor = rank == 2 ? Rational(dimension - 1, static_cast<unsigned long>(dimension)) : Rational(1);

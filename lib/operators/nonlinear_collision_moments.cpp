@@ -14,8 +14,7 @@ BilinearCollisionMoments<Ring> bilinear_collision_moments(int dimension, const R
   const CollisionPair pair{dimension, Rational(1), Rational(1), Rational(1), Rational(1)};
   const auto moments = scalar_collision_moments<Ring>(pair, alpha, k_max);  // E(a, b, c)
   const int n = k_max + 1;
-  std::vector<std::vector<Rational>> s;  // s[p][j]: coefficient of x^j in S_p
-  for (int p = 0; p < n; ++p) s.push_back(sonine_coefficients(sonine_twice_m(dimension, 0), p));
+  const auto s = sonine_table(sonine_twice_m(dimension, 0), k_max);  // s[p][j]: coefficient of x^j in S_p
   auto idx = [n](int a, int b, int c) { return (static_cast<std::size_t>(a) * n + b) * n + c; };
 
   // Contract one index at a time (O(K⁴) instead of O(K⁶)).

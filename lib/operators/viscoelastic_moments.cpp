@@ -41,8 +41,7 @@ ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestit
   const CollisionPair pair{d, Rational(1), Rational(1), Rational(1), Rational(1)};
   const auto alpha = RationalPolynomial::variable();
   const long twice_m = sonine_twice_m(d, 0);
-  std::vector<std::vector<Rational>> s;
-  for (int p = 0; p <= k_max; ++p) s.push_back(sonine_coefficients(twice_m, p));
+  const auto s = sonine_table(twice_m, k_max);
   const auto coef = power_coefficients(restitution.series(), kOrders);
   t_.assign(kOrders + 1, std::vector<double>(static_cast<std::size_t>(n) * n * n, 0.0));
   e_.assign(kOrders + 1, std::vector<double>(static_cast<std::size_t>(n) * n, 0.0));
@@ -109,14 +108,7 @@ ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestit
   norms_.resize(static_cast<std::size_t>(n));
   for (int p = 0; p < n; ++p) {
     norms_[static_cast<std::size_t>(p)] = sonine_norm(twice_m, p).to_double();
-    for (int k = 0; k < n; ++k) {
-      Rational sum;  // ⟨x S_p' S_k⟩
-      for (int j = 1; j <= p; ++j)
-        for (int i = 0; i <= k; ++i)
-          sum +=
-              Rational(j) * s[p][j] * s[k][i] * Rational::rising_half(twice_m + 2, static_cast<unsigned long>(i + j));
-      w_[p][k] = sum.to_double();
-    }
+    for (int k = 0; k < n; ++k) w_[p][k] = scaling_weight(d, p, k).to_double();
   }
 }
 
@@ -186,14 +178,14 @@ ViscoelasticConstants viscoelastic_constants(const ViscoelasticRestitution& rest
   const double zeta_1 = -(d + 2.0) / (2.0 * d) * h.energy(1, 0, 0);
   // Heat source gains −(a21 δ'/10) c S_2 f_M (a2 depends on T through δ'): projected on c S_1 and
   // normalised by d(d+2)/4.
-  Rational x_s1_s2;  // ⟨x S_1^(d/2) S_2^(d/2−1)⟩_M
+  // ⟨x S_1^(d/2) S_2^(d/2−1)⟩ under the Maxwellian
+  std::vector<Rational> x_s1_s2(5);
   {
     const auto s1 = sonine_coefficients(sonine_twice_m(d, 1), 1), s2 = sonine_coefficients(sonine_twice_m(d, 0), 2);
     for (std::size_t i = 0; i < s1.size(); ++i)
-      for (std::size_t j = 0; j < s2.size(); ++j)
-        x_s1_s2 += s1[i] * s2[j] * Rational::rising_half(d, static_cast<unsigned long>(i + j + 1));
+      for (std::size_t j = 0; j < s2.size(); ++j) x_s1_s2[i + j + 1] += s1[i] * s2[j];
   }
-  const double source_1 = -c.a2_1 / 10 * x_s1_s2.to_double() * 4.0 / (d * (d + 2.0));
+  const double source_1 = -c.a2_1 / 10 * maxwell_average(d, x_s1_s2).to_double() * 4.0 / (d * (d + 2.0));
   c.shear_viscosity_1 = -nu_eta_1 + zeta_1 / 2;  // (13.5)
   c.thermal_conductivity_1_unverified =
       2 * c.a2_1 + source_1 - nu_kappa_1 / nu_kappa_0 + 2.1 * zeta_1 / nu_kappa_0;  // (13.6)

@@ -39,13 +39,6 @@ Poly times_x(const Poly& a, int power = 1) {
   return r;
 }
 
-/// ⟨P(x)⟩ under the Maxwellian x^{d/2−1}e^{−x}/Γ(d/2): Σ P_j (d/2)_j (exact).
-Rational maxwell(int d, const Poly& p) {
-  Rational s;
-  for (std::size_t j = 0; j < p.size(); ++j) s += p[j] * Rational::rising_half(d, static_cast<unsigned long>(j));
-  return s;
-}
-
 /// The α-independent, exact pieces of the Galerkin systems (theory.md (10.4)–(10.7)) for one mode.
 struct ModePieces {
   std::vector<std::vector<double>> d, m;  // D(p, q), M(p, q)
@@ -67,8 +60,8 @@ ModePieces vector_pieces(int d, int n_max, int k_max) {
   for (int p = 0; p <= n_max; ++p) {
     const Poly dp = add(s[p], times_x(derivative(s[p])), Rational(2));  // S_p + 2x S_p'
     for (int q = 0; q <= n_max; ++q) {
-      r.m[p][q] = maxwell(d, times_x(multiply(s[p], s[q]))).to_double();
-      r.d[p][q] = (Rational(-1, 2) * maxwell(d, times_x(multiply(s[q], dp)))).to_double();
+      r.m[p][q] = maxwell_average(d, times_x(multiply(s[p], s[q]))).to_double();
+      r.d[p][q] = (Rational(-1, 2) * maxwell_average(d, times_x(multiply(s[q], dp)))).to_double();
     }
   }
   r.u.assign(n_max + 1, std::vector<double>(k_max + 1));
@@ -80,11 +73,11 @@ ModePieces vector_pieces(int d, int n_max, int k_max) {
     density = add(density, times_x(sp), Rational(-1));
     const Poly heat = add(density, times_x(spp, 2), Rational(-1));
     for (int k = 0; k <= k_max; ++k) {
-      r.u[p][k] = maxwell(d, multiply(heat, w[k])).to_double();
-      r.u2[p][k] = maxwell(d, multiply(density, w[k])).to_double();
+      r.u[p][k] = maxwell_average(d, multiply(heat, w[k])).to_double();
+      r.u2[p][k] = maxwell_average(d, multiply(density, w[k])).to_double();
     }
   }
-  for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell(d, times_x(s[q], 2)).to_double());
+  for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell_average(d, times_x(s[q], 2)).to_double());
   return r;
 }
 
@@ -100,16 +93,16 @@ ModePieces tensor_pieces(int d, int n_max, int k_max) {
   for (int p = 0; p <= n_max; ++p) {
     const Poly dp = add(s[p], times_x(derivative(s[p])), Rational(2));
     for (int q = 0; q <= n_max; ++q)
-      r.d[p][q] = (Rational(-1, 2) * yy * maxwell(d, times_x(multiply(s[q], dp), 2))).to_double();
+      r.d[p][q] = (Rational(-1, 2) * yy * maxwell_average(d, times_x(multiply(s[q], dp), 2))).to_double();
   }
   r.u.assign(n_max + 1, std::vector<double>(k_max + 1));
   const Rational c1 = Rational(d + 1) - Rational(2, static_cast<unsigned long>(d));
   for (int p = 0; p <= n_max; ++p) {
     // −x[(d + 1 − 2/d) S_p + 2((d−1)/d) x S_p']
     const Poly src = add(add(Poly{}, times_x(s[p]), -c1), times_x(derivative(s[p]), 2), Rational(-2) * yy);
-    for (int k = 0; k <= k_max; ++k) r.u[p][k] = maxwell(d, multiply(src, w[k])).to_double();
+    for (int k = 0; k <= k_max; ++k) r.u[p][k] = maxwell_average(d, multiply(src, w[k])).to_double();
   }
-  for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell(d, times_x(s[q], 2)).to_double());
+  for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell_average(d, times_x(s[q], 2)).to_double());
   return r;
 }
 

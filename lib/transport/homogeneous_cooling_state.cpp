@@ -10,22 +10,7 @@
 
 namespace gkt {
 
-namespace {
-
-/// w(p, k) = ⟨x S_p'(x) S_k(x)⟩ under the Maxwellian weight x^m e^{−x}/Γ(m+1), m = d/2 − 1 (exact).
-Rational derivative_weight(int dimension, int p, int k) {
-  const long twice_m = sonine_twice_m(dimension, 0);
-  const auto sp = sonine_coefficients(twice_m, p);
-  const auto sk = sonine_coefficients(twice_m, k);
-  Rational sum;
-  for (int j = 1; j <= p; ++j)
-    for (int i = 0; i <= k; ++i)
-      sum += Rational(j) * sp[static_cast<std::size_t>(j)] * sk[static_cast<std::size_t>(i)] *
-             Rational::rising_half(twice_m + 2, static_cast<unsigned long>(i + j));
-  return sum;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 FirstSonineHcs first_sonine_hcs(int dimension) {
   const auto alpha = RationalPolynomial::variable();
@@ -34,8 +19,8 @@ FirstSonineHcs first_sonine_hcs(int dimension) {
   // F_2 linearised in a2: c0 + c1 a2 = 0 with R_1 ≈ e00 + a2 (e20 + e02), ⟨xS_2'⟩ ≈ w20 + a2 w22.
   const RationalPolynomial e0 = m.e(0, 0);
   const RationalPolynomial e1 = m.e(2, 0) + m.e(0, 2);
-  const Rational w0 = derivative_weight(dimension, 2, 0);
-  const Rational w2 = derivative_weight(dimension, 2, 2);
+  const Rational w0 = scaling_weight(dimension, 2, 0);
+  const Rational w2 = scaling_weight(dimension, 2, 2);
   RationalPolynomial c0 = m.t(2, 0, 0) - e0 * RationalPolynomial(two_over_d * w0);
   RationalPolynomial c1 = m.t(2, 2, 0) + m.t(2, 0, 2) -
                           (e1 * RationalPolynomial(w0) + e0 * RationalPolynomial(w2)) * RationalPolynomial(two_over_d);
@@ -68,7 +53,7 @@ void HomogeneousCoolingState::ensure_tables(int k_max) {
   tables_.k_max = target;
   derivative_weights_.assign(static_cast<std::size_t>(target) + 1, std::vector<double>(target + 1));
   for (int p = 0; p <= target; ++p)
-    for (int k = 0; k <= target; ++k) derivative_weights_[p][k] = derivative_weight(dimension_, p, k).to_double();
+    for (int k = 0; k <= target; ++k) derivative_weights_[p][k] = scaling_weight(dimension_, p, k).to_double();
   tables_.t.clear();
   tables_.e.clear();
   for (const auto& p : m.sonine) tables_.t.push_back(to_coefficients(p));
