@@ -10,6 +10,7 @@
 #include "gkt/linearized_operator.hpp"
 #include "gkt/nonlinear_collision_moments.hpp"
 #include "gkt/sonine.hpp"
+#include "transport/alpha_polynomial.hpp"
 
 namespace gkt {
 
@@ -106,18 +107,6 @@ ModePieces tensor_pieces(int d, int n_max, int k_max) {
   return r;
 }
 
-std::vector<long double> coefficients_of(const RationalPolynomial& p) {
-  std::vector<long double> c(static_cast<std::size_t>(std::max(p.degree(), 0L)) + 1, 0.0L);
-  for (long k = 0; k <= p.degree(); ++k) c[static_cast<std::size_t>(k)] = p.coefficient(k).to_double();
-  return c;
-}
-
-double horner(const std::vector<long double>& c, long double x) {
-  long double v = 0;
-  for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * x + *it;
-  return static_cast<double>(v);
-}
-
 }  // namespace
 
 std::vector<Rational> FirstSonineNavierStokes::evaluate(const Rational& alpha, const Rational& a2) const {
@@ -168,7 +157,7 @@ void DiluteNavierStokes::ensure_built(int order, int k_max) {
     for (const auto& m : ms) {
       DenseMatrix<std::vector<long double>> c(n + 1, n + 1);
       for (int p = 0; p <= n; ++p)
-        for (int q = 0; q <= n; ++q) c(p, q) = coefficients_of(m(p, q));
+        for (int q = 0; q <= n; ++q) c(p, q) = detail::to_alpha_polynomial(m(p, q));
       target.by_weight.push_back(std::move(c));
     }
     target.n_max = n;
@@ -189,7 +178,7 @@ void DiluteNavierStokes::ensure_built(int order, int k_max) {
     const int k = std::max({k_max + 2, energy_k_ + 4, 1});
     const auto e = bilinear_collision_moments<RationalPolynomial>(dimension_, alpha, k);
     energy_.emplace();
-    for (const auto& p : e.energy) energy_->push_back(coefficients_of(p));
+    for (const auto& p : e.energy) energy_->push_back(detail::to_alpha_polynomial(p));
     energy_k_ = k;
   }
 }
@@ -208,14 +197,14 @@ NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, c
   const int ne = energy_k_ + 1;
   for (int k = 0; k <= k_max; ++k)
     for (int l = 0; l <= k_max; ++l)
-      r1 += hcs_a[k] * hcs_a[l] * horner((*energy_)[static_cast<std::size_t>(k) * ne + l], x);
+      r1 += hcs_a[k] * hcs_a[l] * detail::evaluate((*energy_)[static_cast<std::size_t>(k) * ne + l], x);
   const double zeta_term = -2.0 / d * r1;
 
   auto operator_matrix = [&](const PolynomialMatrices& pm, int first, int n) {
     Eigen::MatrixXd l = Eigen::MatrixXd::Zero(n, n);
     for (int k = 0; k <= k_max; ++k)
       for (int p = 0; p < n; ++p)
-        for (int q = 0; q < n; ++q) l(p, q) += hcs_a[k] * horner(pm.by_weight[k](first + p, first + q), x);
+        for (int q = 0; q < n; ++q) l(p, q) += hcs_a[k] * detail::evaluate(pm.by_weight[k](first + p, first + q), x);
     return l;
   };
 

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "gkt/sonine.hpp"
+#include "transport/alpha_polynomial.hpp"
 
 namespace gkt {
 
@@ -45,21 +46,16 @@ void HomogeneousCoolingState::ensure_tables(int k_max) {
   if (tables_.k_max >= k_max) return;
   const int target = std::max(k_max, tables_.k_max + 4);
   const auto m = bilinear_collision_moments<RationalPolynomial>(dimension_, RationalPolynomial::variable(), target);
-  auto to_coefficients = [](const RationalPolynomial& p) {
-    std::vector<long double> c(static_cast<std::size_t>(std::max(p.degree(), 0L)) + 1, 0.0L);
-    for (long k = 0; k <= p.degree(); ++k) c[static_cast<std::size_t>(k)] = p.coefficient(k).to_double();
-    return c;
-  };
   tables_.k_max = target;
   derivative_weights_.assign(static_cast<std::size_t>(target) + 1, std::vector<double>(target + 1));
   for (int p = 0; p <= target; ++p)
     for (int k = 0; k <= target; ++k) derivative_weights_[p][k] = scaling_weight(dimension_, p, k).to_double();
   tables_.t.clear();
   tables_.e.clear();
-  for (const auto& p : m.sonine) tables_.t.push_back(to_coefficients(p));
-  for (const auto& p : m.energy) tables_.e.push_back(to_coefficients(p));
+  for (const auto& p : m.sonine) tables_.t.push_back(detail::to_alpha_polynomial(p));
+  for (const auto& p : m.energy) tables_.e.push_back(detail::to_alpha_polynomial(p));
   tables_.c.clear();
-  for (const auto& p : m.frequency) tables_.c.push_back(to_coefficients(p));
+  for (const auto& p : m.frequency) tables_.c.push_back(detail::to_alpha_polynomial(p));
 }
 
 HcsState HomogeneousCoolingState::solve(const Rational& alpha, int k_max, HcsScheme scheme) {
@@ -124,20 +120,15 @@ CumulantHierarchy HomogeneousCoolingState::hierarchy(const Rational& alpha, int 
   ensure_tables(k_max);
   const int n = tables_.k_max + 1;
   const long double x = alpha.to_double();
-  auto horner = [x](const std::vector<long double>& c) {
-    long double v = 0;
-    for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * x + *it;
-    return static_cast<double>(v);
-  };
   const int kn = k_max + 1;
   std::vector<double> t(static_cast<std::size_t>(kn) * kn * kn), e(static_cast<std::size_t>(kn) * kn), c(e.size());
   for (int p = 0; p < kn; ++p)
     for (int k = 0; k < kn; ++k) {
-      e[static_cast<std::size_t>(p) * kn + k] = horner(tables_.e[static_cast<std::size_t>(p) * n + k]);
-      c[static_cast<std::size_t>(p) * kn + k] = horner(tables_.c[static_cast<std::size_t>(p) * n + k]);
+      e[static_cast<std::size_t>(p) * kn + k] = detail::evaluate(tables_.e[static_cast<std::size_t>(p) * n + k], x);
+      c[static_cast<std::size_t>(p) * kn + k] = detail::evaluate(tables_.c[static_cast<std::size_t>(p) * n + k], x);
       for (int l = 0; l < kn; ++l)
         t[(static_cast<std::size_t>(p) * kn + k) * kn + l] =
-            horner(tables_.t[(static_cast<std::size_t>(p) * n + k) * n + l]);
+            detail::evaluate(tables_.t[(static_cast<std::size_t>(p) * n + k) * n + l], x);
     }
   std::vector<std::vector<double>> w(static_cast<std::size_t>(kn), std::vector<double>(static_cast<std::size_t>(kn)));
   std::vector<double> norms(static_cast<std::size_t>(kn));
