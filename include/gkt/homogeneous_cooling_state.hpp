@@ -62,6 +62,7 @@ class CumulantHierarchy {
   [[nodiscard]] double norm(int p) const { return norms_[static_cast<std::size_t>(p)]; }
 
  private:
+  friend class ViscoelasticHierarchy;  // refreshes t_, e_ in place as δ' changes
   int dimension_, k_max_;
   std::vector<double> t_, e_, c_;
   std::vector<std::vector<double>> w_;

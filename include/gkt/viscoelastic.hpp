@@ -24,6 +24,8 @@ class ViscoelasticHierarchy {
   ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution = {});
   /// Returns the cumulant hierarchy at the current δ'.
   [[nodiscard]] CumulantHierarchy at(double delta_prime) const;
+  /// Overwrites the δ'-dependent tensors of a hierarchy made by at() — no allocation (ODE hot path).
+  void refresh(double delta_prime, CumulantHierarchy& hierarchy) const;
   /// Returns E^(J)(k, l) (energy moment of order J in δ').
   [[nodiscard]] double energy(int order, int k, int l) const;
   /// Returns the test-x² moment M^(J)(k, l) = ⟨S_k S_l Δ(X1²)⟩/J0 (BP's μ4 up to the factor −ν).

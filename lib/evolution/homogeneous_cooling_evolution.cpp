@@ -48,7 +48,11 @@ struct Problem {
   /// The hierarchy at the state's temperature.
   const CumulantHierarchy& at(double theta) const {
     if (viscoelastic == nullptr) return *h;
-    current.emplace(viscoelastic->at(delta * std::pow(2.0 * theta, 0.1)));
+    const double delta_prime = delta * std::pow(2.0 * theta, 0.1);
+    if (current)
+      viscoelastic->refresh(delta_prime, *current);  // in place after the first call
+    else
+      current.emplace(viscoelastic->at(delta_prime));
     return *current;
   }
   void unpack(const double* y) const {

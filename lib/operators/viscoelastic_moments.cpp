@@ -123,6 +123,17 @@ CumulantHierarchy ViscoelasticHierarchy::at(double delta_prime) const {
   return CumulantHierarchy(3, k_max_, std::move(t), std::move(e), c_, w_, norms_);
 }
 
+void ViscoelasticHierarchy::refresh(double delta_prime, CumulantHierarchy& hierarchy) const {
+  hierarchy.t_ = t_[0];  // same sizes: std::vector copy-assignment reuses the storage
+  hierarchy.e_ = e_[0];
+  double power = 1;
+  for (int order = 1; order <= kOrders; ++order) {
+    power *= delta_prime;
+    for (std::size_t i = 0; i < hierarchy.t_.size(); ++i) hierarchy.t_[i] += power * t_[order][i];
+    for (std::size_t i = 0; i < hierarchy.e_.size(); ++i) hierarchy.e_[i] += power * e_[order][i];
+  }
+}
+
 double ViscoelasticHierarchy::energy(int order, int k, int l) const {
   return e_[static_cast<std::size_t>(order)][static_cast<std::size_t>(k) * (k_max_ + 1) + l];
 }
