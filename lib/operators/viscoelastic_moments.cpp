@@ -167,7 +167,7 @@ ViscoelasticConstants viscoelastic_constants(const ViscoelasticRestitution& rest
   c.a2_1 = -f01 / f10;
   // Adiabatic following of the decaying δ'(t) ∝ T^{1/10}: da2/dτ = a21 dδ'/dτ is O(δ'²) and enters
   // at the order of a22 (theory.md (13.4)): F_2 = N_2 a21 δ' (1/10)(2/d) R_1 with R_1 ≈ E^(1) δ'.
-  const double drift = h.at(0).norm(2) * c.a2_1 * h.energy(1, 0, 0) / (5.0 * 3.0);
+  const double drift = sonine_norm(sonine_twice_m(3, 0), 2).to_double() * c.a2_1 * h.energy(1, 0, 0) / (5.0 * 3.0);
   c.a2_2 = (drift - f02 - f11 * c.a2_1 - f20 * c.a2_1 * c.a2_1) / f10;
 
   // Transport at first order in δ' (theory.md §13.2). Operator entries about the HCS: the δ'^1 part

@@ -4,6 +4,7 @@
 
 #include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "transport/models.hpp"
 
 namespace gkt {
 
@@ -32,12 +33,8 @@ RationalFunction first_sonine_closed_form(int dimension, const std::string& coef
   if (coefficient == "density_heat_coefficient")
     return (constant(Rational(2)) * zeta * kappa + constant(Rational(2) * d_ratio) * a2) /
            (constant(Rational(2)) * nu_kappa - constant(Rational(3)) * zeta);
-  std::string valid;
-  for (const auto& n : kFirstSonineCoefficients) {
-    if (!valid.empty()) valid += ", ";
-    valid += n;
-  }
-  throw std::invalid_argument("coefficient: no first-Sonine closed form for '" + coefficient + "'; valid: " + valid);
+  throw std::invalid_argument("coefficient: no first-Sonine closed form for '" + coefficient +
+                              "'; valid: " + detail::join(kFirstSonineCoefficients));
 }
 
 }  // namespace gkt

@@ -27,12 +27,8 @@ std::unique_ptr<TransportModel> make_transport_model(const std::string& name) {
   const auto& r = registry();
   const auto it = r.find(name);
   if (it == r.end()) {
-    std::string valid;
-    for (const auto& entry : r) {
-      if (!valid.empty()) valid += ", ";
-      valid += "\"" + entry.first + "\"";
-    }
-    throw std::invalid_argument("model: unknown model \"" + name + "\"; valid models: " + valid);
+    throw std::invalid_argument("model: unknown model \"" + name +
+                                "\"; valid models: " + detail::join(transport_model_names(), "\""));
   }
   return it->second();
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "gkt/sonine_solution.hpp"
 #include "gkt/transport_model.hpp"
@@ -11,6 +12,19 @@ namespace gkt::detail {
 std::unique_ptr<TransportModel> make_hard_sphere_model();
 std::unique_ptr<TransportModel> make_smooth_inelastic_model();
 std::unique_ptr<TransportModel> make_viscoelastic_model();
+
+/// Returns the items joined by ", ", each wrapped in `quote` (for "valid: …" error messages).
+template <class Range>
+std::string join(const Range& items, const std::string& quote = "") {
+  std::string out;
+  for (const auto& item : items) {
+    if (!out.empty()) out += ", ";
+    out += quote;
+    out += item;
+    out += quote;
+  }
+  return out;
+}
 
 /// A value at one order as a model computes it: estimate plus whether it exists at all.
 struct OrderValue {

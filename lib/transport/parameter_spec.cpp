@@ -3,17 +3,13 @@
 #include <flint/fmpz.h>
 
 #include "gkt/transport_model.hpp"
+#include "transport/models.hpp"
 
 namespace gkt {
 
 std::string ParameterSpec::allowed() const {
   if (kind == Kind::choice) {
-    std::string list;
-    for (const auto& c : choices) {
-      if (!list.empty()) list += ", ";
-      list += "\"" + c + "\"";
-    }
-    return "one of " + list;
+    return "one of " + detail::join(choices, "\"");
   }
   const std::string kind_name = kind == Kind::integer ? "an integer" : "a number";
   if (kind == Kind::integer && min_inclusive && max_inclusive && min == max) return "exactly " + min.to_string();

@@ -20,12 +20,6 @@ constexpr long kMaxPoints = 1000000;
 
 std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
 
-std::string format_value(double x) {
-  char buffer[64];
-  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return {buffer, r.ptr};
-}
-
 /// A single number with an allowed (open or closed) range.
 double number(const toml::table& t, const std::string& key, double fallback, double lo, bool lo_open, double hi,
               const std::string& allowed) {
@@ -33,7 +27,7 @@ double number(const toml::table& t, const std::string& key, double fallback, dou
   if (node == nullptr) return fallback;
   if (node->is_array() || node->is_table()) throw error(key + ": must be a single number (" + allowed + ")");
   const double v = scene_number(*node, key).to_double();
-  if ((lo_open ? v <= lo : v < lo) || v > hi) throw error(key + ": must be " + allowed + ", got " + format_value(v));
+  if ((lo_open ? v <= lo : v < lo) || v > hi) throw error(key + ": must be " + allowed + ", got " + format_number(v));
   return v;
 }
 
@@ -54,19 +48,14 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   for (const auto& [key, value] : t) {
     const std::string k(key.str());
     if (!valid.contains(k)) {
-      std::string list;
-      for (const auto& v : valid) {
-        if (!list.empty()) list += ", ";
-        list += v;
-      }
-      throw error(k + ": unknown key for gkt evolve; valid keys: " + list);
+      throw error(k + ": unknown key for gkt evolve; valid keys: " + join({valid.begin(), valid.end()}));
     }
   }
   if (model_node == nullptr || !model_node->is_string() ||
       (!viscoelastic && model_node->as_string()->get() != "smooth-inelastic"))
     throw error("model: gkt evolve supports \"smooth-inelastic\" (constant restitution) and \"viscoelastic\"");
   const double dim = number(t, "dimension", 3, 2, false, 3, "2 or 3");
-  if (dim != 2 && dim != 3) throw error("dimension: must be 2 or 3, got " + format_value(dim));
+  if (dim != 2 && dim != 3) throw error("dimension: must be 2 or 3, got " + format_number(dim));
   const int d = static_cast<int>(dim);
   if (viscoelastic && d != 3) throw error("dimension: \"viscoelastic\" is three-dimensional (3)");
   Rational alpha(1);
@@ -83,7 +72,7 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
       throw error("alpha: must be a number in (0, 1], got " + alpha.to_string());
   }
   const double order = number(t, "order", 3, 1, false, kMaxOrder, "an integer in [1, 12]");
-  if (order != std::floor(order)) throw error("order: must be an integer in [1, 12], got " + format_value(order));
+  if (order != std::floor(order)) throw error("order: must be an integer in [1, 12], got " + format_number(order));
   const int k_max = static_cast<int>(order) + 1;  // cumulants a_2 … a_{order+1}
   const double rtol = number(t, "rtol", 1e-8, 0, true, 0.1, "a number in (0, 0.1]");
   const double atol = number(t, "atol", 1e-12, 0, true, 1, "a number in (0, 1]");
@@ -92,7 +81,7 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   // (a2 ≤ 4/(d+2)); docs/theory.md §12.
   const double a2_lo = -8.0 / (d * (d + 2)), a2_hi = 4.0 / (d + 2);
   const double a2 = number(t, "a2", 0, a2_lo, false, a2_hi,
-                           "a number in [" + format_value(a2_lo) + ", " + format_value(a2_hi) +
+                           "a number in [" + format_number(a2_lo) + ", " + format_number(a2_hi) +
                                "] (a positive distribution at c = 0 and at the minimum of S2)");
   std::vector<double> times;
   if (const auto* list = t.get("times")) {
@@ -135,9 +124,9 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   table.columns.emplace_back("cooling_rate");
   table.numeric.assign(table.columns.size(), true);
   for (const auto& s : result.samples) {
-    std::vector<std::string> row{format_value(s.time), format_value(s.collisions), format_value(s.temperature)};
-    for (int k = 2; k <= k_max; ++k) row.push_back(format_value(s.a[static_cast<std::size_t>(k)]));
-    row.push_back(format_value(s.cooling_rate));
+    std::vector<std::string> row{format_number(s.time), format_number(s.collisions), format_number(s.temperature)};
+    for (int k = 2; k <= k_max; ++k) row.push_back(format_number(s.a[static_cast<std::size_t>(k)]));
+    row.push_back(format_number(s.cooling_rate));
     table.rows.push_back(std::move(row));
   }
   const auto& c = result.counters;

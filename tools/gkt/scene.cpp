@@ -1,5 +1,7 @@
 #include "scene.hpp"
 
+#include "table_writer.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -26,9 +28,7 @@ Rational scene_number(const toml::node& node, const std::string& key) {
   if (const auto* f = node.as_floating_point()) {
     const double x = f->get();
     if (!std::isfinite(x)) throw error(key + ": must be a finite number");
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return Rational::parse(std::string(buffer, result.ptr));
+    return Rational::parse(format_number(x));
   }
   throw error(key + ": must be a number, a list of numbers or { from = a, to = b, points = k }");
 }
@@ -115,9 +115,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   Scene scene;
   const auto* model_node = table.get("model");
   if (model_node == nullptr || !model_node->is_string()) {
-    std::string valid;
-    for (const auto& n : transport_model_names()) valid += (valid.empty() ? "" : ", ") + ("\"" + n + "\"");
-    throw error("model: required string; valid models: " + valid);
+    throw error("model: required string; valid models: " + join(transport_model_names(), "\""));
   }
   scene.model = model_node->as_string()->get();
   const auto model = make_transport_model(scene.model);  // throws on unknown names
@@ -147,9 +145,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   for (const auto& [key, value] : table) {
     const std::string k(key.str());
     if (!valid_keys.contains(k)) {
-      std::string list;
-      for (const auto& v : valid_keys) list += (list.empty() ? "" : ", ") + v;
-      throw error(k + ": unknown key for model \"" + scene.model + "\"; valid keys: " + list);
+      throw error(k + ": unknown key for model \"" + scene.model +
+                  "\"; valid keys: " + join({valid_keys.begin(), valid_keys.end()}));
     }
   }
 
@@ -161,10 +158,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (!item.is_string()) throw error("coefficients: must be a list of strings");
       const std::string name = item.as_string()->get();
       if (std::find(names.begin(), names.end(), name) == names.end()) {
-        std::string list;
-        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
         throw error("coefficients: unknown coefficient '" + name + "' for model \"" + scene.model +
-                    "\"; valid: " + list);
+                    "\"; valid: " + join(names));
       }
       scene.coefficients.push_back(name);
     }

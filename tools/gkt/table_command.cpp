@@ -10,12 +10,6 @@ namespace gkt::cli {
 
 namespace {
 
-std::string format_value(double x) {
-  char buffer[64];
-  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);  // shortest round-trip
-  return {buffer, r.ptr};
-}
-
 std::string format_error(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3g", x);
@@ -25,7 +19,7 @@ std::string format_error(double x) {
 std::string format_parameter(const Rational& v) {
   Rational integer_part;
   fmpz_tdiv_q(fmpq_numref(integer_part.raw()), fmpq_numref(v.raw()), fmpq_denref(v.raw()));
-  return integer_part == v ? v.to_string() : format_value(v.to_double());
+  return integer_part == v ? v.to_string() : format_number(v.to_double());
 }
 
 }  // namespace
@@ -103,7 +97,7 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
       if (!v.defined)
         row.emplace_back("nan");  // no solution at this order
       else
-        row.push_back(options.exact ? v.value.to_string() : format_value(v.value.to_double()));
+        row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double()));
     }
     for (const auto& v : values) row.push_back(v.defined ? format_error(v.error.to_double()) : "inf");
     row.push_back(std::to_string(values.empty() ? request.order : values.front().order));

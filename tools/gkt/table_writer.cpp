@@ -1,5 +1,6 @@
 #include "table_writer.hpp"
 
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,23 @@
 #include <nlohmann/json.hpp>
 
 namespace gkt::cli {
+
+std::string format_number(double x) {
+  char buffer[64];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return {buffer, r.ptr};
+}
+
+std::string join(const std::vector<std::string>& items, const std::string& quote) {
+  std::string out;
+  for (const auto& item : items) {
+    if (!out.empty()) out += ", ";
+    out += quote;
+    out += item;
+    out += quote;
+  }
+  return out;
+}
 
 std::string to_csv(const Table& t) {
   std::string out;

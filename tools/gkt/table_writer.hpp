@@ -15,6 +15,12 @@ struct Table {
   std::vector<bool> numeric;  ///< per column: emit as a JSON number (else a string)
 };
 
+/// Returns x in the shortest decimal that reads back as the same double (std::to_chars).
+std::string format_number(double x);
+
+/// Returns the items joined by ", ", each wrapped in `quote` (e.g. "\"" for names).
+std::string join(const std::vector<std::string>& items, const std::string& quote = "");
+
 /// Returns the table as CSV (header line, one line per row).
 std::string to_csv(const Table& t);
 /// Returns the table as JSON: {"model": …, "columns": […], "rows": [{column: value, …}, …]}.
