@@ -132,6 +132,24 @@ TEST(CliGolden, HcsFirstSonineExact) {
   EXPECT_NE(r.out.find("1/2,16/305,"), std::string::npos);
 }
 
+// The modified scheme through the CLI: exact first-Sonine values equal the closed forms printed by
+// the modified closed forms (3D, α = 1/2: κ* = 10784/6615 against the standard 86272/45135), and
+// `gkt formula` emits the modified evaluator. Golden file: regression data (tests/golden/README.md).
+TEST(CliGolden, ModifiedSchemeFirstSonine) {
+  const std::string scene = scene_path("navier_stokes_first_sonine.toml");
+  const CliRun modified = run_gkt("table " + scene + " --exact --set 'scheme=\"modified\"' --set 'alpha=[0.5]'");
+  const CliRun standard = run_gkt("table " + scene + " --exact --set 'alpha=[0.5]'");
+  ASSERT_EQ(modified.status, 0) << modified.err;
+  ASSERT_EQ(standard.status, 0) << standard.err;
+  EXPECT_NE(modified.out.find("1/2,488/391,10784/6615,"), std::string::npos);
+  EXPECT_NE(standard.out.find(",86272/45135,"), std::string::npos);
+  const CliRun formula =
+      run_gkt("formula " + scene + " --coefficient thermal_conductivity --set 'scheme=\"modified\"' --format cpp");
+  ASSERT_EQ(formula.status, 0) << formula.err;
+  EXPECT_NE(formula.out.find("modified_first_sonine_thermal_conductivity_d3"), std::string::npos);
+  expect_csv_close(modified.out, read_file(golden_path("navier_stokes_first_sonine_modified.csv")));
+}
+
 TEST(CliGolden, NavierStokesFirstSonineExact) {
   const CliRun r = run_gkt("table " + scene_path("navier_stokes_first_sonine.toml") + " --exact");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -338,6 +356,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"bad_set", kGood, "--set dimension", "--set: expected KEY=VALUE"},
         BadInput{"set_out_of_range", kGood, "--set dimension=7", "dimension: must be 2 or 3"},
         BadInput{"bad_format", kGood, "--format xml", "--format"},
+        BadInput{"unknown_scheme", "model = \"smooth-inelastic\"\nscheme = \"improved\"\norder = 1\n", "",
+                 "scheme: must be one of \"standard\", \"modified\", got \"improved\""},
         BadInput{"alpha_zero", "model = \"smooth-inelastic\"\nalpha = 0\norder = 1\n", "",
                  "alpha: must be a number in (0, 1], got 0"},
         BadInput{"alpha_above_one", "model = \"smooth-inelastic\"\nalpha = 1.5\norder = 1\n", "",

@@ -50,6 +50,36 @@ TEST(FirstSonineFormulas, EqualPublishedFormsAsRationalFunctions) {
   }
 }
 
+// Published modified first-Sonine results (Garzó, Santos & Montanero, Physica A 376, 94 (2007)):
+// the same η*, κ*, μ* structure with ν_η* = (3/(4d))(1 − α + 2d/3)(1 + α)(1 + 7a2/16) and
+//   ν_κ* = ((1+α)/d)[(d−1)/2 + (3/16)(d+8)(1−α) + (296 + 217d − 3(160 + 11d)α) a2/256].
+TEST(FirstSonineFormulas, ModifiedSchemeEqualsPublishedFormsAsRationalFunctions) {
+  const auto al = poly(RationalPolynomial::variable());
+  const auto one = k(Rational(1));
+  const auto modified = gkt::SonineScheme::modified;
+  for (int d : {2, 3}) {
+    const Rational dd(d);
+    const RationalFunction a2 = gkt::first_sonine_closed_form(d, "a2");
+    const RationalFunction zeta = gkt::first_sonine_closed_form(d, "cooling_rate");
+    const RationalFunction nu_eta = k(Rational(3) / (Rational(4) * dd)) *
+                                    (one - al + k(Rational(2) * dd / Rational(3))) * (one + al) *
+                                    (one + a2 * k(Rational(7, 16)));
+    const RationalFunction nu_kappa =
+        (one + al) * k(Rational(1) / dd) *
+        (k(Rational(d - 1, 2)) + k(Rational(3 * (d + 8), 16)) * (one - al) +
+         (k(Rational(296 + 217 * d)) - k(Rational(3 * (160 + 11 * d))) * al) * a2 * k(Rational(1, 256)));
+    const RationalFunction eta = one / (nu_eta - zeta * k(Rational(1, 2)));
+    const RationalFunction kappa =
+        k(Rational(d - 1) / dd) * (one + k(Rational(2)) * a2) / (nu_kappa - k(Rational(2)) * zeta);
+    const RationalFunction mu = (k(Rational(2)) * zeta * kappa + k(Rational(2) * Rational(d - 1) / dd) * a2) /
+                                (k(Rational(2)) * nu_kappa - k(Rational(3)) * zeta);
+    EXPECT_TRUE(gkt::first_sonine_closed_form(d, "shear_viscosity", modified).equals(eta)) << d;
+    EXPECT_TRUE(gkt::first_sonine_closed_form(d, "thermal_conductivity", modified).equals(kappa)) << d;
+    EXPECT_TRUE(gkt::first_sonine_closed_form(d, "density_heat_coefficient", modified).equals(mu)) << d;
+    EXPECT_FALSE(gkt::first_sonine_closed_form(d, "thermal_conductivity").equals(kappa)) << d;
+  }
+}
+
 // The elastic limit is exact and the closed forms have no pole on (0, 1] (α → 1 continuous).
 TEST(FirstSonineFormulas, ElasticLimitAndNoPoles) {
   for (int d : {2, 3}) {

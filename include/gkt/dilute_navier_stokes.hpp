@@ -14,6 +14,12 @@
 
 namespace gkt {
 
+/// How the unknowns of the Chapman–Enskog equations are expanded (theory.md §10.2, §10.5).
+enum class SonineScheme {
+  standard,  ///< f_M × Sonine polynomials (Maxwellian weight; [brey1998], [garzo1999])
+  modified,  ///< f_HCS × Sonine polynomials (HCS weight; [garzo2007modified])
+};
+
 /// First Sonine approximation, linear in a2, as exact polynomials in α and a2:
 /// ν = ν0(α) + a2 ν2(α) for the collision frequencies of the shear and heat modes
 /// (normalised so that both equal 1 … (d−1)/d at α = 1 as in [garzo2019]).
@@ -21,8 +27,12 @@ struct FirstSonineNavierStokes {
   RationalPolynomial nu_eta_0, nu_eta_a2;      ///< ν_η* = nu_eta_0 + a2 nu_eta_a2
   RationalPolynomial nu_kappa_0, nu_kappa_a2;  ///< ν_κ* = nu_kappa_0 + a2 nu_kappa_a2
   RationalPolynomial zeta_0, zeta_a2;          ///< ζ* = zeta_0 + a2 zeta_a2
-  /// Returns η*, κ*, μ* at exact α and a2 (standard first-Sonine formulas, theory.md (10.8)).
-  [[nodiscard]] std::vector<Rational> evaluate(const Rational& alpha, const Rational& a2) const;
+  /// Modified scheme ([garzo2007modified]): ν = nu_0 + a2 modified_nu_a2 (theory.md (10.10)).
+  RationalPolynomial modified_nu_eta_a2, modified_nu_kappa_a2;
+  /// Returns η*, κ*, μ* at exact α and a2 (first-Sonine formulas, theory.md (10.8), with the
+  /// scheme's collision frequencies).
+  [[nodiscard]] std::vector<Rational> evaluate(const Rational& alpha, const Rational& a2,
+                                               SonineScheme scheme = SonineScheme::standard) const;
 };
 
 /// Returns the first-Sonine closed forms derived by the engine for dimension d.
@@ -43,8 +53,10 @@ class DiluteNavierStokes {
   explicit DiluteNavierStokes(int dimension);
 
   /// Returns η*, κ*, μ* at Sonine order `order` (N polynomials per mode) about the HCS with
-  /// cumulants hcs_a (a[0] = 1, a[1] = 0, a[2..K]); α in (0, 1].
-  NavierStokesValues solve(const Rational& alpha, int order, const std::vector<double>& hcs_a);
+  /// cumulants hcs_a (a[0] = 1, a[1] = 0, a[2..K]); α in (0, 1]. The modified scheme multiplies
+  /// each trial polynomial by Σ_k a_k S_k (theory.md (10.9)).
+  NavierStokesValues solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
+                           SonineScheme scheme = SonineScheme::standard);
 
   [[nodiscard]] int dimension() const { return dimension_; }
 
@@ -57,8 +69,13 @@ class DiluteNavierStokes {
   struct Pieces {
     std::vector<std::vector<double>> d, m, u, u2;
     std::vector<double> flux;
+    /// product[k](q, r) = ⟨w S_k S_q S_r⟩/⟨w S_r²⟩ (w the mode's weight; S_k scalar index), the
+    /// expansion of S_k S_q in the mode's basis (modified scheme).
+    std::vector<std::vector<std::vector<double>>> product;
   };
-  void ensure_built(int order, int k_max);
+  /// Builds the exact operators for `order` trial functions plus `extra_columns` more (the
+  /// modified scheme's trial functions reach degree order + K).
+  void ensure_built(int order, int k_max, int extra_columns);
   Pieces vector_pieces_, tensor_pieces_;
   int dimension_;
   PolynomialMatrices vector_, tensor_;

@@ -1,5 +1,5 @@
 // Closed forms of the first Sonine approximation of the dilute smooth inelastic gas, as exact
-// rational functions of α derived by the engine (standard scheme, linear in a2, with the van
+// rational functions of α derived by the engine (standard or modified scheme, linear in a2, with the van
 // Noije–Ernst a2(α) inserted; docs/theory.md (9.2), (10.8)).
 #pragma once
 
@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/rational_function.hpp"
 
 namespace gkt {
@@ -17,8 +18,10 @@ inline const std::array<std::string, 5> kFirstSonineCoefficients{"a2", "cooling_
                                                                  "thermal_conductivity", "density_heat_coefficient"};
 
 /// Returns the exact closed form in α of `coefficient` (one of kFirstSonineCoefficients) for
-/// dimension 2 or 3; throws std::invalid_argument naming the valid coefficients otherwise.
-RationalFunction first_sonine_closed_form(int dimension, const std::string& coefficient);
+/// dimension 2 or 3 in the standard or modified scheme (theory.md (10.8), (10.10)); throws
+/// std::invalid_argument naming the valid coefficients otherwise.
+RationalFunction first_sonine_closed_form(int dimension, const std::string& coefficient,
+                                          SonineScheme scheme = SonineScheme::standard);
 
 /// The five first-Sonine coefficients at one α, in double.
 struct FirstSonineValues {

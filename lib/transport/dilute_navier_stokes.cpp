@@ -42,11 +42,41 @@ Poly times_x(const Poly& a, int power = 1) {
 
 /// The α-independent, exact pieces of the Galerkin systems (theory.md (10.4)–(10.7)) for one mode.
 struct ModePieces {
-  std::vector<std::vector<double>> d, m;  // D(p, q), M(p, q)
-  std::vector<std::vector<double>> u;     // source projections U(p, k) per HCS weight S_k
-  std::vector<std::vector<double>> u2;    // second source (density mode), vector only
-  std::vector<double> flux;               // ⟨x² S_q⟩_M
+  std::vector<std::vector<double>> d, m;                  // D(p, q), M(p, q)
+  std::vector<std::vector<double>> u;                     // source projections U(p, k) per HCS weight S_k
+  std::vector<std::vector<double>> u2;                    // second source (density mode), vector only
+  std::vector<double> flux;                               // ⟨x² S_q⟩_M
+  std::vector<std::vector<std::vector<double>>> product;  // [k][q][r], theory.md (10.9)
 };
+
+/// Returns product[k][q][r] = ⟨x^rank S_k S_q S_r⟩/⟨x^rank S_r²⟩ (S_k of index d/2 − 1, S_q, S_r of
+/// the mode's index): S_k S_q = Σ_r product[k][q][r] S_r (theory.md (10.9)), exact.
+std::vector<std::vector<std::vector<Rational>>> exact_product_table(int d, int rank, int n_max, int k_max) {
+  const auto s = sonine_table(sonine_twice_m(d, rank), n_max);
+  const auto w = sonine_table(sonine_twice_m(d, 0), k_max);
+  std::vector<std::vector<std::vector<Rational>>> out(
+      k_max + 1, std::vector<std::vector<Rational>>(n_max + 1, std::vector<Rational>(n_max + 1, Rational(0))));
+  std::vector<Rational> norm;
+  for (int r = 0; r <= n_max; ++r) norm.push_back(maxwell_average(d, times_x(multiply(s[r], s[r]), rank)));
+  for (int k = 0; k <= k_max; ++k)
+    for (int q = 0; q <= n_max; ++q) {
+      const Poly kq = times_x(multiply(w[k], s[q]), rank);
+      for (int r = 0; r <= std::min(n_max, q + k); ++r) out[k][q][r] = maxwell_average(d, multiply(kq, s[r])) / norm[r];
+    }
+  return out;
+}
+
+/// The same table rounded to double.
+std::vector<std::vector<std::vector<double>>> product_table(int d, int rank, int n_max, int k_max) {
+  const auto exact = exact_product_table(d, rank, n_max, k_max);
+  std::vector<std::vector<std::vector<double>>> out(exact.size());
+  for (std::size_t k = 0; k < exact.size(); ++k)
+    for (const auto& row : exact[k]) {
+      out[k].emplace_back();
+      for (const auto& v : row) out[k].back().push_back(v.to_double());
+    }
+  return out;
+}
 
 ModePieces vector_pieces(int d, int n_max, int k_max) {
   ModePieces r;
@@ -79,6 +109,7 @@ ModePieces vector_pieces(int d, int n_max, int k_max) {
     }
   }
   for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell_average(d, times_x(s[q], 2)).to_double());
+  r.product = product_table(d, 1, n_max, k_max);
   return r;
 }
 
@@ -104,14 +135,18 @@ ModePieces tensor_pieces(int d, int n_max, int k_max) {
     for (int k = 0; k <= k_max; ++k) r.u[p][k] = maxwell_average(d, multiply(src, w[k])).to_double();
   }
   for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell_average(d, times_x(s[q], 2)).to_double());
+  r.product = product_table(d, 2, n_max, k_max);
   return r;
 }
 
 }  // namespace
 
-std::vector<Rational> FirstSonineNavierStokes::evaluate(const Rational& alpha, const Rational& a2) const {
-  const Rational nu_eta = nu_eta_0.evaluate(alpha) + a2 * nu_eta_a2.evaluate(alpha);
-  const Rational nu_kappa = nu_kappa_0.evaluate(alpha) + a2 * nu_kappa_a2.evaluate(alpha);
+std::vector<Rational> FirstSonineNavierStokes::evaluate(const Rational& alpha, const Rational& a2,
+                                                        SonineScheme scheme) const {
+  const bool modified = scheme == SonineScheme::modified;
+  const Rational nu_eta = nu_eta_0.evaluate(alpha) + a2 * (modified ? modified_nu_eta_a2 : nu_eta_a2).evaluate(alpha);
+  const Rational nu_kappa =
+      nu_kappa_0.evaluate(alpha) + a2 * (modified ? modified_nu_kappa_a2 : nu_kappa_a2).evaluate(alpha);
   const Rational zeta = zeta_0.evaluate(alpha) + a2 * zeta_a2.evaluate(alpha);
   const Rational d_ratio = nu_kappa_0.evaluate(Rational(1));  // (d − 1)/d
   // theory.md (10.8): η* = 1/(ν_η − ζ/2), κ* = ((d−1)/d)(1 + 2a2)/(ν_κ − 2ζ),
@@ -125,8 +160,8 @@ std::vector<Rational> FirstSonineNavierStokes::evaluate(const Rational& alpha, c
 
 FirstSonineNavierStokes first_sonine_navier_stokes(int dimension) {
   const auto alpha = RationalPolynomial::variable();
-  const auto vec = hcs_linearized_operator_matrices<RationalPolynomial>(dimension, alpha, 1, 1, 2);
-  const auto ten = hcs_linearized_operator_matrices<RationalPolynomial>(dimension, alpha, 2, 0, 2);
+  const auto vec = hcs_linearized_operator_matrices<RationalPolynomial>(dimension, alpha, 1, 3, 2);
+  const auto ten = hcs_linearized_operator_matrices<RationalPolynomial>(dimension, alpha, 2, 2, 2);
   const auto hcs = first_sonine_hcs(dimension);
   FirstSonineNavierStokes out;
   const Rational inv_dm1(1, static_cast<unsigned long>(dimension - 1)), inv_d(1, static_cast<unsigned long>(dimension));
@@ -136,6 +171,16 @@ FirstSonineNavierStokes first_sonine_navier_stokes(int dimension) {
   out.nu_kappa_a2 = vec[2](1, 1) * RationalPolynomial(inv_d);
   out.zeta_0 = hcs.cooling_rate_0;
   out.zeta_a2 = hcs.cooling_rate_a2;
+  // Modified scheme (theory.md (10.10)): the trial function f_M(1 + a2 S_2) Y S_q is expanded as
+  // f_M Σ_r (δ_qr + a2 P_qr) Y S_r (P = exact_product_table[2]; the vector mode drops r = 0, the
+  // momentum), and ν is normalised by the trial's own weight 1 + a2 P_qq; linear in a2.
+  const auto pv = exact_product_table(dimension, 1, 3, 2), pt = exact_product_table(dimension, 2, 2, 2);
+  RationalPolynomial eta_a2 = out.nu_eta_a2 - out.nu_eta_0 * RationalPolynomial(pt[2][0][0]);
+  for (int r = 0; r <= 2; ++r) eta_a2 = eta_a2 + ten[0](0, r) * RationalPolynomial(inv_dm1 * pt[2][0][r]);
+  out.modified_nu_eta_a2 = eta_a2;
+  RationalPolynomial kappa_a2 = out.nu_kappa_a2 - out.nu_kappa_0 * RationalPolynomial(pv[2][1][1]);
+  for (int r = 1; r <= 3; ++r) kappa_a2 = kappa_a2 + vec[0](1, r) * RationalPolynomial(inv_d * pv[2][1][r]);
+  out.modified_nu_kappa_a2 = kappa_a2;
   return out;
 }
 
@@ -144,7 +189,7 @@ DiluteNavierStokes::DiluteNavierStokes(int dimension) : dimension_(dimension) {
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
 }
 
-void DiluteNavierStokes::ensure_built(int order, int k_max) {
+void DiluteNavierStokes::ensure_built(int order, int k_max, int extra_columns) {
   const auto alpha = RationalPolynomial::variable();
   auto build = [&](PolynomialMatrices& target, int rank, int n_max) {
     if (target.n_max >= n_max && target.k_max >= k_max) return;
@@ -164,15 +209,15 @@ void DiluteNavierStokes::ensure_built(int order, int k_max) {
     target.k_max = k;
   };
   const int vector_before = vector_.n_max, tensor_before = tensor_.n_max, k_before = vector_.k_max;
-  build(vector_, 1, order);      // S_1 … S_N (index 0 is momentum)
-  build(tensor_, 2, order - 1);  // S_0 … S_{N−1}
+  build(vector_, 1, order + extra_columns);      // S_1 … S_N (index 0 is momentum)
+  build(tensor_, 2, order - 1 + extra_columns);  // S_0 … S_{N−1}
   if (vector_.n_max != vector_before || vector_.k_max != k_before) {
     const ModePieces v = vector_pieces(dimension_, vector_.n_max, vector_.k_max);
-    vector_pieces_ = {v.d, v.m, v.u, v.u2, v.flux};
+    vector_pieces_ = {v.d, v.m, v.u, v.u2, v.flux, v.product};
   }
   if (tensor_.n_max != tensor_before || tensor_.k_max != k_before) {
     const ModePieces t = tensor_pieces(dimension_, tensor_.n_max, tensor_.k_max);
-    tensor_pieces_ = {t.d, t.m, t.u, t.u2, t.flux};
+    tensor_pieces_ = {t.d, t.m, t.u, t.u2, t.flux, t.product};
   }
   if (energy_k_ < k_max) {
     const int k = std::max({k_max + 2, energy_k_ + 4, 1});
@@ -183,12 +228,15 @@ void DiluteNavierStokes::ensure_built(int order, int k_max) {
   }
 }
 
-NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a) {
+NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
+                                             SonineScheme scheme) {
   if (order < 1) throw std::invalid_argument("order: must be >= 1");
   if (alpha.sign() <= 0 || alpha > Rational(1))
     throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_string());
   const int k_max = static_cast<int>(hcs_a.size()) - 1;
-  ensure_built(order, k_max);
+  const bool modified = scheme == SonineScheme::modified;
+  const int extra = modified ? k_max : 0;
+  ensure_built(order, k_max, extra);
   const int d = dimension_;
   const long double x = alpha.to_double();
 
@@ -200,60 +248,71 @@ NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, c
       r1 += hcs_a[k] * hcs_a[l] * detail::evaluate((*energy_)[static_cast<std::size_t>(k) * ne + l], x);
   const double zeta_term = -2.0 / d * r1;
 
-  auto operator_matrix = [&](const PolynomialMatrices& pm, int first, int n) {
-    Eigen::MatrixXd l = Eigen::MatrixXd::Zero(n, n);
+  // Rows: test functions first … first+n−1; columns: basis functions first … first+cols−1.
+  auto operator_matrix = [&](const PolynomialMatrices& pm, int first, int n, int cols) {
+    Eigen::MatrixXd l = Eigen::MatrixXd::Zero(n, cols);
     for (int k = 0; k <= k_max; ++k)
       for (int p = 0; p < n; ++p)
-        for (int q = 0; q < n; ++q) l(p, q) += hcs_a[k] * detail::evaluate(pm.by_weight[k](first + p, first + q), x);
+        for (int q = 0; q < cols; ++q) l(p, q) += hcs_a[k] * detail::evaluate(pm.by_weight[k](first + p, first + q), x);
     return l;
+  };
+  auto block = [](const std::vector<std::vector<double>>& m, int first, int n, int cols) {
+    Eigen::MatrixXd b(n, cols);
+    for (int p = 0; p < n; ++p)
+      for (int q = 0; q < cols; ++q) b(p, q) = m[first + p][first + q];
+    return b;
+  };
+  // W(q, c): trial function q in the Maxwellian basis (theory.md (10.9)); identity when standard.
+  // The modified vector trials drop the momentum component c f_M (c = first − 1), as
+  // [garzo2007modified] do, so that they carry no momentum.
+  auto trial_weights = [&](const Pieces& pieces, int first, int n, int cols) {
+    if (!modified) return Eigen::MatrixXd(Eigen::MatrixXd::Identity(n, n));
+    Eigen::MatrixXd w = Eigen::MatrixXd::Zero(n, cols);
+    for (int k = 0; k <= k_max; ++k)
+      for (int q = 0; q < n; ++q)
+        for (int c = 0; c < cols; ++c) w(q, c) += hcs_a[k] * pieces.product[k][first + q][first + c];
+    return w;
+  };
+  auto flux_vector = [](const std::vector<double>& f, int first, int cols) {
+    Eigen::VectorXd v(cols);
+    for (int c = 0; c < cols; ++c) v(c) = f[first + c];
+    return v;
   };
 
   NavierStokesValues out;
+  const int n = order, cols = order + extra;
   {  // heat and density modes: S_1 … S_N
-    const int n = order;
     const Pieces& v = vector_pieces_;
-    const Eigen::MatrixXd l = operator_matrix(vector_, 1, n);
-    Eigen::MatrixXd a_matrix(n, n), b_matrix(n, n), mass(n, n);
-    Eigen::VectorXd sa(n), sb(n);
-    for (int p = 0; p < n; ++p) {
-      for (int q = 0; q < n; ++q) {
-        a_matrix(p, q) = l(p, q) + zeta_term * (v.d[p + 1][q + 1] - 0.5 * v.m[p + 1][q + 1]);
-        b_matrix(p, q) = l(p, q) + zeta_term * v.d[p + 1][q + 1];
-        mass(p, q) = v.m[p + 1][q + 1];
-      }
-      sa(p) = 0;
-      sb(p) = 0;
+    const Eigen::MatrixXd w = trial_weights(v, 1, n, cols);
+    const Eigen::MatrixXd l = operator_matrix(vector_, 1, n, cols) * w.transpose();
+    const Eigen::MatrixXd dm = block(v.d, 1, n, cols) * w.transpose();
+    const Eigen::MatrixXd mass = block(v.m, 1, n, cols) * w.transpose();
+    const Eigen::MatrixXd a_matrix = l + zeta_term * (dm - 0.5 * mass);
+    const Eigen::MatrixXd b_matrix = l + zeta_term * dm;
+    Eigen::VectorXd sa = Eigen::VectorXd::Zero(n), sb = Eigen::VectorXd::Zero(n);
+    for (int p = 0; p < n; ++p)
       for (int k = 0; k <= k_max; ++k) {
         sa(p) += hcs_a[k] * v.u[p + 1][k];
         sb(p) += hcs_a[k] * v.u2[p + 1][k];
       }
-    }
     const Eigen::VectorXd alpha_t = a_matrix.partialPivLu().solve(sa);
     const Eigen::VectorXd beta_t = b_matrix.partialPivLu().solve(sb + zeta_term * (mass * alpha_t));
+    const Eigen::VectorXd flux = w * flux_vector(v.flux, 1, cols);
     const double reduce = -16.0 * (d - 1) / (static_cast<double>(d) * d * (d + 2) * (d + 2));  // (10.6)
-    double kappa = 0, mu = 0;
-    for (int q = 0; q < n; ++q) {
-      kappa += alpha_t(q) * v.flux[q + 1];
-      mu += beta_t(q) * v.flux[q + 1];
-    }
-    out.thermal_conductivity = reduce * kappa;
-    out.density_heat_coefficient = reduce * mu;
+    out.thermal_conductivity = reduce * alpha_t.dot(flux);
+    out.density_heat_coefficient = reduce * beta_t.dot(flux);
   }
   {  // shear mode: S_0 … S_{N−1}
-    const int n = order;
     const Pieces& t = tensor_pieces_;
-    const Eigen::MatrixXd l = operator_matrix(tensor_, 0, n);
-    Eigen::MatrixXd c_matrix(n, n);
-    Eigen::VectorXd sc(n);
-    for (int p = 0; p < n; ++p) {
-      for (int q = 0; q < n; ++q) c_matrix(p, q) = l(p, q) + zeta_term * t.d[p][q];
-      sc(p) = 0;
+    const Eigen::MatrixXd w = trial_weights(t, 0, n, cols);
+    const Eigen::MatrixXd c_matrix =
+        operator_matrix(tensor_, 0, n, cols) * w.transpose() + zeta_term * block(t.d, 0, n, cols) * w.transpose();
+    Eigen::VectorXd sc = Eigen::VectorXd::Zero(n);
+    for (int p = 0; p < n; ++p)
       for (int k = 0; k <= k_max; ++k) sc(p) += hcs_a[k] * t.u[p][k];
-    }
     const Eigen::VectorXd gamma_t = c_matrix.partialPivLu().solve(sc);
-    double eta = 0;
-    for (int q = 0; q < n; ++q) eta += gamma_t(q) * t.flux[q];
-    out.shear_viscosity = -8.0 / (d * (d + 2.0) * (d + 2.0)) * eta;  // (10.7)
+    const Eigen::VectorXd flux = w * flux_vector(t.flux, 0, cols);
+    out.shear_viscosity = -8.0 / (d * (d + 2.0) * (d + 2.0)) * gamma_t.dot(flux);  // (10.7)
   }
   return out;
 }

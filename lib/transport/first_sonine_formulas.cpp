@@ -13,7 +13,7 @@ RationalFunction constant(const Rational& c) { return RationalFunction{RationalP
 RationalFunction of(const RationalPolynomial& p) { return RationalFunction{p, RationalPolynomial(1L)}; }
 }  // namespace
 
-RationalFunction first_sonine_closed_form(int dimension, const std::string& coefficient) {
+RationalFunction first_sonine_closed_form(int dimension, const std::string& coefficient, SonineScheme scheme) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
   const auto hcs = first_sonine_hcs(dimension);
@@ -22,8 +22,9 @@ RationalFunction first_sonine_closed_form(int dimension, const std::string& coef
   const auto ns = first_sonine_navier_stokes(dimension);
   const RationalFunction& a2 = hcs.a2;
   // theory.md (10.8) with ν = ν0 + a2 ν2, ζ = ζ0 + a2 ζ2 (all polynomials in α).
-  const RationalFunction nu_eta = of(ns.nu_eta_0) + a2 * of(ns.nu_eta_a2);
-  const RationalFunction nu_kappa = of(ns.nu_kappa_0) + a2 * of(ns.nu_kappa_a2);
+  const bool modified = scheme == SonineScheme::modified;
+  const RationalFunction nu_eta = of(ns.nu_eta_0) + a2 * of(modified ? ns.modified_nu_eta_a2 : ns.nu_eta_a2);
+  const RationalFunction nu_kappa = of(ns.nu_kappa_0) + a2 * of(modified ? ns.modified_nu_kappa_a2 : ns.nu_kappa_a2);
   const RationalFunction zeta = of(ns.zeta_0) + a2 * of(ns.zeta_a2);
   const Rational d_ratio(dimension - 1, static_cast<unsigned long>(dimension));
   if (coefficient == "shear_viscosity") return constant(Rational(1)) / (nu_eta - constant(Rational(1, 2)) * zeta);

@@ -33,7 +33,8 @@ class SmoothInelasticModel final : public TransportModel {
   [[nodiscard]] std::string name() const override { return "smooth-inelastic"; }
   [[nodiscard]] std::string description() const override {
     return "smooth inelastic hard spheres (d = 3) or disks (d = 2), constant restitution alpha: "
-           "homogeneous cooling state and dilute Navier-Stokes coefficients (standard Sonine scheme)";
+           "homogeneous cooling state and dilute Navier-Stokes coefficients (standard or modified Sonine "
+           "scheme)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     std::vector<std::string> names;
@@ -74,7 +75,16 @@ class SmoothInelasticModel final : public TransportModel {
              true,
              Rational(0),
              "cumulant scheme of the homogeneous cooling state",
-             {"nonlinear", "linear"}}};
+             {"nonlinear", "linear"}},
+            {"scheme",
+             ParameterSpec::Kind::choice,
+             Rational(0),
+             Rational(0),
+             true,
+             true,
+             Rational(0),
+             "Sonine trial-function weight of the Navier-Stokes coefficients: Maxwellian or HCS",
+             {"standard", "modified"}}};
   }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }
 
@@ -87,6 +97,9 @@ class SmoothInelasticModel final : public TransportModel {
     specs[1].check(alpha);
     const std::string scheme = point.choice("hcs", "nonlinear");
     specs[2].check(scheme);
+    const std::string weight = point.choice("scheme", "standard");
+    specs[3].check(weight);
+    const SonineScheme sonine = weight == "modified" ? SonineScheme::modified : SonineScheme::standard;
     const int d = dim == Rational(2) ? 2 : 3;
     auto& hcs = solvers_[static_cast<std::size_t>(d - 2)];
     if (!hcs) hcs = std::make_unique<HomogeneousCoolingState>(d);
@@ -100,7 +113,7 @@ class SmoothInelasticModel final : public TransportModel {
     for (const auto& c : coefficients) {
       const int transport = transport_index(c);
       if (transport >= 0) {
-        out.push_back(transport_value(*hcs, d, alpha, scheme, transport, order));
+        out.push_back(transport_value(*hcs, d, alpha, scheme, sonine, transport, order));
         continue;
       }
       const int k = c == "cooling_rate" ? -1 : cumulant_index(c);
@@ -154,22 +167,23 @@ class SmoothInelasticModel final : public TransportModel {
     return which == 3 ? s.shear_wavenumber : which == 4 ? s.heat_wavenumber : s.critical_length;
   }
   CoefficientValue transport_value(HomogeneousCoolingState& hcs, int d, const Rational& alpha,
-                                   const std::string& scheme, int which, const OrderRequest& order) {
+                                   const std::string& scheme, SonineScheme sonine, int which,
+                                   const OrderRequest& order) {
     if (scheme == "linear") {
       // Standard first Sonine, linear in a2 (theory.md (10.8)): exact for η*, κ*, μ* (the stability
       // values take square roots); error against orders 2, 3.
       auto& fs = first_sonine_[static_cast<std::size_t>(d - 2)];
       if (!fs) fs = first_sonine_navier_stokes(d);
       const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
-      const auto v = fs->evaluate(alpha, a2);
+      const auto v = fs->evaluate(alpha, a2, sonine);
       const Rational zeta = fs->zeta_0.evaluate(alpha) + a2 * fs->zeta_a2.evaluate(alpha);
       const bool exact = which < 3;
       const Rational value =
           exact ? v[static_cast<std::size_t>(which)]
                 : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()}, which, d,
                                                        zeta.to_double()));
-      const auto* n2 = navier_stokes(hcs, d, alpha, 2);
-      const auto* n3 = navier_stokes(hcs, d, alpha, 3);
+      const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine);
+      const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine);
       if (n2 == nullptr || n3 == nullptr) return {value, Rational(0), 1, false, exact, true};
       const TruncationEstimate e = estimate_truncation(
           value, Rational::from_double(pick_transport(*n2, which, d, nonlinear(hcs, d, alpha, 3).cooling_rate)),
@@ -179,9 +193,9 @@ class SmoothInelasticModel final : public TransportModel {
     return choose_order(order, max_order(), [&](int n) {
       OrderValue v;
       v.exact = false;
-      const auto* s0 = navier_stokes(hcs, d, alpha, n);
-      const auto* s1 = navier_stokes(hcs, d, alpha, n + 1);
-      const auto* s2 = navier_stokes(hcs, d, alpha, n + 2);
+      const auto* s0 = navier_stokes(hcs, d, alpha, n, sonine);
+      const auto* s1 = navier_stokes(hcs, d, alpha, n + 1, sonine);
+      const auto* s2 = navier_stokes(hcs, d, alpha, n + 2, sonine);
       v.defined = s0 != nullptr && s1 != nullptr && s2 != nullptr;
       if (!v.defined) return v;
       v.estimate = estimate_truncation(
@@ -192,9 +206,10 @@ class SmoothInelasticModel final : public TransportModel {
     });
   }
   /// η*, κ*, μ* at Sonine order N about the nonlinear HCS with a_2..a_{N+1}; null if that HCS has
-  /// no solution. Memoised per (d, α, N).
-  const NavierStokesValues* navier_stokes(HomogeneousCoolingState& hcs, int d, const Rational& alpha, int n) {
-    auto key = std::make_tuple(d, alpha.to_string(), n);
+  /// no solution. Memoised per (d, α, N, scheme).
+  const NavierStokesValues* navier_stokes(HomogeneousCoolingState& hcs, int d, const Rational& alpha, int n,
+                                          SonineScheme sonine) {
+    auto key = std::make_tuple(d, alpha.to_string(), 2 * n + (sonine == SonineScheme::modified ? 1 : 0));
     const auto it = ns_memo_.find(key);
     if (it != ns_memo_.end()) return it->second ? &*it->second : nullptr;
     const HcsState& state = nonlinear(hcs, d, alpha, n + 1);
@@ -202,7 +217,7 @@ class SmoothInelasticModel final : public TransportModel {
     if (state.solved) {
       auto& solver = ns_[static_cast<std::size_t>(d - 2)];
       if (!solver) solver = std::make_unique<DiluteNavierStokes>(d);
-      value = solver->solve(alpha, n, state.a);
+      value = solver->solve(alpha, n, state.a, sonine);
     }
     const auto& stored = ns_memo_.emplace(std::move(key), value).first->second;
     return stored ? &*stored : nullptr;

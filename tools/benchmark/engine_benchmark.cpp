@@ -109,25 +109,28 @@ void FirstSonineFullSetGenerated(benchmark::State& state) {
 BENCHMARK(FirstSonineFullSetGenerated)->Unit(benchmark::kNanosecond);
 
 /// 10⁴-point α sweep (α from 0.5 to 1) of all smooth-inelastic coefficients at order 4 through
-/// the model interface (nonlinear HCS a2…a5 and η*, κ*, μ* with error estimates), matrices reused.
+/// the model interface (nonlinear HCS a2…a5 and η*, κ*, μ* with error estimates), matrices reused;
+/// second argument 0 = standard, 1 = modified Sonine scheme.
 void SmoothInelasticSweepOrder4(benchmark::State& state) {
   const std::vector<std::string> all{
       "a2", "a3", "cooling_rate", "shear_viscosity", "thermal_conductivity", "density_heat_coefficient"};
   auto model = gkt::make_transport_model("smooth-inelastic");
   gkt::OrderRequest request;
   request.order = 4;
-  (void)model->evaluate({{{"alpha", Rational(1, 2)}}, {}}, all, request);  // build the matrices once
+  const std::map<std::string, std::string> scheme{{"scheme", state.range(1) == 1 ? "modified" : "standard"}};
+  (void)model->evaluate({{{"alpha", Rational(1, 2)}}, scheme}, all, request);  // build the matrices once
   const long points = state.range(0);
   for (auto _ : state)
     for (long k = 0; k < points; ++k)
       benchmark::DoNotOptimize(model->evaluate(
-          {{{"alpha", Rational(1, 2) + Rational(k, static_cast<unsigned long>(2 * points))}}, {}}, all, request));
+          {{{"alpha", Rational(1, 2) + Rational(k, static_cast<unsigned long>(2 * points))}}, scheme}, all, request));
   state.counters["points"] = static_cast<double>(points);
 }
-BENCHMARK(SmoothInelasticSweepOrder4)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(SmoothInelasticSweepOrder4)->Args({1000, 0})->Args({1000, 1})->Unit(benchmark::kMillisecond);
 
 /// Warm time for all smooth-inelastic coefficients at order N and α ∈ {0.9, 0.5, 0.2} (matrices
-/// already built; every call solves the HCS and the Navier–Stokes systems anew for a new α).
+/// already built; every call solves the HCS and the Navier–Stokes systems anew for a new α); third
+/// argument 0 = standard, 1 = modified scheme.
 void SmoothInelasticOrderWarm(benchmark::State& state) {
   const Rational alphas[] = {Rational(9, 10), Rational(1, 2), Rational(1, 5)};
   const Rational alpha = alphas[state.range(0)];
@@ -137,13 +140,14 @@ void SmoothInelasticOrderWarm(benchmark::State& state) {
   auto model = gkt::make_transport_model("smooth-inelastic");
   gkt::OrderRequest request;
   request.order = order;
-  (void)model->evaluate({{{"alpha", Rational(1, 3)}}, {}}, all, request);  // build
+  const std::map<std::string, std::string> scheme{{"scheme", state.range(2) == 1 ? "modified" : "standard"}};
+  (void)model->evaluate({{{"alpha", Rational(1, 3)}}, scheme}, all, request);  // build
   long k = 0;
   for (auto _ : state)  // perturb α in the 12th digit so nothing is memoised
     benchmark::DoNotOptimize(
-        model->evaluate({{{"alpha", alpha - Rational(++k % 1000, 1000000000000UL)}}, {}}, all, request));
+        model->evaluate({{{"alpha", alpha - Rational(++k % 1000, 1000000000000UL)}}, scheme}, all, request));
 }
-BENCHMARK(SmoothInelasticOrderWarm)->ArgsProduct({{0, 1, 2}, {1, 2, 4, 6, 8}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(SmoothInelasticOrderWarm)->ArgsProduct({{0, 1, 2}, {1, 2, 4, 6, 8}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
 /// Cold: a new model per iteration at order N, α = 0.9 (one-time symbolic builds included).
 void SmoothInelasticOrderCold(benchmark::State& state) {
