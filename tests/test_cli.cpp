@@ -150,6 +150,19 @@ TEST(CliGolden, ModifiedSchemeFirstSonine) {
   expect_csv_close(modified.out, read_file(golden_path("navier_stokes_first_sonine_modified.csv")));
 }
 
+// Dense gas through the CLI (regression data, tests/golden/README.md): p* and ζ* = χ ζ*_dilute are
+// exact rationals (3D, α = 1/2, φ = 3/10).
+TEST(CliGolden, EnskogFirstSonine) {
+  const CliRun r = run_gkt("table " + scene_path("enskog_first_sonine.toml"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("enskog_first_sonine.csv")));
+  const CliRun exact = run_gkt("table " + scene_path("enskog_first_sonine.toml") +
+                               " --exact --set 'coefficients=[\"pressure\", \"cooling_rate\"]' --set 'alpha=[0.5]'");
+  ASSERT_EQ(exact.status, 0) << exact.err;
+  // χ(3/10) = (17/20)/(343/1000) = 850/343; p* = 1 + 2 (3/2)(3/10) χ = 1108/343.
+  EXPECT_NE(exact.out.find("1/2,3/10,1108/343,"), std::string::npos) << exact.out;
+}
+
 TEST(CliGolden, NavierStokesFirstSonineExact) {
   const CliRun r = run_gkt("table " + scene_path("navier_stokes_first_sonine.toml") + " --exact");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -356,6 +369,20 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"bad_set", kGood, "--set dimension", "--set: expected KEY=VALUE"},
         BadInput{"set_out_of_range", kGood, "--set dimension=7", "dimension: must be 2 or 3"},
         BadInput{"bad_format", kGood, "--format xml", "--format"},
+        BadInput{"packing_fraction_3d", "model = \"smooth-inelastic\"\npacking_fraction = 0.5001\norder = 1\n", "",
+                 "packing_fraction: must be a number in [0, 1/2] for dimension = 3, got 5001/10000"},
+        BadInput{"packing_fraction_2d",
+                 "model = \"smooth-inelastic\"\ndimension = 2\npacking_fraction = 0.71\norder = 1\n", "",
+                 "packing_fraction: must be a number in [0, 7/10]"},
+        BadInput{"packing_fraction_negative", "model = \"smooth-inelastic\"\npacking_fraction = -0.1\norder = 1\n", "",
+                 "packing_fraction: must be a number in [0, 7/10], got -1/10"},
+        BadInput{"unknown_pair_correlation",
+                 "model = \"smooth-inelastic\"\npacking_fraction = 0.2\npair_correlation = \"py\"\norder = 1\n", "",
+                 "pair_correlation: must be one of \"carnahan-starling\", got \"py\""},
+        BadInput{
+            "dense_stability",
+            "model = \"smooth-inelastic\"\npacking_fraction = 0.2\norder = 1\ncoefficients = [\"critical_length\"]\n",
+            "", "coefficients: critical_length is computed for the dilute gas only"},
         BadInput{"unknown_scheme", "model = \"smooth-inelastic\"\nscheme = \"improved\"\norder = 1\n", "",
                  "scheme: must be one of \"standard\", \"modified\", got \"improved\""},
         BadInput{"alpha_zero", "model = \"smooth-inelastic\"\nalpha = 0\norder = 1\n", "",

@@ -43,6 +43,17 @@ struct NavierStokesValues {
   double shear_viscosity = 0;
   double thermal_conductivity = 0;
   double density_heat_coefficient = 0;
+  double bulk_viscosity = 0;  ///< /η0; zero in the dilute gas (theory.md (15.9))
+};
+
+/// The dense (Enskog) gas at one density: packing fraction φ, contact value χ of the pair
+/// correlation and φ dχ/dφ (theory.md §15). The default is the dilute (Boltzmann) gas.
+struct EnskogState {
+  double packing_fraction = 0;
+  double chi = 1;
+  double phi_dchi = 0;
+  /// Returns p* = p/(nT) = 1 + 2^{d−2}(1+α)φχ (theory.md (15.5)).
+  [[nodiscard]] double pressure(int dimension, double alpha) const;
 };
 
 /// Solver for orders N ≥ 1: the operator about the HCS is built once per dimension as exact
@@ -56,7 +67,7 @@ class DiluteNavierStokes {
   /// cumulants hcs_a (a[0] = 1, a[1] = 0, a[2..K]); α in (0, 1]. The modified scheme multiplies
   /// each trial polynomial by Σ_k a_k S_k (theory.md (10.9)).
   NavierStokesValues solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
-                           SonineScheme scheme = SonineScheme::standard);
+                           SonineScheme scheme = SonineScheme::standard, const EnskogState& dense = {});
 
   [[nodiscard]] int dimension() const { return dimension_; }
 
@@ -68,6 +79,7 @@ class DiluteNavierStokes {
   /// The α-independent Galerkin pieces (theory.md (10.5)) at the built sizes, in double.
   struct Pieces {
     std::vector<std::vector<double>> d, m, u, u2;
+    std::vector<std::vector<double>> u_pressure;  ///< ⟨((d/2)S_p + xS_p') S_k⟩: the part ∝ p* (vector)
     std::vector<double> flux;
     /// product[k](q, r) = ⟨w S_k S_q S_r⟩/⟨w S_r²⟩ (w the mode's weight; S_k scalar index), the
     /// expansion of S_k S_q in the mode's basis (modified scheme).
@@ -75,7 +87,14 @@ class DiluteNavierStokes {
   };
   /// Builds the exact operators for `order` trial functions plus `extra_columns` more (the
   /// modified scheme's trial functions reach degree order + K).
-  void ensure_built(int order, int k_max, int extra_columns);
+  void ensure_built(int order, int k_max, int extra_columns, bool dense);
+  /// Collisional-transfer tensors (theory.md §15) as α-polynomials, built on the first dense call.
+  struct DensePieces {
+    int n_max = -1, k_max = -1;
+    std::vector<std::vector<long double>> shear_source, shear_flux, shear_gradient, heat_source_temperature,
+        heat_source_density, heat_flux, heat_gradient_temperature, heat_gradient_density;
+  };
+  DensePieces dense_;
   Pieces vector_pieces_, tensor_pieces_;
   int dimension_;
   PolynomialMatrices vector_, tensor_;

@@ -1,11 +1,13 @@
 #include "gkt/dilute_navier_stokes.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include <Eigen/Dense>
 
+#include "gkt/collisional_transfer.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "gkt/linearized_operator.hpp"
 #include "gkt/nonlinear_collision_moments.hpp"
@@ -45,6 +47,7 @@ struct ModePieces {
   std::vector<std::vector<double>> d, m;                  // D(p, q), M(p, q)
   std::vector<std::vector<double>> u;                     // source projections U(p, k) per HCS weight S_k
   std::vector<std::vector<double>> u2;                    // second source (density mode), vector only
+  std::vector<std::vector<double>> u_pressure;            // ⟨((d/2)S_p + xS_p') S_k⟩ (vector; ∝ p*)
   std::vector<double> flux;                               // ⟨x² S_q⟩_M
   std::vector<std::vector<std::vector<double>>> product;  // [k][q][r], theory.md (10.9)
 };
@@ -97,15 +100,18 @@ ModePieces vector_pieces(int d, int n_max, int k_max) {
   }
   r.u.assign(n_max + 1, std::vector<double>(k_max + 1));
   r.u2 = r.u;
+  r.u_pressure = r.u;
   for (int p = 0; p <= n_max; ++p) {
     const Poly sp = s[p], spp = derivative(s[p]);
     // heat: (d/2)S_p + xS_p' − xS_p − x²S_p';  density: (d/2)S_p + xS_p' − xS_p
     Poly density = add(add(Poly{}, sp, half_d), times_x(spp));
     density = add(density, times_x(sp), Rational(-1));
     const Poly heat = add(density, times_x(spp, 2), Rational(-1));
+    const Poly pressure = add(add(Poly{}, sp, half_d), times_x(spp));
     for (int k = 0; k <= k_max; ++k) {
       r.u[p][k] = maxwell_average(d, multiply(heat, w[k])).to_double();
       r.u2[p][k] = maxwell_average(d, multiply(density, w[k])).to_double();
+      r.u_pressure[p][k] = maxwell_average(d, multiply(pressure, w[k])).to_double();
     }
   }
   for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell_average(d, times_x(s[q], 2)).to_double());
@@ -189,7 +195,7 @@ DiluteNavierStokes::DiluteNavierStokes(int dimension) : dimension_(dimension) {
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
 }
 
-void DiluteNavierStokes::ensure_built(int order, int k_max, int extra_columns) {
+void DiluteNavierStokes::ensure_built(int order, int k_max, int extra_columns, bool dense) {
   const auto alpha = RationalPolynomial::variable();
   auto build = [&](PolynomialMatrices& target, int rank, int n_max) {
     if (target.n_max >= n_max && target.k_max >= k_max) return;
@@ -213,11 +219,31 @@ void DiluteNavierStokes::ensure_built(int order, int k_max, int extra_columns) {
   build(tensor_, 2, order - 1 + extra_columns);  // S_0 … S_{N−1}
   if (vector_.n_max != vector_before || vector_.k_max != k_before) {
     const ModePieces v = vector_pieces(dimension_, vector_.n_max, vector_.k_max);
-    vector_pieces_ = {v.d, v.m, v.u, v.u2, v.flux, v.product};
+    vector_pieces_ = {v.d, v.m, v.u, v.u2, v.u_pressure, v.flux, v.product};
   }
   if (tensor_.n_max != tensor_before || tensor_.k_max != k_before) {
     const ModePieces t = tensor_pieces(dimension_, tensor_.n_max, tensor_.k_max);
-    tensor_pieces_ = {t.d, t.m, t.u, t.u2, t.flux, t.product};
+    tensor_pieces_ = {t.d, t.m, t.u, t.u2, t.u_pressure, t.flux, t.product};
+  }
+  if (dense && (dense_.n_max < vector_.n_max || dense_.k_max < k_max)) {
+    const int n = vector_.n_max, k = std::max(k_max, vector_.k_max);
+    const auto c = collisional_transfer_moments<RationalPolynomial>(dimension_, alpha, n, k);
+    auto convert = [](const std::vector<RationalPolynomial>& v) {
+      std::vector<std::vector<long double>> out;
+      out.reserve(v.size());
+      for (const auto& p : v) out.push_back(detail::to_alpha_polynomial(p));
+      return out;
+    };
+    dense_ = {n,
+              k,
+              convert(c.shear_source),
+              convert(c.shear_flux),
+              convert(c.shear_gradient),
+              convert(c.heat_source_temperature),
+              convert(c.heat_source_density),
+              convert(c.heat_flux),
+              convert(c.heat_gradient_temperature),
+              convert(c.heat_gradient_density)};
   }
   if (energy_k_ < k_max) {
     const int k = std::max({k_max + 2, energy_k_ + 4, 1});
@@ -228,17 +254,23 @@ void DiluteNavierStokes::ensure_built(int order, int k_max, int extra_columns) {
   }
 }
 
+double EnskogState::pressure(int dimension, double alpha) const {
+  return 1.0 + std::pow(2.0, dimension - 2) * (1.0 + alpha) * packing_fraction * chi;  // (15.5)
+}
+
 NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
-                                             SonineScheme scheme) {
+                                             SonineScheme scheme, const EnskogState& dense) {
   if (order < 1) throw std::invalid_argument("order: must be >= 1");
   if (alpha.sign() <= 0 || alpha > Rational(1))
     throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_string());
   const int k_max = static_cast<int>(hcs_a.size()) - 1;
   const bool modified = scheme == SonineScheme::modified;
+  const bool is_dense = dense.packing_fraction > 0;
   const int extra = modified ? k_max : 0;
-  ensure_built(order, k_max, extra);
+  ensure_built(order, k_max, extra, is_dense);
   const int d = dimension_;
   const long double x = alpha.to_double();
+  const double a = alpha.to_double();
 
   // R_1 = Σ a_k a_l E(k, l)  (theory.md (9.2)); ζ_r/ν = −(2/d) R_1.
   double r1 = 0;
@@ -247,6 +279,38 @@ NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, c
     for (int l = 0; l <= k_max; ++l)
       r1 += hcs_a[k] * hcs_a[l] * detail::evaluate((*energy_)[static_cast<std::size_t>(k) * ne + l], x);
   const double zeta_term = -2.0 / d * r1;
+
+  // Enskog (theory.md §15): the operator and ζ0 carry χ; sources, fluxes and gradients gain the
+  // collisional-transfer terms. e φχ/(1+α)^{n_H} turns the exact H-moments into Galerkin terms.
+  const double chi = dense.chi, phi_chi = dense.packing_fraction * dense.chi;
+  const double e = collisional_transfer_factor(d), inv = 1.0 / (1.0 + a);
+  const double p_star = dense.pressure(d, a);
+  const double phi_dp = std::pow(2.0, d - 2) * (1.0 + a) * phi_chi * (1.0 + dense.phi_dchi / chi);  // φ ∂p*/∂φ
+  const double dlnchi = dense.phi_dchi / chi;                                                       // φ ∂ln χ/∂φ
+  const int nk = dense_.k_max + 1;
+  auto weighted3 = [&](const std::vector<std::vector<long double>>& t, int p) {  // Σ_kl a_k a_l t[p][k][l]
+    double acc = 0;
+    for (int k = 0; k <= k_max; ++k)
+      for (int l = 0; l <= k_max; ++l)
+        acc += hcs_a[k] * hcs_a[l] * detail::evaluate(t[(static_cast<std::size_t>(p) * nk + k) * nk + l], x);
+    return acc;
+  };
+  auto weighted2 = [&](const std::vector<std::vector<long double>>& t, int q) {  // Σ_k a_k t[q][k]
+    double acc = 0;
+    for (int k = 0; k <= k_max; ++k) acc += hcs_a[k] * detail::evaluate(t[static_cast<std::size_t>(q) * nk + k], x);
+    return acc;
+  };
+  auto bilinear = [&](const std::vector<std::vector<long double>>& t) {  // Σ_kl a_k a_l t[k][l]
+    double acc = 0;
+    for (int k = 0; k <= k_max; ++k)
+      for (int l = 0; l <= k_max; ++l)
+        acc += hcs_a[k] * hcs_a[l] * detail::evaluate(t[static_cast<std::size_t>(k) * nk + l], x);
+    return acc;
+  };
+  // φ²χ-terms (15.8), (15.11): g_d = c_d² ν √2 π^{(d−1)/2}/(d (d+2)² Γ(d/2)).
+  const double c_d = std::pow(2.0, d - 1) * d * std::tgamma(d / 2.0) / std::pow(M_PI, d / 2.0);
+  const double g_d = c_d * c_d * linearized_operator_prefactor(d) * std::sqrt(2.0) * std::pow(M_PI, (d - 1) / 2.0) /
+                     (d * (d + 2.0) * (d + 2.0) * std::tgamma(d / 2.0));
 
   // Rows: test functions first … first+n−1; columns: basis functions first … first+cols−1.
   auto operator_matrix = [&](const PolynomialMatrices& pm, int first, int n, int cols) {
@@ -292,15 +356,30 @@ NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, c
     Eigen::VectorXd sa = Eigen::VectorXd::Zero(n), sb = Eigen::VectorXd::Zero(n);
     for (int p = 0; p < n; ++p)
       for (int k = 0; k <= k_max; ++k) {
-        sa(p) += hcs_a[k] * v.u[p + 1][k];
-        sb(p) += hcs_a[k] * v.u2[p + 1][k];
+        sa(p) += hcs_a[k] * (v.u[p + 1][k] + (p_star - 1.0) * v.u_pressure[p + 1][k]);            // (15.6)
+        sb(p) += hcs_a[k] * (v.u2[p + 1][k] + (p_star + phi_dp - 1.0) * v.u_pressure[p + 1][k]);  // (15.6)
       }
-    const Eigen::VectorXd alpha_t = a_matrix.partialPivLu().solve(sa);
-    const Eigen::VectorXd beta_t = b_matrix.partialPivLu().solve(sb + zeta_term * (mass * alpha_t));
-    const Eigen::VectorXd flux = w * flux_vector(v.flux, 1, cols);
+    Eigen::VectorXd flux = flux_vector(v.flux, 1, cols);
+    if (is_dense) {
+      for (int p = 0; p < n; ++p) {
+        sa(p) += e * phi_chi * inv * weighted3(dense_.heat_source_temperature, p + 1);
+        sb(p) += e * phi_chi * (1.0 + 0.5 * dlnchi) * inv * weighted3(dense_.heat_source_density, p + 1);
+      }
+      for (int c = 0; c < cols; ++c) flux(c) += e * phi_chi * inv * weighted2(dense_.heat_flux, c + 1);  // (15.10)
+    }
+    const Eigen::VectorXd alpha_t = a_matrix.partialPivLu().solve(sa) / chi;
+    const Eigen::VectorXd beta_t =
+        b_matrix.partialPivLu().solve(sb / chi + zeta_term * (1.0 + dlnchi) * (mass * alpha_t));
+    flux = w * flux;
     const double reduce = -16.0 * (d - 1) / (static_cast<double>(d) * d * (d + 2) * (d + 2));  // (10.6)
     out.thermal_conductivity = reduce * alpha_t.dot(flux);
     out.density_heat_coefficient = reduce * beta_t.dot(flux);
+    if (is_dense) {  // (15.11)
+      const double gradient =
+          -8.0 * (d - 1) / d * g_d * (1.0 + a) * chi * dense.packing_fraction * dense.packing_fraction * inv;
+      out.thermal_conductivity += gradient * bilinear(dense_.heat_gradient_temperature);
+      out.density_heat_coefficient += gradient * bilinear(dense_.heat_gradient_density);
+    }
   }
   {  // shear mode: S_0 … S_{N−1}
     const Pieces& t = tensor_pieces_;
@@ -310,9 +389,22 @@ NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, c
     Eigen::VectorXd sc = Eigen::VectorXd::Zero(n);
     for (int p = 0; p < n; ++p)
       for (int k = 0; k <= k_max; ++k) sc(p) += hcs_a[k] * t.u[p][k];
-    const Eigen::VectorXd gamma_t = c_matrix.partialPivLu().solve(sc);
-    const Eigen::VectorXd flux = w * flux_vector(t.flux, 0, cols);
+    Eigen::VectorXd flux = flux_vector(t.flux, 0, cols);
+    if (is_dense) {
+      for (int p = 0; p < n; ++p) sc(p) -= e * phi_chi * inv * weighted3(dense_.shear_source, p);  // (15.3)
+      for (int c = 0; c < cols; ++c)
+        flux(c) +=
+            0.5 * (1.0 + a) * d / (d - 1.0) * e * phi_chi * inv * inv * weighted2(dense_.shear_flux, c);  // (15.7)
+    }
+    const Eigen::VectorXd gamma_t = c_matrix.partialPivLu().solve(sc) / chi;
+    flux = w * flux;
     out.shear_viscosity = -8.0 / (d * (d + 2.0) * (d + 2.0)) * gamma_t.dot(flux);  // (10.7)
+    if (is_dense) {                                                                // (15.8), (15.9)
+      const double gradient = 0.25 * 8.0 * g_d * (1.0 + a) * chi * dense.packing_fraction * dense.packing_fraction *
+                              inv * bilinear(dense_.shear_gradient);
+      out.shear_viscosity += gradient;
+      out.bulk_viscosity = (d + 2.0) / d * gradient;
+    }
   }
   return out;
 }

@@ -1,8 +1,9 @@
 // The "smooth-inelastic" model: smooth inelastic hard spheres/disks with constant normal
-// restitution α, dilute. Provides the homogeneous cooling state (cumulants a2…a13, cooling rate;
-// homogeneous_cooling_state.hpp) and the Navier–Stokes coefficients η*, κ*, μ*
-// (dilute_navier_stokes.hpp). Order N keeps N Sonine polynomials per transport mode and the
-// cumulants a_2 … a_{N+1}.
+// restitution α, dilute (Boltzmann) or dense (Enskog, packing fraction φ > 0). Provides the
+// homogeneous cooling state (cumulants a2…a13, cooling rate; homogeneous_cooling_state.hpp),
+// the pressure and the Navier–Stokes coefficients η*, κ*, μ*, bulk viscosity
+// (dilute_navier_stokes.hpp, theory.md §10, §15). Order N keeps N Sonine polynomials per
+// transport mode and the cumulants a_2 … a_{N+1}.
 #include <array>
 #include <cmath>
 #include <map>
@@ -12,6 +13,7 @@
 #include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/hcs_stability.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/pair_correlation.hpp"
 #include "transport/models.hpp"
 
 namespace gkt::detail {
@@ -20,6 +22,27 @@ namespace {
 
 constexpr int kHighestCumulant = 13;
 constexpr int kMaxOrder = kHighestCumulant - 1;
+
+/// Names of the registered pair correlations (the choices of `pair_correlation`).
+std::vector<std::string> pair_correlation_names() {
+  std::vector<std::string> names;
+  for (const auto& p : pair_correlations()) names.push_back(p.name);
+  return names;
+}
+
+/// The density of one evaluation: φ, χ(φ), φ dχ/dφ (exact) and the closure's name.
+struct Dense {
+  Rational phi, chi, phi_dchi;
+  std::string closure;
+  [[nodiscard]] EnskogState state() const { return {phi.to_double(), chi.to_double(), phi_dchi.to_double()}; }
+  /// Memo key fragment: α alone when dilute.
+  [[nodiscard]] std::string key(const Rational& alpha) const {
+    if (phi.sign() == 0) return alpha.to_string();
+    std::string k = alpha.to_string();
+    k.append("|").append(phi.to_string()).append("|").append(closure);
+    return k;
+  }
+};
 
 /// Returns the canonical name "a<k>" of the k-th cumulant.
 std::string cumulant_name(int k) {
@@ -33,8 +56,8 @@ class SmoothInelasticModel final : public TransportModel {
   [[nodiscard]] std::string name() const override { return "smooth-inelastic"; }
   [[nodiscard]] std::string description() const override {
     return "smooth inelastic hard spheres (d = 3) or disks (d = 2), constant restitution alpha: "
-           "homogeneous cooling state and dilute Navier-Stokes coefficients (standard or modified Sonine "
-           "scheme)";
+           "homogeneous cooling state, pressure and Navier-Stokes coefficients, dilute or dense (Enskog), "
+           "standard or modified Sonine scheme";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     std::vector<std::string> names;
@@ -46,6 +69,8 @@ class SmoothInelasticModel final : public TransportModel {
     names.emplace_back("critical_wavenumber_shear");
     names.emplace_back("critical_wavenumber_heat");
     names.emplace_back("critical_length");
+    names.emplace_back("bulk_viscosity");
+    names.emplace_back("pressure");
     return names;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -84,7 +109,18 @@ class SmoothInelasticModel final : public TransportModel {
              true,
              Rational(0),
              "Sonine trial-function weight of the Navier-Stokes coefficients: Maxwellian or HCS",
-             {"standard", "modified"}}};
+             {"standard", "modified"}},
+            {"packing_fraction",
+             ParameterSpec::Kind::real,
+             Rational(0),
+             max_packing_fraction(2),
+             true,
+             true,
+             Rational(0),
+             "packing fraction phi (0 = dilute; Enskog theory above; at most 0.5 in 3D, 0.7 in 2D)",
+             {}},
+            {"pair_correlation", ParameterSpec::Kind::choice, Rational(0), Rational(0), true, true, Rational(0),
+             "contact value chi(phi) of the pair correlation", pair_correlation_names()}};
   }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }
 
@@ -100,6 +136,18 @@ class SmoothInelasticModel final : public TransportModel {
     const std::string weight = point.choice("scheme", "standard");
     specs[3].check(weight);
     const SonineScheme sonine = weight == "modified" ? SonineScheme::modified : SonineScheme::standard;
+    const Rational phi = point.number("packing_fraction", Rational(0));
+    specs[4].check(phi);
+    const std::string closure = point.choice("pair_correlation", pair_correlations().front().name);
+    specs[5].check(closure);
+    const int dimension = dim == Rational(2) ? 2 : 3;
+    if (phi > max_packing_fraction(dimension))
+      throw std::invalid_argument("packing_fraction: must be a number in [0, " +
+                                  max_packing_fraction(dimension).to_string() +
+                                  "] for dimension = " + std::to_string(dimension) + ", got " + phi.to_string());
+    const PairCorrelation& pc = pair_correlation(closure);
+    const Rational chi = pc.contact_value(dimension, phi);
+    const Dense dense{phi, chi, pc.packing_derivative(dimension, phi), closure};
     const int d = dim == Rational(2) ? 2 : 3;
     auto& hcs = solvers_[static_cast<std::size_t>(d - 2)];
     if (!hcs) hcs = std::make_unique<HomogeneousCoolingState>(d);
@@ -111,22 +159,33 @@ class SmoothInelasticModel final : public TransportModel {
     if (ns_memo_.size() > 4096) ns_memo_.clear();
     std::vector<CoefficientValue> out;
     for (const auto& c : coefficients) {
+      if (c == "pressure") {  // (15.5): exact, independent of the cumulants
+        const Rational p = Rational(1) + Rational(d == 3 ? 2 : 1) * (Rational(1) + alpha) * phi * chi;
+        out.push_back({p, Rational(0), order.order, true, true, true});
+        continue;
+      }
       const int transport = transport_index(c);
       if (transport >= 0) {
-        out.push_back(transport_value(*hcs, d, alpha, scheme, sonine, transport, order));
+        if (transport >= 3 && transport <= 5 && phi.sign() > 0)
+          throw std::invalid_argument("coefficients: " + c +
+                                      " is computed for the dilute gas only (packing_fraction = 0)");
+        out.push_back(transport_value(*hcs, d, alpha, scheme, sonine, dense, transport, order));
         continue;
       }
       const int k = c == "cooling_rate" ? -1 : cumulant_index(c);
+      // Enskog HCS: the collision operator is χ times Boltzmann's, so the cumulants are the dilute
+      // ones and ζ* = χ ζ*_dilute (theory.md (15.1)).
+      const Rational scale = k < 0 ? chi : Rational(1);
       if (scheme == "linear") {
         if (k > 2)
           throw std::invalid_argument(std::string("coefficients: ") + c +
                                       " is not computed by hcs = \"linear\" (a2 only)");
         const HcsState lin = hcs->solve(alpha, 2, HcsScheme::linear);
-        const Rational exact = k == 2 ? *lin.exact_a2 : *lin.exact_cooling_rate;
+        const Rational exact = k == 2 ? *lin.exact_a2 : *lin.exact_cooling_rate * chi;
         // Error of the first-Sonine value: against the next two nonlinear orders.
         const auto next1 = nonlinear(*hcs, d, alpha, 3), next2 = nonlinear(*hcs, d, alpha, 4);
-        TruncationEstimate e =
-            estimate_truncation(exact, Rational::from_double(pick(next1, k)), Rational::from_double(pick(next2, k)));
+        TruncationEstimate e = estimate_truncation(exact, Rational::from_double(pick(next1, k)) * scale,
+                                                   Rational::from_double(pick(next2, k)) * scale);
         e.value = exact;
         out.push_back({e.value, e.error, 1, e.converging && next1.solved && next2.solved, true, true});
         continue;
@@ -139,8 +198,9 @@ class SmoothInelasticModel final : public TransportModel {
         v.exact = false;
         v.defined = s0.solved && s1.solved && s2.solved;
         if (!v.defined) return v;
-        v.estimate = estimate_truncation(Rational::from_double(pick(s0, k)), Rational::from_double(pick(s1, k)),
-                                         Rational::from_double(pick(s2, k)));
+        v.estimate =
+            estimate_truncation(Rational::from_double(pick(s0, k)) * scale, Rational::from_double(pick(s1, k)) * scale,
+                                Rational::from_double(pick(s2, k)) * scale);
         return v;
       }));
     }
@@ -149,7 +209,7 @@ class SmoothInelasticModel final : public TransportModel {
 
  private:
   /// 0 shear viscosity, 1 thermal conductivity, 2 density heat coefficient, 3–5 the HCS stability
-  /// values of theory.md §14 (from ζ*, η*, κ*, μ* at the same order); −1 otherwise.
+  /// values of theory.md §14 (from ζ*, η*, κ*, μ* at the same order), 6 bulk viscosity; −1 otherwise.
   static int transport_index(const std::string& c) {
     if (c == "shear_viscosity") return 0;
     if (c == "thermal_conductivity") return 1;
@@ -157,9 +217,11 @@ class SmoothInelasticModel final : public TransportModel {
     if (c == "critical_wavenumber_shear") return 3;
     if (c == "critical_wavenumber_heat") return 4;
     if (c == "critical_length") return 5;
+    if (c == "bulk_viscosity") return 6;
     return -1;
   }
   static double pick_transport(const NavierStokesValues& v, int which, int d, double zeta) {
+    if (which == 6) return v.bulk_viscosity;
     if (which < 3)
       return which == 0 ? v.shear_viscosity : which == 1 ? v.thermal_conductivity : v.density_heat_coefficient;
     const HcsStability s =
@@ -167,8 +229,23 @@ class SmoothInelasticModel final : public TransportModel {
     return which == 3 ? s.shear_wavenumber : which == 4 ? s.heat_wavenumber : s.critical_length;
   }
   CoefficientValue transport_value(HomogeneousCoolingState& hcs, int d, const Rational& alpha,
-                                   const std::string& scheme, SonineScheme sonine, int which,
+                                   const std::string& scheme, SonineScheme sonine, const Dense& dense, int which,
                                    const OrderRequest& order) {
+    if (scheme == "linear" && (dense.phi.sign() > 0 || which == 6)) {
+      // First Sonine about f_M(1 + a2 S2) with the van Noije–Ernst a2, through the solver (the
+      // a2² products of the collisional terms kept: theory.md §15.3); error against orders 2, 3.
+      const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
+      auto& solver = ns_[static_cast<std::size_t>(d - 2)];
+      if (!solver) solver = std::make_unique<DiluteNavierStokes>(d);
+      const NavierStokesValues v1 = solver->solve(alpha, 1, {1.0, 0.0, a2.to_double()}, sonine, dense.state());
+      const Rational value = Rational::from_double(pick_transport(v1, which, d, 0.0));
+      const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine, dense);
+      const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine, dense);
+      if (n2 == nullptr || n3 == nullptr) return {value, Rational(0), 1, false, false, true};
+      const TruncationEstimate e = estimate_truncation(value, Rational::from_double(pick_transport(*n2, which, d, 0.0)),
+                                                       Rational::from_double(pick_transport(*n3, which, d, 0.0)));
+      return {value, e.error, 1, e.converging, false, true};
+    }
     if (scheme == "linear") {
       // Standard first Sonine, linear in a2 (theory.md (10.8)): exact for η*, κ*, μ* (the stability
       // values take square roots); error against orders 2, 3.
@@ -182,8 +259,8 @@ class SmoothInelasticModel final : public TransportModel {
           exact ? v[static_cast<std::size_t>(which)]
                 : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()}, which, d,
                                                        zeta.to_double()));
-      const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine);
-      const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine);
+      const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine, dense);
+      const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine, dense);
       if (n2 == nullptr || n3 == nullptr) return {value, Rational(0), 1, false, exact, true};
       const TruncationEstimate e = estimate_truncation(
           value, Rational::from_double(pick_transport(*n2, which, d, nonlinear(hcs, d, alpha, 3).cooling_rate)),
@@ -193,9 +270,9 @@ class SmoothInelasticModel final : public TransportModel {
     return choose_order(order, max_order(), [&](int n) {
       OrderValue v;
       v.exact = false;
-      const auto* s0 = navier_stokes(hcs, d, alpha, n, sonine);
-      const auto* s1 = navier_stokes(hcs, d, alpha, n + 1, sonine);
-      const auto* s2 = navier_stokes(hcs, d, alpha, n + 2, sonine);
+      const auto* s0 = navier_stokes(hcs, d, alpha, n, sonine, dense);
+      const auto* s1 = navier_stokes(hcs, d, alpha, n + 1, sonine, dense);
+      const auto* s2 = navier_stokes(hcs, d, alpha, n + 2, sonine, dense);
       v.defined = s0 != nullptr && s1 != nullptr && s2 != nullptr;
       if (!v.defined) return v;
       v.estimate = estimate_truncation(
@@ -206,10 +283,10 @@ class SmoothInelasticModel final : public TransportModel {
     });
   }
   /// η*, κ*, μ* at Sonine order N about the nonlinear HCS with a_2..a_{N+1}; null if that HCS has
-  /// no solution. Memoised per (d, α, N, scheme).
+  /// no solution. Memoised per (d, α, φ, N, scheme).
   const NavierStokesValues* navier_stokes(HomogeneousCoolingState& hcs, int d, const Rational& alpha, int n,
-                                          SonineScheme sonine) {
-    auto key = std::make_tuple(d, alpha.to_string(), 2 * n + (sonine == SonineScheme::modified ? 1 : 0));
+                                          SonineScheme sonine, const Dense& dense) {
+    auto key = std::make_tuple(d, dense.key(alpha), 2 * n + (sonine == SonineScheme::modified ? 1 : 0));
     const auto it = ns_memo_.find(key);
     if (it != ns_memo_.end()) return it->second ? &*it->second : nullptr;
     const HcsState& state = nonlinear(hcs, d, alpha, n + 1);
@@ -217,7 +294,7 @@ class SmoothInelasticModel final : public TransportModel {
     if (state.solved) {
       auto& solver = ns_[static_cast<std::size_t>(d - 2)];
       if (!solver) solver = std::make_unique<DiluteNavierStokes>(d);
-      value = solver->solve(alpha, n, state.a, sonine);
+      value = solver->solve(alpha, n, state.a, sonine, dense.state());
     }
     const auto& stored = ns_memo_.emplace(std::move(key), value).first->second;
     return stored ? &*stored : nullptr;

@@ -152,6 +152,26 @@ BENCHMARK(SmoothInelasticOrderWarm)
     ->ArgsProduct({{0, 1, 2}, {1, 4}, {1}})
     ->Unit(benchmark::kMicrosecond);
 
+/// Warm time for all coefficients of the dense gas (φ = 0.3, Carnahan–Starling, standard scheme)
+/// at order N and α ∈ {0.9, 0.5, 0.2}, matrices and collisional-transfer tables already built.
+void EnskogOrderWarm(benchmark::State& state) {
+  const Rational alphas[] = {Rational(9, 10), Rational(1, 2), Rational(1, 5)};
+  const Rational alpha = alphas[state.range(0)];
+  const int order = static_cast<int>(state.range(1));
+  const std::vector<std::string> all{"pressure",       "cooling_rate",         "shear_viscosity",
+                                     "bulk_viscosity", "thermal_conductivity", "density_heat_coefficient"};
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  gkt::OrderRequest request;
+  request.order = order;
+  (void)model->evaluate({{{"alpha", Rational(1, 3)}, {"packing_fraction", Rational(3, 10)}}, {}}, all, request);
+  long k = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(model->evaluate(
+        {{{"alpha", alpha - Rational(++k % 1000, 1000000000000UL)}, {"packing_fraction", Rational(3, 10)}}, {}}, all,
+        request));
+}
+BENCHMARK(EnskogOrderWarm)->ArgsProduct({{0, 1, 2}, {1, 2, 4, 6}})->Unit(benchmark::kMicrosecond);
+
 /// Cold: a new model per iteration at order N, α = 0.9 (one-time symbolic builds included).
 void SmoothInelasticOrderCold(benchmark::State& state) {
   const int order = static_cast<int>(state.range(0));

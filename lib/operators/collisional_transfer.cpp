@@ -1,0 +1,207 @@
+#include "gkt/collisional_transfer.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "collision/ring.hpp"
+#include "gkt/linearized_operator.hpp"
+#include "gkt/quadratic_form_moments.hpp"
+#include "gkt/sonine.hpp"
+
+namespace gkt {
+
+namespace {
+
+using Table = std::vector<std::vector<Rational>>;  // rows: coefficients of x^j
+
+/// D_l = 2(S_l' − S_l), the partner factor of ∂_c φ = f_M c Σ a_l D_l (theory.md (15.2)).
+Table derivative_factors(int d, int k_max) {
+  const Table s = sonine_table(sonine_twice_m(d, 0), k_max);
+  Table out;
+  for (const auto& row : s) {
+    std::vector<Rational> r(row.size(), Rational(0));
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      r[j] -= Rational(2) * row[j];
+      if (j > 0) r[j - 1] += Rational(2) * Rational(static_cast<long>(j)) * row[j];
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+/// T_l = x S_l − x S_l' − (d/2) S_l, the partner factor of −½∂_c·(cφ) = f_M Σ a_l T_l.
+Table temperature_factors(int d, int k_max) {
+  const Table s = sonine_table(sonine_twice_m(d, 0), k_max);
+  Table out;
+  for (const auto& row : s) {
+    std::vector<Rational> r(row.size() + 1, Rational(0));
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      r[j + 1] += row[j];
+      r[j] -= Rational(d, 2) * row[j];
+      if (j > 0) r[j] -= Rational(static_cast<long>(j)) * row[j];
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+/// out[p][k][l] = Σ_{j,a,b} tp[p][j] tk[k][a] tl[l][b] raw(a, b, j), one index at a time.
+template <class Ring, class Raw>
+std::vector<Ring> contract3(const Raw& raw, const Table& tp, const Table& tk, const Table& tl) {
+  std::size_t na = 0, nb = 0;
+  for (const auto& r : tk) na = std::max(na, r.size());
+  for (const auto& r : tl) nb = std::max(nb, r.size());
+  const std::size_t np = tp.size(), nk = tk.size(), nl = tl.size();
+  std::vector<Ring> r1(np * na * nb, Ring(0L));
+  for (std::size_t p = 0; p < np; ++p)
+    for (std::size_t a = 0; a < na; ++a)
+      for (std::size_t b = 0; b < nb; ++b) {
+        Ring acc(0L);
+        for (std::size_t j = 0; j < tp[p].size(); ++j)
+          if (!tp[p][j].is_zero())
+            acc.add_product(Ring(tp[p][j]), raw(static_cast<int>(a), static_cast<int>(b), static_cast<int>(j)));
+        r1[(p * na + a) * nb + b] = std::move(acc);
+      }
+  std::vector<Ring> r2(np * nk * nb, Ring(0L));
+  for (std::size_t p = 0; p < np; ++p)
+    for (std::size_t k = 0; k < nk; ++k)
+      for (std::size_t b = 0; b < nb; ++b) {
+        Ring acc(0L);
+        for (std::size_t a = 0; a < tk[k].size(); ++a) acc.add_product(Ring(tk[k][a]), r1[(p * na + a) * nb + b]);
+        r2[(p * nk + k) * nb + b] = std::move(acc);
+      }
+  std::vector<Ring> out(np * nk * nl, Ring(0L));
+  for (std::size_t p = 0; p < np; ++p)
+    for (std::size_t k = 0; k < nk; ++k)
+      for (std::size_t l = 0; l < nl; ++l) {
+        Ring acc(0L);
+        for (std::size_t b = 0; b < tl[l].size(); ++b) acc.add_product(Ring(tl[l][b]), r2[(p * nk + k) * nb + b]);
+        out[(p * nk + k) * nl + l] = std::move(acc);
+      }
+  return out;
+}
+
+/// out[i][j] = Σ_{a,b} ti[i][b] tj[j][a] raw(a, b): i runs with the second raw index.
+template <class Ring, class Raw>
+std::vector<Ring> contract2(const Raw& raw, const Table& ti, const Table& tj) {
+  std::vector<Ring> out(ti.size() * tj.size(), Ring(0L));
+  for (std::size_t i = 0; i < ti.size(); ++i)
+    for (std::size_t j = 0; j < tj.size(); ++j) {
+      Ring acc(0L);
+      for (std::size_t b = 0; b < ti[i].size(); ++b)
+        for (std::size_t a = 0; a < tj[j].size(); ++a)
+          acc.add_product(Ring(ti[i][b] * tj[j][a]), raw(static_cast<int>(a), static_cast<int>(b)));
+      out[i * tj.size() + j] = std::move(acc);
+    }
+  return out;
+}
+
+int max_degree(const Table& t) {
+  std::size_t n = 1;
+  for (const auto& r : t) n = std::max(n, r.size());
+  return static_cast<int>(n) - 1;
+}
+
+}  // namespace
+
+double collisional_transfer_factor(int dimension) {
+  // n σ^d = c_d φ with c_d = 2^{d−1} d Γ(d/2)/π^{d/2}; π^{−d} J_{−1,0} = ν √(π/2) (theory.md (15.4)).
+  const double d = dimension;
+  const double c_d = std::pow(2.0, d - 1) * d * std::tgamma(d / 2) / std::pow(M_PI, d / 2);
+  return c_d * linearized_operator_prefactor(dimension) * std::sqrt(M_PI / 2);
+}
+
+template <class Ring>
+CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, const Ring& alpha, int n_max, int k_max) {
+  if (dimension != 2 && dimension != 3) throw std::invalid_argument("dimension: must be 2 or 3");
+  if (n_max < 0 || k_max < 0) throw std::invalid_argument("collisional_transfer_moments: negative size");
+  const int d = dimension;
+  const CollisionPair pair{d, Rational(1), Rational(1), Rational(1), Rational(1)};
+  const Table st = sonine_table(sonine_twice_m(d, 2), n_max);
+  const Table sv = sonine_table(sonine_twice_m(d, 1), n_max);
+  const Table sk = sonine_table(sonine_twice_m(d, 0), k_max);
+  const Table dl = derivative_factors(d, k_max);
+  const Table tl = temperature_factors(d, k_max);
+  const int nk = max_degree(sk), nd = max_degree(dl), nt = max_degree(tl), nn = n_max + 1;
+
+  const SlotVector c1 = slot_vector(Slot::v1), c2 = slot_vector(Slot::v2), c1p = slot_vector(Slot::v1_post);
+  const SlotVector h = collision_vector();
+  const SlotVector g = combine(slot_vector(Slot::v1), c2, Rational(1));  // 2G = c1 + c2
+  const VelocityForm x1 = dot_form(c1, c1), x2 = dot_form(c2, c2), x1p = dot_form(c1p, c1p);
+  const Rational minus_one(-1), inv_d(1, static_cast<unsigned long>(d)), quarter(1, 4), half(1, 2);
+  using Q = QuadraticFormMoments<Ring>;
+
+  CollisionalTransferMoments<Ring> out;
+  out.dimension = d;
+  out.n_max = n_max;
+  out.k_max = k_max;
+
+  {  // shear source: polarisation (c·H)(c·c2) = ¼[(c·(H + c2))² − (c·(H − c2))²]
+    const Q gp(pair, alpha, {x1, x2, x1p, dot_form(c1p, combine(h, c2, Rational(1)))}, {nk, nd, nn, 2}, minus_one);
+    const Q gm(pair, alpha, {x1, x2, x1p, dot_form(c1p, combine(h, c2, minus_one))}, {nk, nd, nn, 2}, minus_one);
+    const Q lp(pair, alpha, {x1, x2, dot_form(c1, combine(h, c2, Rational(1)))}, {nk + nn, nd, 2}, minus_one);
+    const Q lm(pair, alpha, {x1, x2, dot_form(c1, combine(h, c2, minus_one))}, {nk + nn, nd, 2}, minus_one);
+    const Q hc(pair, alpha, {x1, x2, x1p, dot_form(h, c2)}, {nk + nn + 1, nd, nn + 1, 1}, minus_one);
+    auto raw = [&](int a, int b, int j) {
+      Ring gain = gp.moment({a, b, j, 2}) - gm.moment({a, b, j, 2});
+      detail::scale(gain, quarter);
+      Ring gain2 = hc.moment({a, b, j + 1, 1});
+      detail::scale(gain2, inv_d);
+      Ring loss = lp.moment({a + j, b, 2, 0}) - lm.moment({a + j, b, 2, 0});
+      detail::scale(loss, quarter);
+      Ring loss2 = hc.moment({a + j + 1, b, 0, 1});
+      detail::scale(loss2, inv_d);
+      return (gain - gain2) - (loss - loss2);
+    };
+    out.shear_source = contract3<Ring>(raw, st, sk, dl);
+  }
+  {  // shear flux [q][k]
+    const Q f(pair, alpha, {x1, x2, dot_form(h, c2), dot_form(h, h)}, {nk, nn + 1, 2, 1}, minus_one);
+    auto raw = [&](int a, int b) {
+      Ring v = f.moment({a, b + 1, 0, 1});
+      detail::scale(v, inv_d);
+      return f.moment({a, b, 2, 0}) - v;
+    };
+    out.shear_flux = contract2<Ring>(raw, st, sk);
+  }
+  {  // shear gradient [k][l]
+    const Q f(pair, alpha, {x1, x2, dot_form(h, c2)}, {nk, nd, 1}, Rational(0));
+    auto raw = [&](int a, int b) { return f.moment({b, a, 1, 0}); };  // a ↔ X2 (l), b ↔ X1 (k)
+    out.shear_gradient = contract2<Ring>(raw, sk, dl);
+  }
+  {  // heat sources [p][k][l]
+    const int nb = std::max(nt, nk);
+    const Q hg(pair, alpha, {x1, x2, x1p, dot_form(h, c1p)}, {nk, nb, nn, 1}, minus_one);
+    const Q hl(pair, alpha, {x1, x2, dot_form(h, c1)}, {nk + nn, nb, 1}, minus_one);
+    auto raw = [&](int a, int b, int j) { return hg.moment({a, b, j, 1}) - hl.moment({a + j, b, 1, 0}); };
+    out.heat_source_temperature = contract3<Ring>(raw, sv, sk, tl);
+    out.heat_source_density = contract3<Ring>(raw, sv, sk, sk);
+  }
+  {  // heat flux [q][k]: (H·G) = ½ H·(c1 + c2)
+    const Q f(pair, alpha, {x1, x2, dot_form(h, g), dot_form(h, c2)}, {nk, nn, 1, 1}, minus_one);
+    auto raw = [&](int a, int b) {
+      Ring v = f.moment({a, b, 1, 1});
+      detail::scale(v, half);
+      return v;
+    };
+    out.heat_flux = contract2<Ring>(raw, sv, sk);
+  }
+  {  // heat gradients [k][l]
+    const int nb = std::max(nt, nk);
+    const Q f(pair, alpha, {x1, x2, dot_form(h, g)}, {nk, nb, 1}, Rational(0));
+    auto raw = [&](int a, int b) {
+      Ring v = f.moment({b, a, 1, 0});
+      detail::scale(v, half);
+      return v;
+    };
+    out.heat_gradient_temperature = contract2<Ring>(raw, sk, tl);
+    out.heat_gradient_density = contract2<Ring>(raw, sk, sk);
+  }
+  return out;
+}
+
+template CollisionalTransferMoments<Rational> collisional_transfer_moments<Rational>(int, const Rational&, int, int);
+template CollisionalTransferMoments<RationalPolynomial> collisional_transfer_moments<RationalPolynomial>(
+    int, const RationalPolynomial&, int, int);
+
+}  // namespace gkt
