@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "gkt/collisional_transfer.hpp"
-#include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/navier_stokes.hpp"
 #include "gkt/pair_correlation.hpp"
 #include "gkt/quadratic_form_moments.hpp"
 #include "monte_carlo.hpp"
@@ -133,7 +133,7 @@ TEST(Enskog, PressureIndependentOfCumulants) {
 // closed forms to round-off for d = 2, 3, α from 1 to 0.2, φ up to the largest allowed.
 TEST(Enskog, FirstSonineEqualsGarzoDuftyMaxwellian) {
   for (int d : {2, 3}) {
-    gkt::DiluteNavierStokes ns(d);
+    gkt::NavierStokesSolver ns(d);
     const auto fs = gkt::first_sonine_navier_stokes(d);
     for (const Rational& alpha : {Rational(1), Rational(7, 10), Rational(1, 2), Rational(1, 5)})
       for (const Rational& phi : {Rational(1, 10), Rational(3, 10), d == 3 ? Rational(1, 2) : Rational(7, 10)}) {
@@ -151,7 +151,7 @@ TEST(Enskog, FirstSonineEqualsGarzoDuftyMaxwellian) {
 // collisional terms that the published forms drop: agreement within 0.1 a2² (relative).
 TEST(Enskog, FirstSonineEqualsGarzoDuftyToOrderA2) {
   for (int d : {2, 3}) {
-    gkt::DiluteNavierStokes ns(d);
+    gkt::NavierStokesSolver ns(d);
     gkt::HomogeneousCoolingState h(d);
     const auto fs = gkt::first_sonine_navier_stokes(d);
     for (const Rational& alpha : {Rational(9, 10), Rational(1, 2), Rational(1, 5)})
@@ -173,7 +173,7 @@ TEST(Enskog, FirstSonineEqualsGarzoDuftyToOrderA2) {
 // and at α = 1 the collisional sources are pure first Sonine (projections on S_p, p ≥ 1 (shear)
 // and p ≥ 2 (heat) vanish exactly), so the kinetic equations are the dilute ones rescaled.
 TEST(Enskog, ElasticLimitChapmanCowling) {
-  gkt::DiluteNavierStokes ns(3);
+  gkt::NavierStokesSolver ns(3);
   for (const Rational& phi : {Rational(1, 10), Rational(1, 4), Rational(1, 2)}) {
     const auto st = enskog(3, phi);
     const auto v = ns.solve(Rational(1), 1, {1.0, 0.0}, gkt::SonineScheme::standard, st);
@@ -197,7 +197,7 @@ TEST(Enskog, ElasticLimitChapmanCowling) {
 // truncation error.
 TEST(Enskog, DiluteLimitAndSchemesAgree) {
   for (int d : {2, 3}) {
-    gkt::DiluteNavierStokes ns(d);
+    gkt::NavierStokesSolver ns(d);
     gkt::HomogeneousCoolingState h(d);
     const Rational alpha(9, 10);
     const auto hcs = h.solve(alpha, 5, gkt::HcsScheme::nonlinear).a;

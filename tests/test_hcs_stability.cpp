@@ -6,9 +6,9 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/hcs_stability.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/navier_stokes.hpp"
 
 namespace {
 
@@ -35,7 +35,7 @@ std::complex<double> heat_mode(const Eigen::Vector3cd& values) {
 // the numerical determinant equals (k²/2)(ζ/2 − ((d+2)/(2(d−1)))(κ − μ) k²).
 TEST(HcsStability, HeatModeCrossesZeroAtTheClosedFormWavenumber) {
   for (int d : {2, 3}) {
-    gkt::DiluteNavierStokes ns(d);
+    gkt::NavierStokesSolver ns(d);
     gkt::HomogeneousCoolingState hcs(d);
     for (const gkt::Rational& alpha : {gkt::Rational(4, 5), gkt::Rational(3, 5)}) {
       const auto state = hcs.solve(alpha, 5, gkt::HcsScheme::nonlinear);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "gkt/dilute_navier_stokes.hpp"
+#include "gkt/navier_stokes.hpp"
 #include "gkt/rational_function.hpp"
 
 namespace gkt {

@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
-#include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/navier_stokes.hpp"
 #include "transport/models.hpp"
 
 namespace gkt {

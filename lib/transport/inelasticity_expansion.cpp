@@ -6,9 +6,9 @@
 
 #include <Eigen/Dense>
 
-#include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/first_sonine_formulas.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/navier_stokes.hpp"
 
 namespace gkt {
 
@@ -31,7 +31,7 @@ std::array<Rational, 3> first_sonine_inelasticity_expansion(int dimension, const
 
 InelasticityExpansion inelasticity_expansion(int dimension, int order) {
   if (order < 3) throw std::invalid_argument("order: the fit compares with order − 2; must be >= 3");
-  DiluteNavierStokes ns(dimension);
+  NavierStokesSolver ns(dimension);
   HomogeneousCoolingState hcs(dimension);
   constexpr int kPoints = 11;
   // values[n][quantity][k] at α = 1 − k/400 for n ∈ {order − 2, order}.

@@ -2,7 +2,7 @@
 // restitution α, dilute (Boltzmann) or dense (Enskog, packing fraction φ > 0). Provides the
 // homogeneous cooling state (cumulants a2…a13, cooling rate; homogeneous_cooling_state.hpp),
 // the pressure and the Navier–Stokes coefficients η*, κ*, μ*, bulk viscosity
-// (dilute_navier_stokes.hpp, theory.md §10, §15). Order N keeps N Sonine polynomials per
+// (navier_stokes.hpp, theory.md §10, §15). Order N keeps N Sonine polynomials per
 // transport mode and the cumulants a_2 … a_{N+1}.
 #include <array>
 #include <cmath>
@@ -10,9 +10,9 @@
 #include <optional>
 #include <tuple>
 
-#include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/hcs_stability.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/navier_stokes.hpp"
 #include "gkt/pair_correlation.hpp"
 #include "transport/models.hpp"
 
@@ -236,7 +236,7 @@ class SmoothInelasticModel final : public TransportModel {
       // a2² products of the collisional terms kept: theory.md §15.3); error against orders 2, 3.
       const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
       auto& solver = ns_[static_cast<std::size_t>(d - 2)];
-      if (!solver) solver = std::make_unique<DiluteNavierStokes>(d);
+      if (!solver) solver = std::make_unique<NavierStokesSolver>(d);
       const NavierStokesValues v1 = solver->solve(alpha, 1, {1.0, 0.0, a2.to_double()}, sonine, dense.state());
       const Rational value = Rational::from_double(pick_transport(v1, which, d, 0.0));
       const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine, dense);
@@ -293,7 +293,7 @@ class SmoothInelasticModel final : public TransportModel {
     std::optional<NavierStokesValues> value;
     if (state.solved) {
       auto& solver = ns_[static_cast<std::size_t>(d - 2)];
-      if (!solver) solver = std::make_unique<DiluteNavierStokes>(d);
+      if (!solver) solver = std::make_unique<NavierStokesSolver>(d);
       value = solver->solve(alpha, n, state.a, sonine, dense.state());
     }
     const auto& stored = ns_memo_.emplace(std::move(key), value).first->second;
@@ -319,7 +319,7 @@ class SmoothInelasticModel final : public TransportModel {
 
   std::array<std::unique_ptr<HomogeneousCoolingState>, 2> solvers_;
   std::map<std::tuple<int, std::string, int>, HcsState> memo_;
-  std::array<std::unique_ptr<DiluteNavierStokes>, 2> ns_;
+  std::array<std::unique_ptr<NavierStokesSolver>, 2> ns_;
   std::array<std::optional<FirstSonineNavierStokes>, 2> first_sonine_;
   std::map<std::tuple<int, std::string, int>, std::optional<NavierStokesValues>> ns_memo_;
 };

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "gkt/dilute_navier_stokes.hpp"
 #include "gkt/hard_spheres.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/navier_stokes.hpp"
 
 using gkt::Rational;
 using gkt::RationalPolynomial;
@@ -22,7 +22,7 @@ RationalPolynomial c(const Rational& v) { return RationalPolynomial(v); }
 //   ν_η* = (3/(4d)) (1 − α + 2d/3)(1 + α)(1 − a2/32),
 //   ν_κ* = ((1+α)/d) [(d−1)/2 + (3/16)(d+8)(1−α) + (4 + 5d − 3(4−d)α) a2/512].
 // The engine derives both from the collision integrals; compared as exact polynomials.
-TEST(DiluteNavierStokesFirstSonine, CollisionFrequenciesExactly) {
+TEST(NavierStokesSolverFirstSonine, CollisionFrequenciesExactly) {
   const auto a = RationalPolynomial::variable();
   for (int d : {2, 3}) {
     const auto fs = gkt::first_sonine_navier_stokes(d);
@@ -42,9 +42,9 @@ TEST(DiluteNavierStokesFirstSonine, CollisionFrequenciesExactly) {
 // The Galerkin solver at order 1 with f0 = f_M(1 + a2 S2) reproduces the closed forms
 // η* = 1/(ν_η − ζ/2), κ* = ((d−1)/d)(1+2a2)/(ν_κ − 2ζ), μ* = 2ζ(κ* + ((d−1)/d)a2/ζ)/(2ν_κ − 3ζ)
 // (same references) up to the a2² terms the closed forms drop (ζ's a2² term).
-TEST(DiluteNavierStokesFirstSonine, SolverMatchesClosedForms) {
+TEST(NavierStokesSolverFirstSonine, SolverMatchesClosedForms) {
   for (int d : {2, 3}) {
-    gkt::DiluteNavierStokes ns(d);
+    gkt::NavierStokesSolver ns(d);
     gkt::HomogeneousCoolingState h(d);
     const auto fs = gkt::first_sonine_navier_stokes(d);
     for (const Rational& alpha : {Rational(9, 10), Rational(7, 10), Rational(1, 2), Rational(1, 5)}) {
@@ -61,9 +61,9 @@ TEST(DiluteNavierStokesFirstSonine, SolverMatchesClosedForms) {
 }
 
 // α = 1: η*, κ* equal the elastic hard-sphere Sonine approximants at every order; μ* = 0.
-TEST(DiluteNavierStokes, ElasticLimitEqualsHardSpheres) {
+TEST(NavierStokesSolver, ElasticLimitEqualsHardSpheres) {
   for (int d : {2, 3}) {
-    gkt::DiluteNavierStokes ns(d);
+    gkt::NavierStokesSolver ns(d);
     gkt::HardSphereSonineSystem hs(d);
     for (int n = 1; n <= 6; ++n) {
       const auto v = ns.solve(Rational(1), n, {1.0, 0.0});
@@ -78,9 +78,9 @@ TEST(DiluteNavierStokes, ElasticLimitEqualsHardSpheres) {
 
 // Continuity at α → 1 (no 0/0): at 1 − α = 1e-6 the order-4 values are within 1e-5 of the elastic
 // ones and μ* = O(1 − α).
-TEST(DiluteNavierStokes, ContinuousAtAlphaOne) {
+TEST(NavierStokesSolver, ContinuousAtAlphaOne) {
   for (int d : {2, 3}) {
-    gkt::DiluteNavierStokes ns(d);
+    gkt::NavierStokesSolver ns(d);
     gkt::HomogeneousCoolingState h(d);
     const Rational alpha = Rational(1) - Rational(1, 1000000);
     const auto hcs = h.solve(alpha, 5, gkt::HcsScheme::nonlinear);
@@ -98,8 +98,8 @@ TEST(DiluteNavierStokes, ContinuousAtAlphaOne) {
 // Convergence in Sonine order at α = 0.9 (geometric); at α = 0.5 the standard (Maxwellian-weight)
 // series for κ* does not settle: orders 2…6 still differ by more than 10 % (PHYSICS.md: it is only
 // asymptotic there).
-TEST(DiluteNavierStokes, ConvergencePattern) {
-  gkt::DiluteNavierStokes ns(3);
+TEST(NavierStokesSolver, ConvergencePattern) {
+  gkt::NavierStokesSolver ns(3);
   gkt::HomogeneousCoolingState h(3);
   auto at = [&](const Rational& alpha, int n) {
     return ns.solve(alpha, n, h.solve(alpha, n + 1, gkt::HcsScheme::nonlinear).a);
@@ -122,7 +122,7 @@ TEST(DiluteNavierStokes, ConvergencePattern) {
 //   ν_η* = (3/(4d)) (1 − α + 2d/3)(1 + α)(1 + 7a2/16),
 //   ν_κ* = ((1+α)/d) [(d−1)/2 + (3/16)(d+8)(1−α) + (296 + 217d − 3(160 + 11d)α) a2/256].
 // Derived by the engine from the same matrices as the standard ones; compared as exact polynomials.
-TEST(DiluteNavierStokesFirstSonine, ModifiedCollisionFrequenciesExactly) {
+TEST(NavierStokesSolverFirstSonine, ModifiedCollisionFrequenciesExactly) {
   const auto a = RationalPolynomial::variable();
   for (int d : {2, 3}) {
     const auto fs = gkt::first_sonine_navier_stokes(d);
@@ -138,9 +138,9 @@ TEST(DiluteNavierStokesFirstSonine, ModifiedCollisionFrequenciesExactly) {
 // The Galerkin solver in the modified scheme at order 1 (f0 = f_M(1 + a2 S2)) reproduces the
 // modified closed forms up to the a2² terms they drop; they differ from the standard ones by far
 // more than that tolerance (12 % for κ* at α = 1/2).
-TEST(DiluteNavierStokesFirstSonine, ModifiedSolverMatchesClosedForms) {
+TEST(NavierStokesSolverFirstSonine, ModifiedSolverMatchesClosedForms) {
   for (int d : {2, 3}) {
-    gkt::DiluteNavierStokes ns(d);
+    gkt::NavierStokesSolver ns(d);
     gkt::HomogeneousCoolingState h(d);
     const auto fs = gkt::first_sonine_navier_stokes(d);
     for (const Rational& alpha : {Rational(9, 10), Rational(7, 10), Rational(1, 2)}) {
@@ -162,8 +162,8 @@ TEST(DiluteNavierStokesFirstSonine, ModifiedSolverMatchesClosedForms) {
 // Two trial spaces, one limit: at α = 0.9 the standard and modified sequences converge to the same
 // η*, κ*, μ* (order 6, within 1e-5); at α = 1/2, where the standard κ* swings by more than 20 %
 // between orders 2 and 6, the modified κ* stays within 5 %.
-TEST(DiluteNavierStokes, ModifiedSchemeAgreesAndIsSteadier) {
-  gkt::DiluteNavierStokes ns(3);
+TEST(NavierStokesSolver, ModifiedSchemeAgreesAndIsSteadier) {
+  gkt::NavierStokesSolver ns(3);
   gkt::HomogeneousCoolingState h(3);
   auto at = [&](const Rational& alpha, int n, gkt::SonineScheme s) {
     return ns.solve(alpha, n, h.solve(alpha, n + 1, gkt::HcsScheme::nonlinear).a, s);

@@ -1,4 +1,4 @@
-#include "gkt/dilute_navier_stokes.hpp"
+#include "gkt/navier_stokes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -190,12 +190,12 @@ FirstSonineNavierStokes first_sonine_navier_stokes(int dimension) {
   return out;
 }
 
-DiluteNavierStokes::DiluteNavierStokes(int dimension) : dimension_(dimension) {
+NavierStokesSolver::NavierStokesSolver(int dimension) : dimension_(dimension) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
 }
 
-void DiluteNavierStokes::ensure_built(int order, int k_max, int extra_columns, bool dense) {
+void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, bool dense) {
   const auto alpha = RationalPolynomial::variable();
   auto build = [&](PolynomialMatrices& target, int rank, int n_max) {
     if (target.n_max >= n_max && target.k_max >= k_max) return;
@@ -258,7 +258,7 @@ double EnskogState::pressure(int dimension, double alpha) const {
   return 1.0 + std::pow(2.0, dimension - 2) * (1.0 + alpha) * packing_fraction * chi;  // (15.5)
 }
 
-NavierStokesValues DiluteNavierStokes::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
+NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
                                              SonineScheme scheme, const EnskogState& dense) {
   if (order < 1) throw std::invalid_argument("order: must be >= 1");
   if (alpha.sign() <= 0 || alpha > Rational(1))

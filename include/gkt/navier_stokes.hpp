@@ -1,8 +1,10 @@
-// Navier–Stokes transport coefficients of the dilute gas of smooth inelastic hard spheres
-// (d = 3) or disks (d = 2), standard Sonine scheme (Maxwellian-weighted basis) about the
-// homogeneous cooling state (docs/theory.md §10; [brey1998], [garzo2019] ch. 3).
+// Navier–Stokes transport coefficients of smooth inelastic hard spheres (d = 3) or disks
+// (d = 2) about the homogeneous cooling state: dilute (Boltzmann; docs/theory.md §10,
+// [brey1998], [garzo2019] ch. 3) or dense (Enskog; theory.md §15, [garzo1999]), in the standard
+// (Maxwellian-weighted) or modified (HCS-weighted, [garzo2007modified]) Sonine scheme.
 //
-// Reduced as in docs/conventions.md: η* = η/η0, κ* = κ/κ0, μ* = nμ/(Tκ0).
+// Reduced as in docs/conventions.md: η* = η/η0, κ* = κ/κ0, μ* = nμ/(Tκ0), bulk viscosity/η0
+// (η0, κ0 the dilute elastic first-Sonine values).
 #pragma once
 
 #include <optional>
@@ -56,12 +58,13 @@ struct EnskogState {
   [[nodiscard]] double pressure(int dimension, double alpha) const;
 };
 
-/// Solver for orders N ≥ 1: the operator about the HCS is built once per dimension as exact
-/// polynomials in α; each call evaluates it at α (long double) and solves in double.
-class DiluteNavierStokes {
+/// Solver for orders N ≥ 1: the operator (and, on the first dense call, the collisional-transfer
+/// tables) are built once per dimension as exact polynomials in α; each call evaluates them at
+/// α (long double) and solves in double.
+class NavierStokesSolver {
  public:
   /// Throws std::invalid_argument unless dimension is 2 or 3.
-  explicit DiluteNavierStokes(int dimension);
+  explicit NavierStokesSolver(int dimension);
 
   /// Returns η*, κ*, μ* at Sonine order `order` (N polynomials per mode) about the HCS with
   /// cumulants hcs_a (a[0] = 1, a[1] = 0, a[2..K]); α in (0, 1]. The modified scheme multiplies
