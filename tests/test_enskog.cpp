@@ -7,6 +7,7 @@
 
 #include "gkt/collisional_transfer.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/linearized_operator.hpp"
 #include "gkt/navier_stokes.hpp"
 #include "gkt/pair_correlation.hpp"
 #include "gkt/quadratic_form_moments.hpp"
@@ -188,6 +189,7 @@ TEST(Enskog, ElasticLimitChapmanCowling) {
     for (int p = 2; p <= 4; ++p) {
       EXPECT_TRUE(m.heat_source_temperature[m.index(p, 0, 0)].is_zero()) << d << " " << p;
       EXPECT_TRUE(m.heat_source_density[m.index(p, 0, 0)].is_zero()) << d << " " << p;
+      EXPECT_TRUE(m.scalar_source[m.index(p, 0, 0)].is_zero()) << d << " " << p;
     }
   }
 }
@@ -215,6 +217,71 @@ TEST(Enskog, DiluteLimitAndSchemesAgree) {
     EXPECT_NEAR(s.thermal_conductivity / m.thermal_conductivity, 1.0, 1e-3) << d;
     EXPECT_NEAR(s.bulk_viscosity / m.bulk_viscosity, 1.0, 1e-12) << d;  // f0 f0 only: same in both schemes
   }
+}
+
+// First-order cooling rate ζ_U. Its f0 ∂f0 part is Garzó & Dufty's
+// ζ10 = −(3·2^{d−2}/d) φχ(1 − α²) exactly ((15.12) needs ⟨(H·c2) D_0⟩_{+1} = 3(1+α) as a
+// polynomial in α); the full ζ_U vanishes at α = 1 and as φ → 0, its f^(1) part ζ11 = ζ_U − ζ10
+// is ∝ φχ(1 − α²) at first Sonine, and the two schemes agree at α = 0.9 within 1e-5 (order 4).
+TEST(Enskog, FirstOrderCoolingRate) {
+  const auto alpha = RationalPolynomial::variable();
+  for (int d : {2, 3}) {
+    const auto m = gkt::collisional_transfer_moments<RationalPolynomial>(d, alpha, 1, 0);
+    EXPECT_EQ(m.cooling_gradient[m.index(0, 0)],
+              RationalPolynomial(Rational(3)) * (RationalPolynomial(Rational(1)) + alpha))
+        << d;
+    gkt::NavierStokesSolver ns(d);
+    EXPECT_EQ(ns.solve(Rational(1), 2, {1.0, 0.0}, gkt::SonineScheme::standard, enskog(d, Rational(3, 10)))
+                  .cooling_rate_first_order,
+              0.0);
+    double ratio = 0;
+    for (const Rational& phi : {Rational(1, 10), Rational(4, 10)}) {
+      const auto st = enskog(d, phi);
+      const double a = 0.5, f = st.packing_fraction * st.chi * (1 - a * a);
+      const double zeta_u =
+          ns.solve(Rational(1, 2), 1, {1.0, 0.0}, gkt::SonineScheme::standard, st).cooling_rate_first_order;
+      const double zeta10 = -3 * std::pow(2.0, d - 2) / d * f;
+      const double r = (zeta_u - zeta10) / f;
+      if (ratio != 0) {
+        EXPECT_NEAR(r, ratio, 1e-12) << d;
+      }
+      ratio = r;
+      EXPECT_GT(std::abs(zeta_u - zeta10), 1e-3 * std::abs(zeta10)) << d;  // ζ11 is not negligible
+    }
+    gkt::HomogeneousCoolingState h(d);
+    const auto hcs = h.solve(Rational(9, 10), 5, gkt::HcsScheme::nonlinear).a;
+    const auto st = enskog(d, Rational(3, 10));
+    EXPECT_NEAR(ns.solve(Rational(9, 10), 4, hcs, gkt::SonineScheme::standard, st).cooling_rate_first_order,
+                ns.solve(Rational(9, 10), 4, hcs, gkt::SonineScheme::modified, st).cooling_rate_first_order, 1e-5)
+        << d;
+    EXPECT_EQ(ns.solve(Rational(9, 10), 4, hcs).cooling_rate_first_order, 0.0);  // dilute
+  }
+}
+
+// Energy balance closes: the scalar equation is solved on S_2 … S_{N+1}; its S_1 (energy) row is
+// not imposed, and must then hold by itself once ζ_U is the cooling rate computed from the
+// collision integrals (15.12)–(15.13). At first Sonine about a Maxwellian, δ̃_2 = (ζ_U − ζ10)/c_2 and
+//   χ L(1, 2) δ̃_2 = −(d/2) ζ_U + (1 − p*) − e φχ K(1)/(d(1+α)),
+// which ties the energy moment of the gradient term (collisional work (p* − 1)∇·u and ζ10) and
+// of the linearized operator (ζ11) together.
+TEST(Enskog, EnergyRowClosesWithFirstOrderCoolingRate) {
+  for (int d : {2, 3})
+    for (const Rational& alpha : {Rational(9, 10), Rational(1, 2), Rational(1, 3)}) {
+      const Rational phi(1, 4);
+      const auto st = enskog(d, phi);
+      const double a = alpha.to_double(), pc = st.packing_fraction * st.chi;
+      gkt::NavierStokesSolver ns(d);
+      const double zeta_u = ns.solve(alpha, 1, {1.0, 0.0}, gkt::SonineScheme::standard, st).cooling_rate_first_order;
+      const double zeta10 = -3 * std::pow(2.0, d - 2) / d * pc * (1 - a * a);
+      const auto m = gkt::collisional_transfer_moments<Rational>(d, alpha, 2, 0);
+      const double c2 = 2 * (1 - a * a) * st.chi / d * m.cooling_scalar[m.index(2, 0)].to_double();
+      const double l12 = gkt::hcs_linearized_operator_matrices<Rational>(d, alpha, 0, 2, 0)[0](1, 2).to_double();
+      const double e = gkt::collisional_transfer_factor(d), p_star = st.pressure(d, a);
+      const double lhs = st.chi * l12 * (zeta_u - zeta10) / c2;
+      const double rhs =
+          -0.5 * d * zeta_u + (1 - p_star) - e * pc / (d * (1 + a)) * m.scalar_source[m.index(1, 0, 0)].to_double();
+      EXPECT_NEAR(lhs, rhs, 1e-12 * (1 + std::abs(rhs))) << d << " " << alpha;
+    }
 }
 
 // The pair correlation registry: χ(0) = 1, the derivative against a central difference, and

@@ -42,6 +42,13 @@ struct CollisionalTransferMoments {
   std::vector<Ring> heat_gradient_temperature;
   /// [k][l]: ⟨S_k(X1) S_l(X2) (H·G)⟩_0, n_H = 1.
   std::vector<Ring> heat_gradient_density;
+  /// [p][k][l]: ⟨S_k(X1) D_l(X2) (H·c2) [S_p(X1') − S_p(X1)]⟩_{−1} (scalar S_p), n_H = 1: the
+  /// trace of the ∇u source, which drives the scalar part of f^(1).
+  std::vector<Ring> scalar_source;
+  /// [k][l]: ⟨S_k(X1) D_l(X2) (H·c2)⟩_{+1}, n_H = 1: the f0 ∂f0 part of the cooling rate.
+  std::vector<Ring> cooling_gradient;
+  /// [q][k]: ⟨S_k(X1) S_q(X2)⟩_{+2} (scalar S_q): the f0 f^(1) part of the cooling rate.
+  std::vector<Ring> cooling_scalar;
 
   [[nodiscard]] std::size_t index(int p, int k, int l) const {
     return (static_cast<std::size_t>(p) * (k_max + 1) + k) * (k_max + 1) + l;

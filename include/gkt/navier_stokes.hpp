@@ -46,6 +46,8 @@ struct NavierStokesValues {
   double thermal_conductivity = 0;
   double density_heat_coefficient = 0;
   double bulk_viscosity = 0;  ///< /η0; zero in the dilute gas (theory.md (15.9))
+  /// ζ_U of ζ = ζ0 + ζ_U ∇·u (dimensionless; theory.md (15.13)); zero in the dilute gas.
+  double cooling_rate_first_order = 0;
 };
 
 /// The dense (Enskog) gas at one density: packing fraction φ, contact value χ of the pair
@@ -95,12 +97,13 @@ class NavierStokesSolver {
   struct DensePieces {
     int n_max = -1, k_max = -1;
     std::vector<std::vector<long double>> shear_source, shear_flux, shear_gradient, heat_source_temperature,
-        heat_source_density, heat_flux, heat_gradient_temperature, heat_gradient_density;
+        heat_source_density, heat_flux, heat_gradient_temperature, heat_gradient_density, scalar_source,
+        cooling_gradient, cooling_scalar;
   };
   DensePieces dense_;
-  Pieces vector_pieces_, tensor_pieces_;
+  Pieces vector_pieces_, tensor_pieces_, scalar_pieces_;
   int dimension_;
-  PolynomialMatrices vector_, tensor_;
+  PolynomialMatrices vector_, tensor_, scalar_;                  // scalar: built on the first dense call
   std::optional<std::vector<std::vector<long double>>> energy_;  // E(k, l) polynomials
   int energy_k_ = -1;
 };

@@ -197,6 +197,20 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
     out.heat_gradient_temperature = contract2<Ring>(raw, sk, tl);
     out.heat_gradient_density = contract2<Ring>(raw, sk, sk);
   }
+  const Table ss = sonine_table(sonine_twice_m(d, 0), n_max);  // scalar test functions
+  {                                                            // scalar source [p][k][l]
+    const Q f(pair, alpha, {x1, x2, x1p, dot_form(h, c2)}, {nk + nn, nd, nn, 1}, minus_one);
+    auto raw = [&](int a, int b, int j) { return f.moment({a, b, j, 1}) - f.moment({a + j, b, 0, 1}); };
+    out.scalar_source = contract3<Ring>(raw, ss, sk, dl);
+  }
+  {  // cooling rate pieces
+    const Q f(pair, alpha, {x1, x2, dot_form(h, c2)}, {nk, nd, 1}, Rational(1));
+    auto raw = [&](int a, int b) { return f.moment({b, a, 1, 0}); };
+    out.cooling_gradient = contract2<Ring>(raw, sk, dl);
+    const Q c(pair, alpha, {x1, x2}, {nk, nn}, Rational(2));
+    auto raw_c = [&](int a, int b) { return c.moment({a, b, 0, 0}); };
+    out.cooling_scalar = contract2<Ring>(raw_c, ss, sk);
+  }
   return out;
 }
 

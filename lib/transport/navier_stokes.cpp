@@ -145,6 +145,23 @@ ModePieces tensor_pieces(int d, int n_max, int k_max) {
   return r;
 }
 
+/// The scalar mode (the ∇·u part 𝒟 of f^(1), dense gas only; theory.md §15.5): d = D⁰(p, q) =
+/// −½⟨S_q(2xS_p' − S_p)⟩, u = ⟨x S_p' S_k⟩ (the source per unit of ζ_U − (2/d)(1 − p*)).
+ModePieces scalar_pieces(int d, int n_max, int k_max) {
+  ModePieces r;
+  const auto s = sonine_table(sonine_twice_m(d, 0), n_max);
+  r.d.assign(n_max + 1, std::vector<double>(n_max + 1));
+  for (int p = 0; p <= n_max; ++p) {
+    const Poly dp = add(times_x(derivative(s[p]), 1), s[p], Rational(-1, 2));  // x S_p' − S_p/2
+    for (int q = 0; q <= n_max; ++q) r.d[p][q] = (Rational(-1) * maxwell_average(d, multiply(s[q], dp))).to_double();
+  }
+  r.u.assign(n_max + 1, std::vector<double>(k_max + 1));
+  for (int p = 0; p <= n_max; ++p)
+    for (int k = 0; k <= k_max; ++k) r.u[p][k] = scaling_weight(d, p, k).to_double();
+  r.product = product_table(d, 0, n_max, k_max);
+  return r;
+}
+
 }  // namespace
 
 std::vector<Rational> FirstSonineNavierStokes::evaluate(const Rational& alpha, const Rational& a2,
@@ -225,8 +242,17 @@ void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, b
     const ModePieces t = tensor_pieces(dimension_, tensor_.n_max, tensor_.k_max);
     tensor_pieces_ = {t.d, t.m, t.u, t.u2, t.u_pressure, t.flux, t.product};
   }
-  if (dense && (dense_.n_max < vector_.n_max || dense_.k_max < k_max)) {
-    const int n = vector_.n_max, k = std::max(k_max, vector_.k_max);
+  if (dense) {
+    const int scalar_before = scalar_.n_max, scalar_k_before = scalar_.k_max;
+    build(scalar_, 0, order + 1 + extra_columns);  // S_2 … S_{N+1} (S_0, S_1: density, energy)
+    if (scalar_.n_max != scalar_before || scalar_.k_max != scalar_k_before) {
+      const ModePieces c = scalar_pieces(dimension_, scalar_.n_max, scalar_.k_max);
+      scalar_pieces_ = {c.d, c.m, c.u, c.u2, c.u_pressure, c.flux, c.product};
+    }
+  }
+  // The scalar mode reaches one index further than the vector mode (S_2 … S_{N+1}).
+  if (dense && (dense_.n_max < std::max(vector_.n_max, scalar_.n_max) || dense_.k_max < k_max)) {
+    const int n = std::max(vector_.n_max, scalar_.n_max), k = std::max(k_max, vector_.k_max);
     const auto c = collisional_transfer_moments<RationalPolynomial>(dimension_, alpha, n, k);
     auto convert = [](const std::vector<RationalPolynomial>& v) {
       std::vector<std::vector<long double>> out;
@@ -243,7 +269,10 @@ void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, b
               convert(c.heat_source_density),
               convert(c.heat_flux),
               convert(c.heat_gradient_temperature),
-              convert(c.heat_gradient_density)};
+              convert(c.heat_gradient_density),
+              convert(c.scalar_source),
+              convert(c.cooling_gradient),
+              convert(c.cooling_scalar)};
   }
   if (energy_k_ < k_max) {
     const int k = std::max({k_max + 2, energy_k_ + 4, 1});
@@ -405,6 +434,25 @@ NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, c
       out.shear_viscosity += gradient;
       out.bulk_viscosity = (d + 2.0) / d * gradient;
     }
+  }
+  if (is_dense) {  // scalar mode and ζ_U (theory.md §15.5)
+    const Pieces& sp = scalar_pieces_;
+    const Eigen::MatrixXd w = trial_weights(sp, 2, n, cols);
+    const Eigen::MatrixXd s_matrix =
+        operator_matrix(scalar_, 2, n, cols) * w.transpose() + zeta_term * block(sp.d, 2, n, cols) * w.transpose();
+    Eigen::VectorXd u_fixed = Eigen::VectorXd::Zero(n), u_zeta = Eigen::VectorXd::Zero(n);
+    for (int p = 0; p < n; ++p) {
+      for (int k = 0; k <= k_max; ++k) u_zeta(p) += hcs_a[k] * sp.u[p + 2][k];
+      u_fixed(p) =
+          -2.0 / d * (1.0 - p_star) * u_zeta(p) - e * phi_chi * inv / d * weighted3(dense_.scalar_source, p + 2);
+    }
+    const auto lu = s_matrix.partialPivLu();
+    const Eigen::VectorXd delta_fixed = lu.solve(u_fixed) / chi, delta_zeta = lu.solve(u_zeta) / chi;
+    Eigen::VectorXd cooling(cols);  // (15.13): ζ11 = (2(1−α²)χ/d) Σ a_k δ̃_q ⟨S_k S_q⟩_{+2}
+    for (int c = 0; c < cols; ++c) cooling(c) = 2.0 * (1.0 - a * a) * chi / d * weighted2(dense_.cooling_scalar, c + 2);
+    cooling = w * cooling;
+    const double zeta10 = -(1.0 - a) * e * phi_chi / (2.0 * d * d) * bilinear(dense_.cooling_gradient);  // (15.12)
+    out.cooling_rate_first_order = (zeta10 + cooling.dot(delta_fixed)) / (1.0 - cooling.dot(delta_zeta));
   }
   return out;
 }

@@ -70,6 +70,7 @@ class SmoothInelasticModel final : public TransportModel {
     names.emplace_back("critical_wavenumber_heat");
     names.emplace_back("critical_length");
     names.emplace_back("bulk_viscosity");
+    names.emplace_back("cooling_rate_first_order");
     names.emplace_back("pressure");
     return names;
   }
@@ -209,7 +210,8 @@ class SmoothInelasticModel final : public TransportModel {
 
  private:
   /// 0 shear viscosity, 1 thermal conductivity, 2 density heat coefficient, 3–5 the HCS stability
-  /// values of theory.md §14 (from ζ*, η*, κ*, μ* at the same order), 6 bulk viscosity; −1 otherwise.
+  /// values of theory.md §14 (from ζ*, η*, κ*, μ* at the same order), 6 bulk viscosity, 7 ζ_U;
+  /// −1 otherwise.
   static int transport_index(const std::string& c) {
     if (c == "shear_viscosity") return 0;
     if (c == "thermal_conductivity") return 1;
@@ -218,10 +220,12 @@ class SmoothInelasticModel final : public TransportModel {
     if (c == "critical_wavenumber_heat") return 4;
     if (c == "critical_length") return 5;
     if (c == "bulk_viscosity") return 6;
+    if (c == "cooling_rate_first_order") return 7;
     return -1;
   }
   static double pick_transport(const NavierStokesValues& v, int which, int d, double zeta) {
     if (which == 6) return v.bulk_viscosity;
+    if (which == 7) return v.cooling_rate_first_order;
     if (which < 3)
       return which == 0 ? v.shear_viscosity : which == 1 ? v.thermal_conductivity : v.density_heat_coefficient;
     const HcsStability s =
@@ -231,7 +235,7 @@ class SmoothInelasticModel final : public TransportModel {
   CoefficientValue transport_value(HomogeneousCoolingState& hcs, int d, const Rational& alpha,
                                    const std::string& scheme, SonineScheme sonine, const Dense& dense, int which,
                                    const OrderRequest& order) {
-    if (scheme == "linear" && (dense.phi.sign() > 0 || which == 6)) {
+    if (scheme == "linear" && (dense.phi.sign() > 0 || which >= 6)) {
       // First Sonine about f_M(1 + a2 S2) with the van Noije–Ernst a2, through the solver (the
       // a2² products of the collisional terms kept: theory.md §15.3); error against orders 2, 3.
       const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
