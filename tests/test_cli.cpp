@@ -213,7 +213,9 @@ TEST(CliFormula, TextLatexAndHardSpheres) {
            {" --coefficient a2 --order 2", "--order: \"smooth-inelastic\" has closed forms at order 1 only"},
            {" --coefficient viscosity", "--coefficient: unknown coefficient 'viscosity'"},
            {" --coefficient a2 --set 'dimension=[2,3]'", "dimension: a formula needs a single value"},
-           {" --coefficient a2 --format mathml", "--format"}}) {
+           {" --coefficient a2 --format mathml", "--format"},
+           {" --coefficient shear_viscosity --set packing_fraction=0.2",
+            "packing_fraction: closed forms are printed for the dilute gas only"}}) {
     const CliRun bad = run_gkt("formula " + scene_path("hcs_first_sonine.toml") + args);
     EXPECT_EQ(bad.status, 2) << args;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;

@@ -114,6 +114,9 @@ std::string formula(const std::string& scene_path, const std::vector<std::string
     if (axis.key == "dimension") dimension = static_cast<int>(axis.values[0].to_double());
     if (axis.key == "order") n = static_cast<int>(axis.values[0].to_double());
     if (axis.key == "tolerance") throw std::invalid_argument("tolerance: a formula is at a fixed order; use --order");
+    if (axis.key == "packing_fraction" && axis.values[0].sign() != 0)
+      throw std::invalid_argument(
+          "packing_fraction: closed forms are printed for the dilute gas only (packing_fraction = 0); use gkt table");
   }
   const auto model = make_transport_model(scene.model);
   const auto names = model->coefficient_names();
