@@ -24,7 +24,8 @@ namespace gkt {
 template <class Ring>
 struct CollisionalTransferMoments {
   int dimension = 3;
-  int n_max = 0;
+  int n_max = 0;   ///< largest basis index of the flux tables
+  int n_test = 0;  ///< largest test index of the source tables (≤ n_max)
   int k_max = 0;
   /// [p][k][l]: ⟨S_k(X1) D_l(X2) [Y(c1'):(H c2) S_p(X1') − Y(c1):(H c2) S_p(X1)]⟩_{−1}, Y = Y_2, n_H = 1.
   std::vector<Ring> shear_source;
@@ -57,9 +58,11 @@ struct CollisionalTransferMoments {
 };
 
 /// Returns the collisional-transfer moments for d = 2, 3 (exact; Ring = Rational for a numeric
-/// α, RationalPolynomial for α symbolic).
+/// α, RationalPolynomial for α symbolic): flux tables to basis index n_max, source tables to
+/// test index n_test (default, or out of [0, n_max]: n_max).
 template <class Ring>
-CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, const Ring& alpha, int n_max, int k_max);
+CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, const Ring& alpha, int n_max, int k_max,
+                                                              int n_test = -1);
 
 /// Returns e_d = n σ^d π^{−d} J_{−1,0}/(n σ^{d−1} v0 ν φ) — the factor that turns a (σ̂·g)^{−1}
 /// collision average into a source term of the Galerkin equations per unit packing fraction:
@@ -67,8 +70,8 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
 double collisional_transfer_factor(int dimension);
 
 extern template CollisionalTransferMoments<Rational> collisional_transfer_moments<Rational>(int, const Rational&, int,
-                                                                                            int);
+                                                                                            int, int);
 extern template CollisionalTransferMoments<RationalPolynomial> collisional_transfer_moments<RationalPolynomial>(
-    int, const RationalPolynomial&, int, int);
+    int, const RationalPolynomial&, int, int, int);
 
 }  // namespace gkt

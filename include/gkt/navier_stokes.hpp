@@ -95,7 +95,7 @@ class NavierStokesSolver {
   void ensure_built(int order, int k_max, int extra_columns, bool dense);
   /// Collisional-transfer tensors (theory.md §15) as α-polynomials, built on the first dense call.
   struct DensePieces {
-    int n_max = -1, k_max = -1;
+    int n_max = -1, k_max = -1, n_test = -1;
     std::vector<std::vector<long double>> shear_source, shear_flux, shear_gradient, heat_source_temperature,
         heat_source_density, heat_flux, heat_gradient_temperature, heat_gradient_density, scalar_source,
         cooling_gradient, cooling_scalar;

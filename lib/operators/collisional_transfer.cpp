@@ -112,8 +112,10 @@ double collisional_transfer_factor(int dimension) {
 }
 
 template <class Ring>
-CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, const Ring& alpha, int n_max, int k_max) {
+CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, const Ring& alpha, int n_max, int k_max,
+                                                              int n_test) {
   if (dimension != 2 && dimension != 3) throw std::invalid_argument("dimension: must be 2 or 3");
+  if (n_test < 0 || n_test > n_max) n_test = n_max;
   if (n_max < 0 || k_max < 0) throw std::invalid_argument("collisional_transfer_moments: negative size");
   const int d = dimension;
   const CollisionPair pair{d, Rational(1), Rational(1), Rational(1), Rational(1)};
@@ -123,6 +125,11 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
   const Table dl = derivative_factors(d, k_max);
   const Table tl = temperature_factors(d, k_max);
   const int nk = max_degree(sk), nd = max_degree(dl), nt = max_degree(tl), nn = n_max + 1;
+  // Source tables need only the test rows p ≤ n_test (their boxes grow with it).
+  const Table st_test = sonine_table(sonine_twice_m(d, 2), n_test);
+  const Table sv_test = sonine_table(sonine_twice_m(d, 1), n_test);
+  const Table ss_test = sonine_table(sonine_twice_m(d, 0), n_test);
+  const int nn_test = n_test + 1;
 
   const SlotVector c1 = slot_vector(Slot::v1), c2 = slot_vector(Slot::v2), c1p = slot_vector(Slot::v1_post);
   const SlotVector h = collision_vector();
@@ -134,9 +141,11 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
   CollisionalTransferMoments<Ring> out;
   out.dimension = d;
   out.n_max = n_max;
+  out.n_test = n_test;
   out.k_max = k_max;
 
   {  // shear source: polarisation (c·H)(c·c2) = ¼[(c·(H + c2))² − (c·(H − c2))²]
+    const int nn = nn_test;
     const Q gp(pair, alpha, {x1, x2, x1p, dot_form(c1p, combine(h, c2, Rational(1)))}, {nk, nd, nn, 2}, minus_one);
     const Q gm(pair, alpha, {x1, x2, x1p, dot_form(c1p, combine(h, c2, minus_one))}, {nk, nd, nn, 2}, minus_one);
     const Q lp(pair, alpha, {x1, x2, dot_form(c1, combine(h, c2, Rational(1)))}, {nk + nn, nd, 2}, minus_one);
@@ -153,7 +162,7 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
       detail::scale(loss2, inv_d);
       return (gain - gain2) - (loss - loss2);
     };
-    out.shear_source = contract3<Ring>(raw, st, sk, dl);
+    out.shear_source = contract3<Ring>(raw, st_test, sk, dl);
   }
   {  // shear flux [q][k]
     const Q f(pair, alpha, {x1, x2, dot_form(h, c2), dot_form(h, h)}, {nk, nn + 1, 2, 1}, minus_one);
@@ -170,12 +179,12 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
     out.shear_gradient = contract2<Ring>(raw, sk, dl);
   }
   {  // heat sources [p][k][l]
-    const int nb = std::max(nt, nk);
+    const int nb = std::max(nt, nk), nn = nn_test;
     const Q hg(pair, alpha, {x1, x2, x1p, dot_form(h, c1p)}, {nk, nb, nn, 1}, minus_one);
     const Q hl(pair, alpha, {x1, x2, dot_form(h, c1)}, {nk + nn, nb, 1}, minus_one);
     auto raw = [&](int a, int b, int j) { return hg.moment({a, b, j, 1}) - hl.moment({a + j, b, 1, 0}); };
-    out.heat_source_temperature = contract3<Ring>(raw, sv, sk, tl);
-    out.heat_source_density = contract3<Ring>(raw, sv, sk, sk);
+    out.heat_source_temperature = contract3<Ring>(raw, sv_test, sk, tl);
+    out.heat_source_density = contract3<Ring>(raw, sv_test, sk, sk);
   }
   {  // heat flux [q][k]: (H·G) = ½ H·(c1 + c2)
     const Q f(pair, alpha, {x1, x2, dot_form(h, g), dot_form(h, c2)}, {nk, nn, 1, 1}, minus_one);
@@ -199,9 +208,9 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
   }
   const Table ss = sonine_table(sonine_twice_m(d, 0), n_max);  // scalar test functions
   {                                                            // scalar source [p][k][l]
-    const Q f(pair, alpha, {x1, x2, x1p, dot_form(h, c2)}, {nk + nn, nd, nn, 1}, minus_one);
+    const Q f(pair, alpha, {x1, x2, x1p, dot_form(h, c2)}, {nk + nn_test, nd, nn_test, 1}, minus_one);
     auto raw = [&](int a, int b, int j) { return f.moment({a, b, j, 1}) - f.moment({a + j, b, 0, 1}); };
-    out.scalar_source = contract3<Ring>(raw, ss, sk, dl);
+    out.scalar_source = contract3<Ring>(raw, ss_test, sk, dl);
   }
   {  // cooling rate pieces
     const Q f(pair, alpha, {x1, x2, dot_form(h, c2)}, {nk, nd, 1}, Rational(1));
@@ -214,8 +223,9 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
   return out;
 }
 
-template CollisionalTransferMoments<Rational> collisional_transfer_moments<Rational>(int, const Rational&, int, int);
+template CollisionalTransferMoments<Rational> collisional_transfer_moments<Rational>(int, const Rational&, int, int,
+                                                                                     int);
 template CollisionalTransferMoments<RationalPolynomial> collisional_transfer_moments<RationalPolynomial>(
-    int, const RationalPolynomial&, int, int);
+    int, const RationalPolynomial&, int, int, int);
 
 }  // namespace gkt

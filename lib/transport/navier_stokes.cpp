@@ -251,9 +251,12 @@ void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, b
     }
   }
   // The scalar mode reaches one index further than the vector mode (S_2 … S_{N+1}).
-  if (dense && (dense_.n_max < std::max(vector_.n_max, scalar_.n_max) || dense_.k_max < k_max)) {
+  // Source tables: test rows up to N + 1 (scalar S_{N+1}), with the same headroom as the operators.
+  if (dense &&
+      (dense_.n_max < std::max(vector_.n_max, scalar_.n_max) || dense_.k_max < k_max || dense_.n_test < order + 1)) {
     const int n = std::max(vector_.n_max, scalar_.n_max), k = std::max(k_max, vector_.k_max);
-    const auto c = collisional_transfer_moments<RationalPolynomial>(dimension_, alpha, n, k);
+    const int n_test = std::min(n, std::max(order + 3, dense_.n_test + 4));
+    const auto c = collisional_transfer_moments<RationalPolynomial>(dimension_, alpha, n, k, n_test);
     auto convert = [](const std::vector<RationalPolynomial>& v) {
       std::vector<std::vector<long double>> out;
       out.reserve(v.size());
@@ -262,6 +265,7 @@ void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, b
     };
     dense_ = {n,
               k,
+              n_test,
               convert(c.shear_source),
               convert(c.shear_flux),
               convert(c.shear_gradient),
