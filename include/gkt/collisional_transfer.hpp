@@ -66,7 +66,7 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
 
 /// Returns e_d = n σ^d π^{−d} J_{−1,0}/(n σ^{d−1} v0 ν φ) — the factor that turns a (σ̂·g)^{−1}
 /// collision average into a source term of the Galerkin equations per unit packing fraction:
-/// 2^{d−1} d (12 in 3D, 4 in 2D; theory.md (15.4)).
+/// 2^{d−1} d (12 in 3D, 4 in 2D; theory.md (15.3)).
 double collisional_transfer_factor(int dimension);
 
 extern template CollisionalTransferMoments<Rational> collisional_transfer_moments<Rational>(int, const Rational&, int,

@@ -105,7 +105,7 @@ int max_degree(const Table& t) {
 }  // namespace
 
 double collisional_transfer_factor(int dimension) {
-  // n σ^d = c_d φ with c_d = 2^{d−1} d Γ(d/2)/π^{d/2}; π^{−d} J_{−1,0} = ν √(π/2) (theory.md (15.4)).
+  // n σ^d = c_d φ with c_d = 2^{d−1} d Γ(d/2)/π^{d/2}; π^{−d} J_{−1,0} = ν √(π/2) (theory.md (15.3)).
   const double d = dimension;
   const double c_d = std::pow(2.0, d - 1) * d * std::tgamma(d / 2) / std::pow(M_PI, d / 2);
   return c_d * linearized_operator_prefactor(dimension) * std::sqrt(M_PI / 2);

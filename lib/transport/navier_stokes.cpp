@@ -424,7 +424,7 @@ NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, c
       for (int k = 0; k <= k_max; ++k) sc(p) += hcs_a[k] * t.u[p][k];
     Eigen::VectorXd flux = flux_vector(t.flux, 0, cols);
     if (is_dense) {
-      for (int p = 0; p < n; ++p) sc(p) -= e * phi_chi * inv * weighted3(dense_.shear_source, p);  // (15.3)
+      for (int p = 0; p < n; ++p) sc(p) -= e * phi_chi * inv * weighted3(dense_.shear_source, p);  // (15.4)
       for (int c = 0; c < cols; ++c)
         flux(c) +=
             0.5 * (1.0 + a) * d / (d - 1.0) * e * phi_chi * inv * inv * weighted2(dense_.shear_flux, c);  // (15.7)
