@@ -11,6 +11,7 @@
 
 #include "gkt/collision_rule.hpp"
 #include "gkt/dense_matrix.hpp"
+#include "gkt/quadratic_form_moments.hpp"
 #include "gkt/rational.hpp"
 #include "gkt/rational_polynomial.hpp"
 
@@ -49,20 +50,17 @@ class CollisionMomentTable {
  public:
   /// Expands J up to degree max_degree[i] in X_{x_slots[i]} and max_contraction in c_a·c_b; with
   /// power = s the integrand carries the extra factor (σ̂·g)^s (theory.md (2.9)).
-  CollisionMomentTable(const CollisionPair& pair, const Ring& alpha, std::vector<Slot> x_slots,
-                       std::vector<int> max_degree, std::optional<std::pair<Slot, Slot>> contraction,
+  CollisionMomentTable(const CollisionPair& pair, const Ring& alpha, const std::vector<Slot>& x_slots,
+                       const std::vector<int>& max_degree, std::optional<std::pair<Slot, Slot>> contraction,
                        int max_contraction, const Rational& power = Rational(0));
   /// Returns ⟨(σ̂·g)^s Π_i X_{x_slots[i]}^{k[i]} (c_a·c_b)^j⟩/J_s0 (exact), J_s0 = ⟨(σ̂·g)^s⟩.
   [[nodiscard]] Ring moment(const std::vector<int>& k, int j = 0) const;
   /// Returns J_s0/J0 = Γ(1 + s/2)(A0/N2_0)^{s/2} (double; 1 for s = 0): multiply moment() by it
   /// to normalise by J0.
-  [[nodiscard]] double power_factor() const { return power_factor_; }
+  [[nodiscard]] double power_factor() const { return moments_.power_factor(); }
 
  private:
-  std::vector<Slot> x_slots_;
-  std::vector<int> box_;
-  std::vector<Ring> values_;  // already multiplied by the factorials and (√θ_aθ_b)^j
-  double power_factor_ = 1.0;
+  QuadraticFormMoments<Ring> moments_;  // forms θ_s u_s² (positions 0..2) and c_a·c_b (position 3)
 };
 
 /// Returns J0 = ∫dv1 dv2 dσ̂ Θ(σ̂·g)(σ̂·g) e^{−θ_i v1² − θ_j v2²} = K_d √(θ_i+θ_j) (θ_iθ_j)^{−(d+1)/2}

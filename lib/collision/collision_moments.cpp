@@ -5,6 +5,7 @@
 
 #include "collision/generating_series.hpp"
 #include "gkt/gaussian_collision_integral.hpp"
+#include "gkt/quadratic_form_moments.hpp"
 #include "gkt/sonine.hpp"
 
 namespace gkt {
@@ -33,13 +34,6 @@ DenseMatrix<Ring> contract_with_sonine(const std::vector<std::vector<Rational>>&
   return out;
 }
 
-detail::ExactForm reference_form(const CollisionPair& pair) {
-  detail::ExactForm q0{};
-  q0[0][0] = pair.theta_i;
-  q0[1][1] = pair.theta_j;
-  return q0;
-}
-
 }  // namespace
 
 double reference_collision_integral(const CollisionPair& pair) {
@@ -59,7 +53,7 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
   const int a = static_cast<int>(unknown), b = static_cast<int>(test);
   const Rational& theta_a = pair.theta(unknown);
   const Rational& theta_b = pair.theta(test);
-  const detail::ExactForm q0 = reference_form(pair);
+  const detail::ExactForm q0 = detail::reference_form(pair);
   std::array<detail::ExactForm, detail::kVariables> dq{};
   DenseMatrix<Ring> y(n_max + 1, n_max + 1);
 
@@ -121,67 +115,69 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
   return contract_with_sonine(sonine, y, n_max);
 }
 
+namespace {
+
+/// The forms of a CollisionMomentTable: θ_s u_s² at positions 0..2, and √(θ_aθ_b) u_a·u_b = c_a·c_b
+/// at position 3 (theory.md (4.1)); validates the slots.
+std::vector<VelocityForm> table_forms(const CollisionPair& pair, const std::vector<Slot>& x_slots,
+                                      std::vector<int>& degrees,
+                                      const std::optional<std::pair<Slot, Slot>>& contraction, int max_contraction) {
+  if (x_slots.size() > 3 || x_slots.size() != degrees.size())
+    throw std::invalid_argument("CollisionMomentTable: up to three X slots, one degree each");
+  std::vector<VelocityForm> forms;
+  for (std::size_t i = 0; i < x_slots.size(); ++i) {
+    for (std::size_t k = 0; k < i; ++k)
+      if (x_slots[k] == x_slots[i]) throw std::invalid_argument("CollisionMomentTable: repeated X slot");
+    VelocityForm f = dot_form(slot_vector(x_slots[i]), slot_vector(x_slots[i]));
+    for (auto& row : f)
+      for (auto& v : row) v *= pair.theta(x_slots[i]);
+    forms.push_back(f);
+  }
+  if (!contraction) return forms;
+  if (contraction->first == contraction->second)
+    throw std::invalid_argument("CollisionMomentTable: contraction needs two distinct slots");
+  Rational cross_scale(1);
+  const Rational product = pair.theta(contraction->first) * pair.theta(contraction->second);
+  if (max_contraction > 0) {
+    if (!product.is_square())
+      throw std::domain_error("CollisionMomentTable: θ_a θ_b = " + product.to_string() + " is not a square");
+    cross_scale = product.exact_sqrt();
+  }
+  while (forms.size() < 3) {
+    forms.emplace_back();  // zero form, degree 0
+    degrees.push_back(0);
+  }
+  VelocityForm f = dot_form(slot_vector(contraction->first), slot_vector(contraction->second));
+  for (auto& row : f)
+    for (auto& v : row) v *= cross_scale;
+  forms.push_back(f);
+  degrees.push_back(max_contraction);
+  return forms;
+}
+
+template <class Ring>
+QuadraticFormMoments<Ring> table_moments(const CollisionPair& pair, const Ring& alpha, const std::vector<Slot>& x_slots,
+                                         std::vector<int> degrees,
+                                         const std::optional<std::pair<Slot, Slot>>& contraction, int max_contraction,
+                                         const Rational& power) {
+  const auto forms = table_forms(pair, x_slots, degrees, contraction, max_contraction);
+  return QuadraticFormMoments<Ring>(pair, alpha, forms, degrees, power);
+}
+
+}  // namespace
+
 template <class Ring>
 CollisionMomentTable<Ring>::CollisionMomentTable(const CollisionPair& pair, const Ring& alpha,
-                                                 std::vector<Slot> x_slots, std::vector<int> max_degree,
+                                                 const std::vector<Slot>& x_slots, const std::vector<int>& max_degree,
                                                  std::optional<std::pair<Slot, Slot>> contraction, int max_contraction,
                                                  const Rational& power)
-    : x_slots_(std::move(x_slots)) {
-  pair.validate();
-  if (x_slots_.size() > 3 || x_slots_.size() != max_degree.size())
-    throw std::invalid_argument("CollisionMomentTable: up to three X slots, one degree each");
-  std::array<detail::ExactForm, detail::kVariables> dq{};
-  detail::Exponents box{};
-  for (std::size_t i = 0; i < x_slots_.size(); ++i) {
-    const int s = static_cast<int>(x_slots_[i]);
-    for (std::size_t k = 0; k < i; ++k)
-      if (x_slots_[k] == x_slots_[i]) throw std::invalid_argument("CollisionMomentTable: repeated X slot");
-    dq[i][s][s] = -pair.theta(x_slots_[i]);
-    box[i] = max_degree[i];
-  }
-  Rational cross_scale(1);
-  if (contraction) {
-    const int a = static_cast<int>(contraction->first), b = static_cast<int>(contraction->second);
-    if (a == b) throw std::invalid_argument("CollisionMomentTable: contraction needs two distinct slots");
-    dq[3][a][b] = Rational(-1, 2);
-    dq[3][b][a] = Rational(-1, 2);
-    box[3] = max_contraction;
-    const Rational product = pair.theta(contraction->first) * pair.theta(contraction->second);
-    if (max_contraction > 0) {
-      if (!product.is_square())
-        throw std::domain_error("CollisionMomentTable: θ_a θ_b = " + product.to_string() + " is not a square");
-      cross_scale = product.exact_sqrt();
-    }
-  }
-  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, reference_form(pair), dq, box, power);
-  const double s = power.to_double();
-  power_factor_ = std::tgamma(1 + s / 2) * std::pow((f.a0 / f.n2_0).to_double(), s / 2);
-  box_.assign(box.begin(), box.end());
-  values_.reserve(f.coefficients.size());
-  for (int k0 = 0; k0 <= box[0]; ++k0)
-    for (int k1 = 0; k1 <= box[1]; ++k1)
-      for (int k2 = 0; k2 <= box[2]; ++k2)
-        for (int k3 = 0; k3 <= box[3]; ++k3) {
-          Ring v = f(k0, k1, k2, k3);
-          detail::scale(v, Rational::factorial(static_cast<unsigned long>(k0)) *
-                               Rational::factorial(static_cast<unsigned long>(k1)) *
-                               Rational::factorial(static_cast<unsigned long>(k2)) *
-                               Rational::factorial(static_cast<unsigned long>(k3)) * cross_scale.pow(k3));
-          values_.push_back(std::move(v));
-        }
-}
+    : moments_(table_moments(pair, alpha, x_slots, max_degree, contraction, max_contraction, power)) {}
 
 template <class Ring>
 Ring CollisionMomentTable<Ring>::moment(const std::vector<int>& k, int j) const {
   std::array<int, 4> e{0, 0, 0, j};
   for (std::size_t i = 0; i < k.size(); ++i) e[i] = k[i];
-  std::size_t index = 0;
-  for (int v = 0; v < 4; ++v) {
-    if (e[v] < 0 || e[v] > box_[static_cast<std::size_t>(v)])
-      throw std::out_of_range("CollisionMomentTable: degree outside the expanded box");
-    index = index * static_cast<std::size_t>(box_[static_cast<std::size_t>(v)] + 1) + static_cast<std::size_t>(e[v]);
-  }
-  return values_[index];
+  return moments_.moment(e);
 }
 
 template class CollisionMomentTable<Rational>;
@@ -195,7 +191,7 @@ ScalarMomentTable<Ring> scalar_collision_moments(const CollisionPair& pair, cons
   dq[0][0][0] = -pair.theta_i;  // x0 ↔ X1
   dq[1][1][1] = -pair.theta_j;  // x1 ↔ X2
   dq[2][2][2] = -pair.theta_i;  // x2 ↔ X1'
-  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, reference_form(pair), dq,
+  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, detail::reference_form(pair), dq,
                                                                   {2 * k_max, k_max, k_max, 0});
   ScalarMomentTable<Ring> table;
   table.k_max = k_max;

@@ -23,6 +23,14 @@ using ExactForm = std::array<std::array<Rational, 4>, 4>;
 inline constexpr int kVariables = 4;
 using Exponents = std::array<int, kVariables>;
 
+/// Returns the reference form Q0 = diag(θ_i, θ_j, 0, 0): the two Maxwellians (theory.md (2.8)).
+inline ExactForm reference_form(const CollisionPair& pair) {
+  ExactForm q0{};
+  q0[0][0] = pair.theta_i;
+  q0[1][1] = pair.theta_j;
+  return q0;
+}
+
 /// A polynomial in the auxiliary variables with few terms (exponent vectors e, coefficients c).
 template <class Ring>
 struct SmallPolynomial {

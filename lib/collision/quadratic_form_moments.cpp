@@ -35,9 +35,6 @@ QuadraticFormMoments<Ring>::QuadraticFormMoments(const CollisionPair& pair, cons
   pair.validate();
   if (forms.size() > 4 || forms.size() != degrees.size())
     throw std::invalid_argument("QuadraticFormMoments: up to four forms, one degree each");
-  detail::ExactForm q0{};
-  q0[0][0] = pair.theta_i;
-  q0[1][1] = pair.theta_j;
   std::array<detail::ExactForm, detail::kVariables> dq{};
   detail::Exponents box{};
   for (std::size_t v = 0; v < forms.size(); ++v) {
@@ -46,7 +43,8 @@ QuadraticFormMoments<Ring>::QuadraticFormMoments(const CollisionPair& pair, cons
       for (std::size_t b = 0; b < 4; ++b) dq[v][a][b] = -forms[v][a][b];  // e^{+x F}: coefficient k! ↔ ⟨F^k⟩
     box[v] = degrees[v];
   }
-  const auto f = detail::expand_gaussian_collision_integral<Ring>(pair, alpha, q0, dq, box, power);
+  const auto f =
+      detail::expand_gaussian_collision_integral<Ring>(pair, alpha, detail::reference_form(pair), dq, box, power);
   const double s = power.to_double();
   power_factor_ = std::tgamma(1 + s / 2) * std::pow((f.a0 / f.n2_0).to_double(), s / 2);
   box_ = {box[0], box[1], box[2], box[3]};
