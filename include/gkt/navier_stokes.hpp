@@ -82,14 +82,20 @@ class NavierStokesSolver {
     std::vector<DenseMatrix<std::vector<long double>>> by_weight;  // [k](p, q): coefficients of α^j
   };
   /// The α-independent Galerkin pieces (theory.md (10.5)) at the built sizes, in double.
+  /// The α-independent, exact pieces of one mode's Galerkin system (theory.md (10.4)–(10.7)),
+  /// rounded to double.
   struct Pieces {
-    std::vector<std::vector<double>> d, m, u, u2;
+    std::vector<std::vector<double>> d, m;        ///< D(p, q), M(p, q)
+    std::vector<std::vector<double>> u, u2;       ///< source projections per HCS weight S_k (u2: density)
     std::vector<std::vector<double>> u_pressure;  ///< ⟨((d/2)S_p + xS_p') S_k⟩: the part ∝ p* (vector)
-    std::vector<double> flux;
+    std::vector<double> flux;                     ///< ⟨x² S_q⟩
     /// product[k](q, r) = ⟨w S_k S_q S_r⟩/⟨w S_r²⟩ (w the mode's weight; S_k scalar index), the
-    /// expansion of S_k S_q in the mode's basis (modified scheme).
+    /// expansion of S_k S_q in the mode's basis (modified scheme, theory.md (10.9)).
     std::vector<std::vector<std::vector<double>>> product;
   };
+  static Pieces vector_pieces(int d, int n_max, int k_max);  ///< heat and density modes, c S_p
+  static Pieces tensor_pieces(int d, int n_max, int k_max);  ///< shear mode, Y_2 S_p
+  static Pieces scalar_pieces(int d, int n_max, int k_max);  ///< ∇·u mode (dense gas), S_p
   /// Builds the exact operators for `order` trial functions plus `extra_columns` more (the
   /// modified scheme's trial functions reach degree order + K).
   void ensure_built(int order, int k_max, int extra_columns, bool dense);
