@@ -69,6 +69,10 @@ CollisionalTransferMoments<Ring> collisional_transfer_moments(int dimension, con
 /// 2^{d−1} d (12 in 3D, 4 in 2D; theory.md (15.3)).
 double collisional_transfer_factor(int dimension);
 
+/// Returns g_d = c_d² ν √2 π^{(d−1)/2}/(d (d+2)² Γ(d/2)), n σ^d = c_d φ: the factor of the φ²χ
+/// (f0 ∂f0) terms of η*, bulk viscosity, κ*, μ* (theory.md (15.8), (15.11)).
+double collisional_gradient_factor(int dimension);
+
 extern template CollisionalTransferMoments<Rational> collisional_transfer_moments<Rational>(int, const Rational&, int,
                                                                                             int, int);
 extern template CollisionalTransferMoments<RationalPolynomial> collisional_transfer_moments<RationalPolynomial>(

@@ -109,6 +109,7 @@ class NavierStokesSolver {
   DensePieces dense_;
   Pieces vector_pieces_, tensor_pieces_, scalar_pieces_;
   int dimension_;
+  double transfer_factor_ = 0, gradient_factor_ = 0;             // e_d and g_d of theory.md (15.3), (15.8)
   PolynomialMatrices vector_, tensor_, scalar_;                  // scalar: built on the first dense call
   std::optional<std::vector<std::vector<long double>>> energy_;  // E(k, l) polynomials
   int energy_k_ = -1;

@@ -102,13 +102,23 @@ int max_degree(const Table& t) {
   return static_cast<int>(n) - 1;
 }
 
+/// Returns c_d with n σ^d = c_d φ: c_d = 2^{d−1} d Γ(d/2)/π^{d/2}.
+double packing_factor(int dimension) {
+  const double d = dimension;
+  return std::pow(2.0, d - 1) * d * std::tgamma(d / 2) / std::pow(M_PI, d / 2);
+}
+
 }  // namespace
 
 double collisional_transfer_factor(int dimension) {
-  // n σ^d = c_d φ with c_d = 2^{d−1} d Γ(d/2)/π^{d/2}; π^{−d} J_{−1,0} = ν √(π/2) (theory.md (15.3)).
-  const double d = dimension;
-  const double c_d = std::pow(2.0, d - 1) * d * std::tgamma(d / 2) / std::pow(M_PI, d / 2);
-  return c_d * linearized_operator_prefactor(dimension) * std::sqrt(M_PI / 2);
+  // π^{−d} J_{−1,0} = ν √(π/2) (theory.md (15.3)).
+  return packing_factor(dimension) * linearized_operator_prefactor(dimension) * std::sqrt(M_PI / 2);
+}
+
+double collisional_gradient_factor(int dimension) {
+  const double d = dimension, c_d = packing_factor(dimension);
+  return c_d * c_d * linearized_operator_prefactor(dimension) * std::sqrt(2.0) * std::pow(M_PI, (d - 1) / 2) /
+         (d * (d + 2) * (d + 2) * std::tgamma(d / 2));
 }
 
 template <class Ring>

@@ -194,6 +194,8 @@ NavierStokesSolver::Pieces NavierStokesSolver::scalar_pieces(int d, int n_max, i
 NavierStokesSolver::NavierStokesSolver(int dimension) : dimension_(dimension) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  transfer_factor_ = collisional_transfer_factor(dimension);
+  gradient_factor_ = collisional_gradient_factor(dimension);
 }
 
 void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, bool dense) {
@@ -287,17 +289,19 @@ NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, c
   const double a = alpha.to_double();
 
   // R_1 = Σ a_k a_l E(k, l)  (theory.md (9.2)); ζ_r/ν = −(2/d) R_1.
-  double r1 = 0;
-  const int ne = energy_k_ + 1;
-  for (int k = 0; k <= k_max; ++k)
-    for (int l = 0; l <= k_max; ++l)
-      r1 += hcs_a[k] * hcs_a[l] * detail::evaluate((*energy_)[static_cast<std::size_t>(k) * ne + l], x);
-  const double zeta_term = -2.0 / d * r1;
+  auto bilinear = [&](const std::vector<std::vector<long double>>& t, int stride) {  // Σ_kl a_k a_l t[k][l]
+    double acc = 0;
+    for (int k = 0; k <= k_max; ++k)
+      for (int l = 0; l <= k_max; ++l)
+        acc += hcs_a[k] * hcs_a[l] * detail::evaluate(t[static_cast<std::size_t>(k) * stride + l], x);
+    return acc;
+  };
+  const double zeta_term = -2.0 / d * bilinear(*energy_, energy_k_ + 1);
 
   // Enskog (theory.md §15): the operator and ζ0 carry χ; sources, fluxes and gradients gain the
   // collisional-transfer terms. e φχ/(1+α)^{n_H} turns the exact H-moments into Galerkin terms.
   const double chi = dense.chi, phi_chi = dense.packing_fraction * dense.chi;
-  const double e = collisional_transfer_factor(d), inv = 1.0 / (1.0 + a);
+  const double e = transfer_factor_, g_d = gradient_factor_, inv = 1.0 / (1.0 + a);
   const double p_star = dense.pressure(d, a);
   const double phi_dp = std::pow(2.0, d - 2) * (1.0 + a) * phi_chi * (1.0 + dense.phi_dchi / chi);  // φ ∂p*/∂φ
   const double dlnchi = dense.phi_dchi / chi;                                                       // φ ∂ln χ/∂φ
@@ -314,17 +318,6 @@ NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, c
     for (int k = 0; k <= k_max; ++k) acc += hcs_a[k] * detail::evaluate(t[static_cast<std::size_t>(q) * nk + k], x);
     return acc;
   };
-  auto bilinear = [&](const std::vector<std::vector<long double>>& t) {  // Σ_kl a_k a_l t[k][l]
-    double acc = 0;
-    for (int k = 0; k <= k_max; ++k)
-      for (int l = 0; l <= k_max; ++l)
-        acc += hcs_a[k] * hcs_a[l] * detail::evaluate(t[static_cast<std::size_t>(k) * nk + l], x);
-    return acc;
-  };
-  // φ²χ-terms (15.8), (15.11): g_d = c_d² ν √2 π^{(d−1)/2}/(d (d+2)² Γ(d/2)).
-  const double c_d = std::pow(2.0, d - 1) * d * std::tgamma(d / 2.0) / std::pow(M_PI, d / 2.0);
-  const double g_d = c_d * c_d * linearized_operator_prefactor(d) * std::sqrt(2.0) * std::pow(M_PI, (d - 1) / 2.0) /
-                     (d * (d + 2.0) * (d + 2.0) * std::tgamma(d / 2.0));
 
   // Rows: test functions first … first+n−1; columns: basis functions first … first+cols−1.
   auto operator_matrix = [&](const PolynomialMatrices& pm, int first, int n, int cols) {
@@ -391,8 +384,8 @@ NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, c
     if (is_dense) {  // (15.11)
       const double gradient =
           -8.0 * (d - 1) / d * g_d * (1.0 + a) * chi * dense.packing_fraction * dense.packing_fraction * inv;
-      out.thermal_conductivity += gradient * bilinear(dense_.heat_gradient_temperature);
-      out.density_heat_coefficient += gradient * bilinear(dense_.heat_gradient_density);
+      out.thermal_conductivity += gradient * bilinear(dense_.heat_gradient_temperature, nk);
+      out.density_heat_coefficient += gradient * bilinear(dense_.heat_gradient_density, nk);
     }
   }
   {  // shear mode: S_0 … S_{N−1}
@@ -415,7 +408,7 @@ NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, c
     out.shear_viscosity = -8.0 / (d * (d + 2.0) * (d + 2.0)) * gamma_t.dot(flux);  // (10.7)
     if (is_dense) {                                                                // (15.8), (15.9)
       const double gradient = 0.25 * 8.0 * g_d * (1.0 + a) * chi * dense.packing_fraction * dense.packing_fraction *
-                              inv * bilinear(dense_.shear_gradient);
+                              inv * bilinear(dense_.shear_gradient, nk);
       out.shear_viscosity += gradient;
       out.bulk_viscosity = (d + 2.0) / d * gradient;
     }
@@ -436,7 +429,7 @@ NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, c
     Eigen::VectorXd cooling(cols);  // (15.13): ζ11 = (2(1−α²)χ/d) Σ a_k δ̃_q ⟨S_k S_q⟩_{+2}
     for (int c = 0; c < cols; ++c) cooling(c) = 2.0 * (1.0 - a * a) * chi / d * weighted2(dense_.cooling_scalar, c + 2);
     cooling = w * cooling;
-    const double zeta10 = -(1.0 - a) * e * phi_chi / (2.0 * d * d) * bilinear(dense_.cooling_gradient);  // (15.12)
+    const double zeta10 = -(1.0 - a) * e * phi_chi / (2.0 * d * d) * bilinear(dense_.cooling_gradient, nk);  // (15.12)
     out.cooling_rate_first_order = (zeta10 + cooling.dot(delta_fixed)) / (1.0 - cooling.dot(delta_zeta));
   }
   return out;
