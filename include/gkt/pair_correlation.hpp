@@ -22,6 +22,9 @@ struct PairCorrelation {
 /// Returns every registered pair correlation (the first is the default).
 const std::vector<PairCorrelation>& pair_correlations();
 
+/// Returns the registered names, in registry order.
+std::vector<std::string> pair_correlation_names();
+
 /// Returns the pair correlation called `name`; throws std::invalid_argument
 /// "pair_correlation: unknown … valid: …" otherwise.
 const PairCorrelation& pair_correlation(const std::string& name);

@@ -270,10 +270,6 @@ void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, b
   }
 }
 
-double EnskogState::pressure(int dimension, double alpha) const {
-  return 1.0 + std::pow(2.0, dimension - 2) * (1.0 + alpha) * packing_fraction * chi;  // (15.5)
-}
-
 NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
                                              SonineScheme scheme, const EnskogState& dense) {
   if (order < 1) throw std::invalid_argument("order: must be >= 1");

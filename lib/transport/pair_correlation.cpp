@@ -33,13 +33,17 @@ const std::vector<PairCorrelation>& pair_correlations() {
   return all;
 }
 
-const PairCorrelation& pair_correlation(const std::string& name) {
+std::vector<std::string> pair_correlation_names() {
   std::vector<std::string> names;
-  for (const auto& p : pair_correlations()) {
+  for (const auto& p : pair_correlations()) names.push_back(p.name);
+  return names;
+}
+
+const PairCorrelation& pair_correlation(const std::string& name) {
+  for (const auto& p : pair_correlations())
     if (p.name == name) return p;
-    names.push_back(p.name);
-  }
-  throw std::invalid_argument("pair_correlation: unknown \"" + name + "\"; valid: " + detail::join(names, "\""));
+  throw std::invalid_argument("pair_correlation: unknown \"" + name +
+                              "\"; valid: " + detail::join(pair_correlation_names(), "\""));
 }
 
 Rational max_packing_fraction(int dimension) { return dimension == 3 ? Rational(1, 2) : Rational(7, 10); }

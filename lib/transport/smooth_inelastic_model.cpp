@@ -23,13 +23,6 @@ namespace {
 constexpr int kHighestCumulant = 13;
 constexpr int kMaxOrder = kHighestCumulant - 1;
 
-/// Names of the registered pair correlations (the choices of `pair_correlation`).
-std::vector<std::string> pair_correlation_names() {
-  std::vector<std::string> names;
-  for (const auto& p : pair_correlations()) names.push_back(p.name);
-  return names;
-}
-
 /// The density of one evaluation: φ, χ(φ), φ dχ/dφ (exact) and the closure's name.
 struct Dense {
   Rational phi, chi, phi_dchi;
@@ -141,15 +134,13 @@ class SmoothInelasticModel final : public TransportModel {
     specs[4].check(phi);
     const std::string closure = point.choice("pair_correlation", pair_correlations().front().name);
     specs[5].check(closure);
-    const int dimension = dim == Rational(2) ? 2 : 3;
-    if (phi > max_packing_fraction(dimension))
-      throw std::invalid_argument("packing_fraction: must be a number in [0, " +
-                                  max_packing_fraction(dimension).to_string() +
-                                  "] for dimension = " + std::to_string(dimension) + ", got " + phi.to_string());
-    const PairCorrelation& pc = pair_correlation(closure);
-    const Rational chi = pc.contact_value(dimension, phi);
-    const Dense dense{phi, chi, pc.packing_derivative(dimension, phi), closure};
     const int d = dim == Rational(2) ? 2 : 3;
+    if (phi > max_packing_fraction(d))
+      throw std::invalid_argument("packing_fraction: must be a number in [0, " + max_packing_fraction(d).to_string() +
+                                  "] for dimension = " + std::to_string(d) + ", got " + phi.to_string());
+    const PairCorrelation& pc = pair_correlation(closure);
+    const Rational chi = pc.contact_value(d, phi);
+    const Dense dense{phi, chi, pc.packing_derivative(d, phi), closure};
     auto& hcs = solvers_[static_cast<std::size_t>(d - 2)];
     if (!hcs) hcs = std::make_unique<HomogeneousCoolingState>(d);
     if (scheme == "linear" && (order.tolerance || order.order != 1))
@@ -160,9 +151,8 @@ class SmoothInelasticModel final : public TransportModel {
     if (ns_memo_.size() > 4096) ns_memo_.clear();
     std::vector<CoefficientValue> out;
     for (const auto& c : coefficients) {
-      if (c == "pressure") {  // (15.5): exact, independent of the cumulants
-        const Rational p = Rational(1) + Rational(d == 3 ? 2 : 1) * (Rational(1) + alpha) * phi * chi;
-        out.push_back({p, Rational(0), order.order, true, true, true});
+      if (c == "pressure") {  // exact, independent of the cumulants
+        out.push_back({reduced_pressure(d, alpha, phi * chi), Rational(0), order.order, true, true, true});
         continue;
       }
       const int transport = transport_index(c);
