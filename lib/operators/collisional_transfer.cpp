@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "algebra/coefficient_polynomial.hpp"
 #include "collision/ring.hpp"
 #include "gkt/linearized_operator.hpp"
 #include "gkt/quadratic_form_moments.hpp"
@@ -16,31 +17,19 @@ using Table = std::vector<std::vector<Rational>>;  // rows: coefficients of x^j
 
 /// D_l = 2(S_l' − S_l), the partner factor of ∂_c φ = f_M c Σ a_l D_l (theory.md (15.2)).
 Table derivative_factors(int d, int k_max) {
-  const Table s = sonine_table(sonine_twice_m(d, 0), k_max);
   Table out;
-  for (const auto& row : s) {
-    std::vector<Rational> r(row.size(), Rational(0));
-    for (std::size_t j = 0; j < row.size(); ++j) {
-      r[j] -= Rational(2) * row[j];
-      if (j > 0) r[j - 1] += Rational(2) * Rational(static_cast<long>(j)) * row[j];
-    }
-    out.push_back(std::move(r));
-  }
+  for (const auto& s : sonine_table(sonine_twice_m(d, 0), k_max))
+    out.push_back(detail::add(detail::add({}, detail::derivative(s), Rational(2)), s, Rational(-2)));
   return out;
 }
 
 /// T_l = x S_l − x S_l' − (d/2) S_l, the partner factor of −½∂_c·(cφ) = f_M Σ a_l T_l.
 Table temperature_factors(int d, int k_max) {
-  const Table s = sonine_table(sonine_twice_m(d, 0), k_max);
   Table out;
-  for (const auto& row : s) {
-    std::vector<Rational> r(row.size() + 1, Rational(0));
-    for (std::size_t j = 0; j < row.size(); ++j) {
-      r[j + 1] += row[j];
-      r[j] -= Rational(d, 2) * row[j];
-      if (j > 0) r[j] -= Rational(static_cast<long>(j)) * row[j];
-    }
-    out.push_back(std::move(r));
+  for (const auto& s : sonine_table(sonine_twice_m(d, 0), k_max)) {
+    const auto xs = detail::times_x(s);
+    out.push_back(
+        detail::add(detail::add(xs, detail::times_x(detail::derivative(s)), Rational(-1)), s, Rational(-d, 2)));
   }
   return out;
 }

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "algebra/coefficient_polynomial.hpp"
 #include "gkt/collisional_transfer.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "gkt/linearized_operator.hpp"
@@ -18,29 +19,11 @@ namespace gkt {
 
 namespace {
 
-using Poly = std::vector<Rational>;  // coefficients of x^j
-
-Poly multiply(const Poly& a, const Poly& b) {
-  Poly r(a.size() + b.size() - 1);
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
-  return r;
-}
-Poly add(Poly a, const Poly& b, const Rational& scale = Rational(1)) {
-  if (a.size() < b.size()) a.resize(b.size());
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] += scale * b[i];
-  return a;
-}
-Poly derivative(const Poly& a) {
-  Poly r(a.size() > 1 ? a.size() - 1 : 1);
-  for (std::size_t i = 1; i < a.size(); ++i) r[i - 1] = Rational(static_cast<long>(i)) * a[i];
-  return r;
-}
-Poly times_x(const Poly& a, int power = 1) {
-  Poly r(static_cast<std::size_t>(power), Rational(0));
-  r.insert(r.end(), a.begin(), a.end());
-  return r;
-}
+using Poly = detail::CoefficientPolynomial;
+using detail::add;
+using detail::derivative;
+using detail::multiply;
+using detail::times_x;
 
 /// Returns product[k][q][r] = ⟨x^rank S_k S_q S_r⟩/⟨x^rank S_r²⟩ (S_k of index d/2 − 1, S_q, S_r of
 /// the mode's index): S_k S_q = Σ_r product[k][q][r] S_r (theory.md (10.9)), exact.
