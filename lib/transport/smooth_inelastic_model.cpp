@@ -225,34 +225,29 @@ class SmoothInelasticModel final : public TransportModel {
   CoefficientValue transport_value(HomogeneousCoolingState& hcs, int d, const Rational& alpha,
                                    const std::string& scheme, SonineScheme sonine, const Dense& dense, int which,
                                    const OrderRequest& order) {
-    if (scheme == "linear" && (dense.phi.sign() > 0 || which >= 6)) {
-      // First Sonine about f_M(1 + a2 S2) with the van Noije–Ernst a2, through the solver (the
-      // a2² products of the collisional terms kept: theory.md §15.3); error against orders 2, 3.
-      const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
-      auto& solver = ns_[static_cast<std::size_t>(d - 2)];
-      if (!solver) solver = std::make_unique<NavierStokesSolver>(d);
-      const NavierStokesValues v1 = solver->solve(alpha, 1, {1.0, 0.0, a2.to_double()}, sonine, dense.state());
-      const Rational value = Rational::from_double(pick_transport(v1, which, d, 0.0));
-      const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine, dense);
-      const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine, dense);
-      if (n2 == nullptr || n3 == nullptr) return {value, Rational(0), 1, false, false, true};
-      const TruncationEstimate e = estimate_truncation(value, Rational::from_double(pick_transport(*n2, which, d, 0.0)),
-                                                       Rational::from_double(pick_transport(*n3, which, d, 0.0)));
-      return {value, e.error, 1, e.converging, false, true};
-    }
     if (scheme == "linear") {
-      // Standard first Sonine, linear in a2 (theory.md (10.8)): exact for η*, κ*, μ* (the stability
-      // values take square roots); error against orders 2, 3.
-      auto& fs = first_sonine_[static_cast<std::size_t>(d - 2)];
-      if (!fs) fs = first_sonine_navier_stokes(d);
+      // First Sonine about f_M(1 + a2 S2) with the van Noije–Ernst a2; error against orders 2, 3.
       const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
-      const auto v = fs->evaluate(alpha, a2, sonine);
-      const Rational zeta = fs->zeta_0.evaluate(alpha) + a2 * fs->zeta_a2.evaluate(alpha);
-      const bool exact = which < 3;
-      const Rational value =
-          exact ? v[static_cast<std::size_t>(which)]
-                : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()}, which, d,
-                                                       zeta.to_double()));
+      Rational value;
+      bool exact = false;
+      if (dense.phi.sign() > 0 || which >= 6) {
+        // Through the solver (the a2² products of the collisional terms kept: theory.md §15.3).
+        auto& solver = ns_[static_cast<std::size_t>(d - 2)];
+        if (!solver) solver = std::make_unique<NavierStokesSolver>(d);
+        const NavierStokesValues v1 = solver->solve(alpha, 1, {1.0, 0.0, a2.to_double()}, sonine, dense.state());
+        value = Rational::from_double(pick_transport(v1, which, d, 0.0));
+      } else {
+        // The closed forms linear in a2 (theory.md (10.8)): exact for η*, κ*, μ* (the stability
+        // values take square roots).
+        auto& fs = first_sonine_[static_cast<std::size_t>(d - 2)];
+        if (!fs) fs = first_sonine_navier_stokes(d);
+        const auto v = fs->evaluate(alpha, a2, sonine);
+        const Rational zeta = fs->zeta_0.evaluate(alpha) + a2 * fs->zeta_a2.evaluate(alpha);
+        exact = which < 3;
+        value = exact ? v[static_cast<std::size_t>(which)]
+                      : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()},
+                                                             which, d, zeta.to_double()));
+      }
       const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine, dense);
       const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine, dense);
       if (n2 == nullptr || n3 == nullptr) return {value, Rational(0), 1, false, exact, true};
