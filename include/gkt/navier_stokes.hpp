@@ -69,6 +69,21 @@ struct EnskogState {
   }
 };
 
+namespace detail {
+/// The α-independent pieces of one mode's Galerkin system (theory.md (10.4)–(10.7)): exact
+/// (T = Rational, for the closed forms) or rounded to double (the solver).
+template <class T>
+struct GalerkinPieces {
+  std::vector<std::vector<T>> d, m;        ///< D(p, q), M(p, q)
+  std::vector<std::vector<T>> u, u2;       ///< source projections per HCS weight S_k (u2: density)
+  std::vector<std::vector<T>> u_pressure;  ///< ⟨((d/2)S_p + xS_p') S_k⟩: the part ∝ p* (vector)
+  std::vector<T> flux;                     ///< ⟨x² S_q⟩
+  /// product[k](q, r) = ⟨w S_k S_q S_r⟩/⟨w S_r²⟩ (w the mode's weight; S_k scalar index), the
+  /// expansion of S_k S_q in the mode's basis (modified scheme, theory.md (10.9)).
+  std::vector<std::vector<std::vector<T>>> product;
+};
+}  // namespace detail
+
 /// Solver for orders N ≥ 1: the operator (and, on the first dense call, the collisional-transfer
 /// tables) are built once per dimension as exact polynomials in α; each call evaluates them at
 /// α (long double) and solves in double.
@@ -90,21 +105,7 @@ class NavierStokesSolver {
     int n_max = -1, k_max = -1;
     std::vector<DenseMatrix<std::vector<long double>>> by_weight;  // [k](p, q): coefficients of α^j
   };
-  /// The α-independent Galerkin pieces (theory.md (10.5)) at the built sizes, in double.
-  /// The α-independent, exact pieces of one mode's Galerkin system (theory.md (10.4)–(10.7)),
-  /// rounded to double.
-  struct Pieces {
-    std::vector<std::vector<double>> d, m;        ///< D(p, q), M(p, q)
-    std::vector<std::vector<double>> u, u2;       ///< source projections per HCS weight S_k (u2: density)
-    std::vector<std::vector<double>> u_pressure;  ///< ⟨((d/2)S_p + xS_p') S_k⟩: the part ∝ p* (vector)
-    std::vector<double> flux;                     ///< ⟨x² S_q⟩
-    /// product[k](q, r) = ⟨w S_k S_q S_r⟩/⟨w S_r²⟩ (w the mode's weight; S_k scalar index), the
-    /// expansion of S_k S_q in the mode's basis (modified scheme, theory.md (10.9)).
-    std::vector<std::vector<std::vector<double>>> product;
-  };
-  static Pieces vector_pieces(int d, int n_max, int k_max);  ///< heat and density modes, c S_p
-  static Pieces tensor_pieces(int d, int n_max, int k_max);  ///< shear mode, Y_2 S_p
-  static Pieces scalar_pieces(int d, int n_max, int k_max);  ///< ∇·u mode (dense gas), S_p
+  using Pieces = detail::GalerkinPieces<double>;
   /// Builds the exact operators for `order` trial functions plus `extra_columns` more (the
   /// modified scheme's trial functions reach degree order + K).
   void ensure_built(int order, int k_max, int extra_columns, bool dense);

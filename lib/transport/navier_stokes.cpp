@@ -7,54 +7,15 @@
 
 #include <Eigen/Dense>
 
-#include "algebra/coefficient_polynomial.hpp"
 #include "gkt/collisional_transfer.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "gkt/linearized_operator.hpp"
 #include "gkt/nonlinear_collision_moments.hpp"
 #include "gkt/sonine.hpp"
 #include "transport/alpha_polynomial.hpp"
+#include "transport/galerkin_pieces.hpp"
 
 namespace gkt {
-
-namespace {
-
-using Poly = detail::CoefficientPolynomial;
-using detail::add;
-using detail::derivative;
-using detail::multiply;
-using detail::times_x;
-
-/// Returns product[k][q][r] = ⟨x^rank S_k S_q S_r⟩/⟨x^rank S_r²⟩ (S_k of index d/2 − 1, S_q, S_r of
-/// the mode's index): S_k S_q = Σ_r product[k][q][r] S_r (theory.md (10.9)), exact.
-std::vector<std::vector<std::vector<Rational>>> exact_product_table(int d, int rank, int n_max, int k_max) {
-  const auto s = sonine_table(sonine_twice_m(d, rank), n_max);
-  const auto w = sonine_table(sonine_twice_m(d, 0), k_max);
-  std::vector<std::vector<std::vector<Rational>>> out(
-      k_max + 1, std::vector<std::vector<Rational>>(n_max + 1, std::vector<Rational>(n_max + 1, Rational(0))));
-  std::vector<Rational> norm;
-  for (int r = 0; r <= n_max; ++r) norm.push_back(maxwell_average(d, times_x(multiply(s[r], s[r]), rank)));
-  for (int k = 0; k <= k_max; ++k)
-    for (int q = 0; q <= n_max; ++q) {
-      const Poly kq = times_x(multiply(w[k], s[q]), rank);
-      for (int r = 0; r <= std::min(n_max, q + k); ++r) out[k][q][r] = maxwell_average(d, multiply(kq, s[r])) / norm[r];
-    }
-  return out;
-}
-
-/// The same table rounded to double.
-std::vector<std::vector<std::vector<double>>> product_table(int d, int rank, int n_max, int k_max) {
-  const auto exact = exact_product_table(d, rank, n_max, k_max);
-  std::vector<std::vector<std::vector<double>>> out(exact.size());
-  for (std::size_t k = 0; k < exact.size(); ++k)
-    for (const auto& row : exact[k]) {
-      out[k].emplace_back();
-      for (const auto& v : row) out[k].back().push_back(v.to_double());
-    }
-  return out;
-}
-
-}  // namespace
 
 std::vector<Rational> FirstSonineNavierStokes::evaluate(const Rational& alpha, const Rational& a2,
                                                         SonineScheme scheme) const {
@@ -89,7 +50,7 @@ FirstSonineNavierStokes first_sonine_navier_stokes(int dimension) {
   // Modified scheme (theory.md (10.10)): the trial function f_M(1 + a2 S_2) Y S_q is expanded as
   // f_M Σ_r (δ_qr + a2 P_qr) Y S_r (P = exact_product_table[2]; the vector mode drops r = 0, the
   // momentum), and ν is normalised by the trial's own weight 1 + a2 P_qq; linear in a2.
-  const auto pv = exact_product_table(dimension, 1, 3, 2), pt = exact_product_table(dimension, 2, 2, 2);
+  const auto pv = detail::exact_product_table(dimension, 1, 3, 2), pt = detail::exact_product_table(dimension, 2, 2, 2);
   RationalPolynomial eta_a2 = out.nu_eta_a2 - out.nu_eta_0 * RationalPolynomial(pt[2][0][0]);
   for (int r = 0; r <= 2; ++r) eta_a2 = eta_a2 + ten[0](0, r) * RationalPolynomial(inv_dm1 * pt[2][0][r]);
   out.modified_nu_eta_a2 = eta_a2;
@@ -97,81 +58,6 @@ FirstSonineNavierStokes first_sonine_navier_stokes(int dimension) {
   for (int r = 1; r <= 3; ++r) kappa_a2 = kappa_a2 + vec[0](1, r) * RationalPolynomial(inv_d * pv[2][1][r]);
   out.modified_nu_kappa_a2 = kappa_a2;
   return out;
-}
-
-NavierStokesSolver::Pieces NavierStokesSolver::vector_pieces(int d, int n_max, int k_max) {
-  Pieces r;
-  const auto s = sonine_table(sonine_twice_m(d, 1), n_max);
-  const auto w = sonine_table(sonine_twice_m(d, 0), k_max);
-  const Rational half_d(d, 2);
-  r.d.assign(n_max + 1, std::vector<double>(n_max + 1));
-  r.m = r.d;
-  for (int p = 0; p <= n_max; ++p) {
-    const Poly dp = add(s[p], times_x(derivative(s[p])), Rational(2));  // S_p + 2x S_p'
-    for (int q = 0; q <= n_max; ++q) {
-      r.m[p][q] = maxwell_average(d, times_x(multiply(s[p], s[q]))).to_double();
-      r.d[p][q] = (Rational(-1, 2) * maxwell_average(d, times_x(multiply(s[q], dp)))).to_double();
-    }
-  }
-  r.u.assign(n_max + 1, std::vector<double>(k_max + 1));
-  r.u2 = r.u;
-  r.u_pressure = r.u;
-  for (int p = 0; p <= n_max; ++p) {
-    const Poly sp = s[p], spp = derivative(s[p]);
-    // heat: (d/2)S_p + xS_p' − xS_p − x²S_p';  density: (d/2)S_p + xS_p' − xS_p
-    Poly density = add(add(Poly{}, sp, half_d), times_x(spp));
-    density = add(density, times_x(sp), Rational(-1));
-    const Poly heat = add(density, times_x(spp, 2), Rational(-1));
-    const Poly pressure = add(add(Poly{}, sp, half_d), times_x(spp));
-    for (int k = 0; k <= k_max; ++k) {
-      r.u[p][k] = maxwell_average(d, multiply(heat, w[k])).to_double();
-      r.u2[p][k] = maxwell_average(d, multiply(density, w[k])).to_double();
-      r.u_pressure[p][k] = maxwell_average(d, multiply(pressure, w[k])).to_double();
-    }
-  }
-  for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell_average(d, times_x(s[q], 2)).to_double());
-  r.product = product_table(d, 1, n_max, k_max);
-  return r;
-}
-
-NavierStokesSolver::Pieces NavierStokesSolver::tensor_pieces(int d, int n_max, int k_max) {
-  Pieces r;
-  const auto s = sonine_table(sonine_twice_m(d, 2), n_max);
-  const auto w = sonine_table(sonine_twice_m(d, 0), k_max);
-  const Rational yy(d - 1, static_cast<unsigned long>(d));  // Y:Y = ((d−1)/d) x²
-  r.d.assign(n_max + 1, std::vector<double>(n_max + 1));
-  for (int p = 0; p <= n_max; ++p) {
-    const Poly dp = add(s[p], times_x(derivative(s[p])), Rational(2));
-    for (int q = 0; q <= n_max; ++q)
-      r.d[p][q] = (Rational(-1, 2) * yy * maxwell_average(d, times_x(multiply(s[q], dp), 2))).to_double();
-  }
-  r.u.assign(n_max + 1, std::vector<double>(k_max + 1));
-  const Rational c1 = Rational(d + 1) - Rational(2, static_cast<unsigned long>(d));
-  for (int p = 0; p <= n_max; ++p) {
-    // −x[(d + 1 − 2/d) S_p + 2((d−1)/d) x S_p']
-    const Poly src = add(add(Poly{}, times_x(s[p]), -c1), times_x(derivative(s[p]), 2), Rational(-2) * yy);
-    for (int k = 0; k <= k_max; ++k) r.u[p][k] = maxwell_average(d, multiply(src, w[k])).to_double();
-  }
-  for (int q = 0; q <= n_max; ++q) r.flux.push_back(maxwell_average(d, times_x(s[q], 2)).to_double());
-  r.product = product_table(d, 2, n_max, k_max);
-  return r;
-}
-
-/// The scalar mode (the ∇·u part 𝒟 of f^(1), dense gas only; theory.md §15.5): d = D⁰(p, q) =
-/// −½⟨S_q(2xS_p' − S_p)⟩, u = ⟨x S_p' S_k⟩ (the source per unit of ζ_U − (2/d)(1 − p*)).
-NavierStokesSolver::Pieces NavierStokesSolver::scalar_pieces(int d, int n_max, int k_max) {
-  Pieces r;
-  const auto s = sonine_table(sonine_twice_m(d, 0), n_max);
-  r.d.assign(n_max + 1, std::vector<double>(n_max + 1));
-  for (int p = 0; p <= n_max; ++p) {
-    const Poly dp = add(times_x(derivative(s[p]), 1), s[p], Rational(-1, 2));  // x S_p' − S_p/2
-    for (int q = 0; q <= n_max; ++q) r.d[p][q] = (Rational(-1) * maxwell_average(d, multiply(s[q], dp))).to_double();
-  }
-  r.u.assign(n_max + 1, std::vector<double>(k_max + 1));
-  for (int p = 0; p <= n_max; ++p)
-    for (int k = 0; k <= k_max; ++k) r.u[p][k] = scaling_weight(d, p, k).to_double();
-  r.product = product_table(d, 0, n_max, k_max);
-  return r;
 }
 
 NavierStokesSolver::NavierStokesSolver(int dimension) : dimension_(dimension) {
@@ -204,16 +90,16 @@ void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, b
   build(vector_, 1, order + extra_columns);      // S_1 … S_N (index 0 is momentum)
   build(tensor_, 2, order - 1 + extra_columns);  // S_0 … S_{N−1}
   if (vector_.n_max != vector_before || vector_.k_max != k_before) {
-    vector_pieces_ = vector_pieces(dimension_, vector_.n_max, vector_.k_max);
+    vector_pieces_ = detail::rounded(detail::vector_pieces(dimension_, vector_.n_max, vector_.k_max));
   }
   if (tensor_.n_max != tensor_before || tensor_.k_max != k_before) {
-    tensor_pieces_ = tensor_pieces(dimension_, tensor_.n_max, tensor_.k_max);
+    tensor_pieces_ = detail::rounded(detail::tensor_pieces(dimension_, tensor_.n_max, tensor_.k_max));
   }
   if (dense) {
     const int scalar_before = scalar_.n_max, scalar_k_before = scalar_.k_max;
     build(scalar_, 0, order + 1 + extra_columns);  // S_2 … S_{N+1} (S_0, S_1: density, energy)
     if (scalar_.n_max != scalar_before || scalar_.k_max != scalar_k_before) {
-      scalar_pieces_ = scalar_pieces(dimension_, scalar_.n_max, scalar_.k_max);
+      scalar_pieces_ = detail::rounded(detail::scalar_pieces(dimension_, scalar_.n_max, scalar_.k_max));
     }
   }
   // The scalar mode reaches one index further than the vector mode (S_2 … S_{N+1}).
