@@ -1,12 +1,14 @@
-// Fast per-cell evaluation of the first-Sonine closed forms through generated code.
+// Fast per-cell evaluation of the first-Sonine closed forms (dilute and dense) through generated code.
 #include <stdexcept>
 #include <string>
 
+#include "gkt/enskog_closed_form.hpp"
 #include "gkt/first_sonine_formulas.hpp"
 
 namespace gkt {
 
 namespace {
+#include "transport/generated/enskog_first_sonine_closed_forms.inc"
 #include "transport/generated/first_sonine_closed_forms.inc"
 }  // namespace
 
@@ -18,6 +20,30 @@ FirstSonineValues first_sonine_values(int dimension, double alpha) {
   if (dimension == 2)
     return {first_sonine_a2_d2(alpha), first_sonine_cooling_rate_d2(alpha), first_sonine_shear_viscosity_d2(alpha),
             first_sonine_thermal_conductivity_d2(alpha), first_sonine_density_heat_coefficient_d2(alpha)};
+  throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+}
+
+EnskogFirstSonineValues enskog_first_sonine_values(int dimension, double alpha, const EnskogState& state) {
+  if (!(alpha > 0 && alpha <= 1)) throw std::invalid_argument("alpha: must be a number in (0, 1]");
+  const double phi = state.packing_fraction, chi = state.chi, dchi = state.phi_dchi;
+  if (dimension == 3)
+    return {enskog_first_sonine_a2_d3(alpha, phi, chi, dchi),
+            enskog_first_sonine_cooling_rate_d3(alpha, phi, chi, dchi),
+            enskog_first_sonine_pressure_d3(alpha, phi, chi, dchi),
+            enskog_first_sonine_shear_viscosity_d3(alpha, phi, chi, dchi),
+            enskog_first_sonine_bulk_viscosity_d3(alpha, phi, chi, dchi),
+            enskog_first_sonine_thermal_conductivity_d3(alpha, phi, chi, dchi),
+            enskog_first_sonine_density_heat_coefficient_d3(alpha, phi, chi, dchi),
+            enskog_first_sonine_cooling_rate_first_order_d3(alpha, phi, chi, dchi)};
+  if (dimension == 2)
+    return {enskog_first_sonine_a2_d2(alpha, phi, chi, dchi),
+            enskog_first_sonine_cooling_rate_d2(alpha, phi, chi, dchi),
+            enskog_first_sonine_pressure_d2(alpha, phi, chi, dchi),
+            enskog_first_sonine_shear_viscosity_d2(alpha, phi, chi, dchi),
+            enskog_first_sonine_bulk_viscosity_d2(alpha, phi, chi, dchi),
+            enskog_first_sonine_thermal_conductivity_d2(alpha, phi, chi, dchi),
+            enskog_first_sonine_density_heat_coefficient_d2(alpha, phi, chi, dchi),
+            enskog_first_sonine_cooling_rate_first_order_d2(alpha, phi, chi, dchi)};
   throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
 }
 

@@ -10,6 +10,7 @@
 #include <optional>
 #include <tuple>
 
+#include "gkt/enskog_closed_form.hpp"
 #include "gkt/hcs_stability.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "gkt/navier_stokes.hpp"
@@ -230,8 +231,12 @@ class SmoothInelasticModel final : public TransportModel {
       const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
       Rational value;
       bool exact = false;
-      if (dense.phi.sign() > 0 || which >= 6) {
-        // Through the solver (the a2² products of the collisional terms kept: theory.md §15.3).
+      if ((dense.phi.sign() > 0 || which >= 6) && sonine == SonineScheme::standard) {
+        // The dense closed forms, linear in a2 like Garzó–Dufty's (theory.md §15.7).
+        const EnskogState st = dense.state();
+        value = Rational::from_double(enskog_form(d, which).evaluate(alpha, st.packing_fraction, st.chi, st.phi_dchi));
+      } else if (dense.phi.sign() > 0 || which >= 6) {
+        // Modified scheme: through the solver (the a2² products of the collisional terms kept).
         auto& solver = ns_[static_cast<std::size_t>(d - 2)];
         if (!solver) solver = std::make_unique<NavierStokesSolver>(d);
         const NavierStokesValues v1 = solver->solve(alpha, 1, {1.0, 0.0, a2.to_double()}, sonine, dense.state());
@@ -270,6 +275,16 @@ class SmoothInelasticModel final : public TransportModel {
           Rational::from_double(pick_transport(*s2, which, d, nonlinear(hcs, d, alpha, n + 3).cooling_rate)));
       return v;
     });
+  }
+  /// The dense first-Sonine closed form of transport coefficient `which` (0–2, 6, 7), built once.
+  const EnskogClosedForm& enskog_form(int d, int which) {
+    static const char* const names[] = {
+        "shear_viscosity", "thermal_conductivity",    "density_heat_coefficient", "", "", "",
+        "bulk_viscosity",  "cooling_rate_first_order"};
+    const auto key = std::make_pair(d, which);
+    const auto it = enskog_forms_.find(key);
+    if (it != enskog_forms_.end()) return it->second;
+    return enskog_forms_.emplace(key, enskog_first_sonine_closed_form(d, names[which])).first->second;
   }
   /// η*, κ*, μ* at Sonine order N about the nonlinear HCS with a_2..a_{N+1}; null if that HCS has
   /// no solution. Memoised per (d, α, φ, N, scheme).
@@ -310,6 +325,7 @@ class SmoothInelasticModel final : public TransportModel {
   std::map<std::tuple<int, std::string, int>, HcsState> memo_;
   std::array<std::unique_ptr<NavierStokesSolver>, 2> ns_;
   std::array<std::optional<FirstSonineNavierStokes>, 2> first_sonine_;
+  std::map<std::pair<int, int>, EnskogClosedForm> enskog_forms_;
   std::map<std::tuple<int, std::string, int>, std::optional<NavierStokesValues>> ns_memo_;
 };
 

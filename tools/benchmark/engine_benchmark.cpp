@@ -8,6 +8,7 @@
 
 #include <map>
 
+#include "gkt/enskog_closed_form.hpp"
 #include "gkt/first_sonine_formulas.hpp"
 #include "gkt/hard_spheres.hpp"
 #include "gkt/homogeneous_cooling_evolution.hpp"
@@ -107,6 +108,18 @@ void FirstSonineFullSetGenerated(benchmark::State& state) {
   }
 }
 BENCHMARK(FirstSonineFullSetGenerated)->Unit(benchmark::kNanosecond);
+
+/// One dense first-Sonine evaluation (a2, ζ*, p*, η*, bulk, κ*, μ*, ζ_U) through the generated
+/// closed forms (EnskogOrderWarm/1/1 is the order-1 numerical solve of the same kind of state).
+void EnskogFirstSonineFullSetGenerated(benchmark::State& state) {
+  double alpha = 0.5;
+  const gkt::EnskogState dense{0.3, 2.4781341107871726, 2.7488546438983756};  // Carnahan–Starling at φ = 0.3
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(gkt::enskog_first_sonine_values(3, alpha, dense));
+    alpha = alpha < 0.99 ? alpha + 1e-3 : 0.5;
+  }
+}
+BENCHMARK(EnskogFirstSonineFullSetGenerated)->Unit(benchmark::kNanosecond);
 
 /// 10⁴-point α sweep (α from 0.5 to 1) of all smooth-inelastic coefficients at order 4 through
 /// the model interface (nonlinear HCS a2…a5 and η*, κ*, μ* with error estimates), matrices reused;
