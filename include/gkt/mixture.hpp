@@ -1,0 +1,45 @@
+// A granular mixture of s smooth inelastic hard spheres (d = 3) or disks (d = 2): masses,
+// diameters, mole fractions, the restitution matrix α_ij, the packing fraction, and the contact
+// values χ_ij of the pair correlation (docs/theory.md §16).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace gkt {
+
+/// One component. Mass and diameter are in any consistent unit (only ratios enter).
+struct Species {
+  double mass = 1;
+  double diameter = 1;
+  double fraction = 1;  ///< mole fraction x_i = n_i/n
+  std::string name;     ///< optional label
+};
+
+/// The composition and the state of a mixture; α is stored as a full symmetric s × s matrix.
+struct Mixture {
+  int dimension = 3;
+  std::vector<Species> species;
+  std::vector<double> alpha;  ///< α_ij at i·s + j
+  double packing_fraction = 0;
+
+  [[nodiscard]] std::size_t size() const { return species.size(); }
+  [[nodiscard]] double restitution(std::size_t i, std::size_t j) const { return alpha[i * size() + j]; }
+  /// Throws std::invalid_argument with a one-line message naming the field and its allowed range:
+  /// d ∉ {2, 3}, fewer than 2 species, mass or diameter ≤ 0, fractions outside (0, 1] or not
+  /// summing to 1 within 1e-12, α not symmetric or outside (0, 1], φ outside [0, φ_max).
+  void validate() const;
+  /// Returns m̄ = Σ x_i m_i, the reference mass of the reduced units (conventions.md).
+  [[nodiscard]] double mean_mass() const;
+  /// Returns σ̄ = Σ x_i σ_i, the reference diameter of the reduced units.
+  [[nodiscard]] double mean_diameter() const;
+  /// Returns χ_ij at i·s + j: Boublík–Grundke–Henderson–Lee–Mansoori in 3D, Jenkins–Mancini in
+  /// 2D (theory.md (16.1)); each reduces to the one-component closure for identical species.
+  [[nodiscard]] std::vector<double> contact_values() const;
+};
+
+/// Returns a mixture with one α for every pair.
+Mixture make_mixture(int dimension, std::vector<Species> species, double alpha, double packing_fraction = 0);
+
+}  // namespace gkt

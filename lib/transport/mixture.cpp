@@ -1,0 +1,99 @@
+#include "gkt/mixture.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "gkt/pair_correlation.hpp"
+
+namespace gkt {
+
+namespace {
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+std::string species_field(const char* field, std::size_t i) { return std::string(field) + "_" + std::to_string(i + 1); }
+}  // namespace
+
+void Mixture::validate() const {
+  if (dimension != 2 && dimension != 3)
+    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  const std::size_t s = size();
+  if (s < 2) throw std::invalid_argument("species: a mixture needs at least 2 species, got " + std::to_string(s));
+  double sum = 0;
+  for (std::size_t i = 0; i < s; ++i) {
+    const Species& sp = species[i];
+    if (!(sp.mass > 0) || !std::isfinite(sp.mass))
+      throw std::invalid_argument(species_field("mass", i) + ": must be a number > 0, got " + number(sp.mass));
+    if (!(sp.diameter > 0) || !std::isfinite(sp.diameter))
+      throw std::invalid_argument(species_field("diameter", i) + ": must be a number > 0, got " + number(sp.diameter));
+    if (!(sp.fraction > 0 && sp.fraction <= 1))
+      throw std::invalid_argument(species_field("fraction", i) + ": must be a number in (0, 1], got " +
+                                  number(sp.fraction));
+    sum += sp.fraction;
+  }
+  if (std::abs(sum - 1) > 1e-12)
+    throw std::invalid_argument("fraction: the species fractions must sum to 1 (within 1e-12), got " + number(sum));
+  if (alpha.size() != s * s)
+    throw std::invalid_argument("alpha: must be a number or an s x s matrix (s = " + std::to_string(s) + ")");
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t j = 0; j < s; ++j) {
+      const double a = restitution(i, j);
+      const std::string field = "alpha_" + std::to_string(i + 1) + "_" + std::to_string(j + 1);
+      if (!(a > 0 && a <= 1)) throw std::invalid_argument(field + ": must be a number in (0, 1], got " + number(a));
+      if (a != restitution(j, i))
+        throw std::invalid_argument(field + ": the restitution matrix must be symmetric, got " + number(a) + " and " +
+                                    number(restitution(j, i)));
+    }
+  const double phi_max = max_packing_fraction(dimension).to_double();
+  if (!(packing_fraction >= 0 && packing_fraction < phi_max))
+    throw std::invalid_argument("packing_fraction: must be a number in [0, " + number(phi_max) +
+                                ") for dimension = " + std::to_string(dimension) + ", got " + number(packing_fraction));
+}
+
+double Mixture::mean_mass() const {
+  double m = 0;
+  for (const auto& sp : species) m += sp.fraction * sp.mass;
+  return m;
+}
+
+double Mixture::mean_diameter() const {
+  double d = 0;
+  for (const auto& sp : species) d += sp.fraction * sp.diameter;
+  return d;
+}
+
+std::vector<double> Mixture::contact_values() const {
+  const std::size_t s = size();
+  const double phi = packing_fraction, g = 1 - phi;
+  // Moments M_l = Σ x_i σ_i^l of the diameters.
+  double m1 = 0, m2 = 0, m3 = 0;
+  for (const auto& sp : species) {
+    m1 += sp.fraction * sp.diameter;
+    m2 += sp.fraction * sp.diameter * sp.diameter;
+    m3 += sp.fraction * sp.diameter * sp.diameter * sp.diameter;
+  }
+  std::vector<double> chi(s * s);
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t j = 0; j < s; ++j) {
+      const double si = species[i].diameter, sj = species[j].diameter, sij = 0.5 * (si + sj);
+      if (dimension == 3) {  // [boublik1970], [mansoori1971]
+        const double r = si * sj * m2 / (sij * m3);
+        chi[i * s + j] = 1 / g + 1.5 * phi * r / (g * g) + 0.5 * phi * phi * r * r / (g * g * g);
+      } else {  // [jenkins1987]
+        const double r = si * sj * m1 / (sij * m2);
+        chi[i * s + j] = 1 / g + (9.0 / 16.0) * phi * r / (g * g);
+      }
+    }
+  return chi;
+}
+
+Mixture make_mixture(int dimension, std::vector<Species> species, double alpha, double packing_fraction) {
+  Mixture m{dimension, std::move(species), {}, packing_fraction};
+  m.alpha.assign(m.size() * m.size(), alpha);
+  return m;
+}
+
+}  // namespace gkt

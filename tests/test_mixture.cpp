@@ -1,0 +1,160 @@
+// Granular mixtures, homogeneous cooling state (Maxwellian approximation, theory.md §16): the
+// pair energy loss against the engine's exact collision moments, the one-component limit to
+// round-off, equipartition at α = 1, the tracer limit against an independent 1D root, extreme
+// mass and diameter ratios, three species, and the one-line input errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gkt/collision_moments.hpp"
+#include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/mixture.hpp"
+#include "gkt/mixture_cooling_state.hpp"
+#include "gkt/pair_correlation.hpp"
+
+using gkt::Rational;
+
+namespace {
+
+gkt::Mixture binary(int d, double m2, double s2, double x1, double alpha, double phi = 0) {
+  return gkt::make_mixture(d, {{1.0, 1.0, x1, "1"}, {m2, s2, 1 - x1, "2"}}, alpha, phi);
+}
+
+}  // namespace
+
+// ⟨X1' − X1⟩/J0 over two Maxwellians at different temperatures: the closed form of (16.3)
+// against the engine's exact moments E(0,0,1) − E(1,0,0) for unequal masses, widths and α.
+TEST(Mixture, PairEnergyChangeEqualsEngine) {
+  for (int d : {2, 3})
+    for (const auto& [mi, mj, ti, tj] :
+         std::vector<std::array<Rational, 4>>{{Rational(1), Rational(3), Rational(1), Rational(2, 5)},
+                                              {Rational(7), Rational(2), Rational(5, 3), Rational(1, 4)},
+                                              {Rational(1), Rational(1000), Rational(1), Rational(1000)}})
+      for (const Rational& alpha : {Rational(1), Rational(7, 10), Rational(1, 5)}) {
+        const gkt::CollisionPair pair{d, mi, mj, ti, tj};
+        const auto e = gkt::scalar_collision_moments<Rational>(pair, alpha, 1);
+        const double engine = (e(0, 0, 1) - e(1, 0, 0)).to_double();
+        const double mu_ji = (mj / (mi + mj)).to_double();
+        EXPECT_NEAR(gkt::pair_energy_change(mu_ji, alpha.to_double(), (ti / tj).to_double()), engine,
+                    1e-14 * std::max(1.0, std::abs(engine)))
+            << d << " " << mi << " " << mj << " " << alpha;
+      }
+}
+
+// Identical species: equipartition and ζ* = χ (d+2)(1−α²)/(4d), the one-component Maxwellian
+// value of the smooth-inelastic model (first_sonine_hcs at a2 = 0), to round-off; χ_ij reduces to
+// Carnahan–Starling (3D) / Henderson (2D).
+TEST(Mixture, IdenticalSpeciesGiveOneComponentGas) {
+  for (int d : {2, 3})
+    for (const double alpha : {1.0, 0.8, 0.3})
+      for (const double phi : {0.0, 0.2, 0.45}) {
+        const auto state = gkt::mixture_cooling_state(binary(d, 1.0, 1.0, 0.3, alpha, phi));
+        ASSERT_TRUE(state.solved);
+        const Rational phi_q = Rational::from_double(phi);
+        const double chi = gkt::pair_correlation("carnahan-starling").contact_value(d, phi_q).to_double();
+        for (const double x : state.chi) EXPECT_NEAR(x, chi, 1e-14 * chi);
+        const double zeta =
+            chi * gkt::first_sonine_hcs(d).cooling_rate_0.evaluate(Rational::from_double(alpha)).to_double();
+        EXPECT_NEAR(state.cooling_rate, zeta, 1e-14) << d << " " << alpha << " " << phi;
+        for (const double g : state.temperature_ratio) EXPECT_NEAR(g, 1.0, 1e-14);
+      }
+}
+
+// α = 1: equipartition holds exactly whatever the masses, sizes and density (no cooling).
+TEST(Mixture, ElasticMixtureIsInEquipartition) {
+  for (int d : {2, 3}) {
+    const auto state = gkt::mixture_cooling_state(binary(d, 7.0, 2.5, 0.4, 1.0, 0.2));
+    ASSERT_TRUE(state.solved);
+    EXPECT_NEAR(state.cooling_rate, 0.0, 1e-15);
+    for (const double g : state.temperature_ratio) EXPECT_NEAR(g, 1.0, 1e-14);
+  }
+}
+
+// Tracer limit x_1 → 0: γ_1 is continuous, and equals the root of ζ_1(γ_1) = ζ_2 with the host
+// gas at its own HCS (γ_2 = 1), found here by bisection — an independent route.
+TEST(Mixture, TracerLimitIsContinuous) {
+  for (int d : {2, 3}) {
+    const double m2 = 0.2, s2 = 0.6, alpha = 0.7, phi = 0.25;
+    const auto near = gkt::mixture_cooling_state(binary(d, m2, s2, 1e-9, alpha, phi));
+    const auto small = gkt::mixture_cooling_state(binary(d, m2, s2, 1e-5, alpha, phi));
+    ASSERT_TRUE(near.solved && small.solved);
+    EXPECT_NEAR(near.temperature_ratio[0], small.temperature_ratio[0], 1e-3 * near.temperature_ratio[0]);
+    EXPECT_NEAR(near.temperature_ratio[1], 1.0, 1e-8);
+    // Bisection on ln γ_1 with x_1 = 0 exactly in the rates (a tracer does not change the host).
+    gkt::Mixture tracer = binary(d, m2, s2, 0.0, alpha, phi);
+    tracer.species[0].fraction = 0.0;
+    tracer.species[1].fraction = 1.0;
+    const auto chi = binary(d, m2, s2, 1e-300, alpha, phi).contact_values();
+    auto f = [&](double ln_gamma) {
+      const double gamma[] = {std::exp(ln_gamma), 1.0};
+      double rates[2];
+      gkt::species_cooling_rates(tracer, gamma, chi, rates);
+      return rates[0] - rates[1];
+    };
+    double lo = -5, hi = 5;
+    ASSERT_LT(f(lo) * f(hi), 0.0);
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (f(lo) * f(mid) <= 0 ? hi : lo) = mid;
+    }
+    EXPECT_NEAR(near.temperature_ratio[0], std::exp(0.5 * (lo + hi)), 1e-7) << d;
+  }
+}
+
+// Mass ratios 10⁻³ … 10³ and diameter ratios 0.1 … 10, strong dissipation and high density: the
+// solve converges, γ_i stay positive and finite with Σ x_i γ_i = 1; heavier grains are hotter
+// (breakdown of equipartition, equal α).
+TEST(Mixture, ExtremeRatiosConverge) {
+  for (int d : {2, 3})
+    for (const double m2 : {1e-3, 0.1, 10.0, 1e3})
+      for (const double s2 : {0.1, 1.0, 10.0})
+        for (const double alpha : {0.9, 0.5, 0.1}) {
+          const double phi = d == 3 ? 0.4 : 0.6;
+          const auto state = gkt::mixture_cooling_state(binary(d, m2, s2, 0.5, alpha, phi));
+          EXPECT_TRUE(state.solved) << d << " " << m2 << " " << s2 << " " << alpha;
+          const double g1 = state.temperature_ratio[0], g2 = state.temperature_ratio[1];
+          EXPECT_TRUE(std::isfinite(g1) && std::isfinite(g2) && g1 > 0 && g2 > 0);
+          EXPECT_NEAR(0.5 * g1 + 0.5 * g2, 1.0, 1e-13);
+          if (s2 == 1.0) {
+            EXPECT_EQ(g2 > g1, m2 > 1) << d << " " << m2 << " " << alpha;
+          }
+        }
+}
+
+// Three species: equal cooling rates and the normalisation; merging two identical species of a
+// ternary gives the binary result.
+TEST(Mixture, ThreeSpeciesReduceToBinary) {
+  for (int d : {2, 3}) {
+    const auto two = gkt::mixture_cooling_state(binary(d, 4.0, 1.5, 0.4, 0.75, 0.2));
+    const auto three = gkt::mixture_cooling_state(
+        gkt::make_mixture(d, {{1.0, 1.0, 0.25, ""}, {4.0, 1.5, 0.6, ""}, {1.0, 1.0, 0.15, ""}}, 0.75, 0.2));
+    ASSERT_TRUE(two.solved && three.solved);
+    EXPECT_NEAR(three.temperature_ratio[0], two.temperature_ratio[0], 1e-12);
+    EXPECT_NEAR(three.temperature_ratio[2], two.temperature_ratio[0], 1e-12);
+    EXPECT_NEAR(three.temperature_ratio[1], two.temperature_ratio[1], 1e-12);
+    EXPECT_NEAR(three.cooling_rate, two.cooling_rate, 1e-12);
+  }
+}
+
+TEST(Mixture, BadInputNamesTheField) {
+  auto message = [](const gkt::Mixture& m) {
+    try {
+      m.validate();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message(binary(3, 1, 1, 0.5, 0.9)), "");
+  EXPECT_NE(message(binary(3, -1, 1, 0.5, 0.9)).find("mass_2: must be a number > 0"), std::string::npos);
+  EXPECT_NE(message(binary(3, 1, 0, 0.5, 0.9)).find("diameter_2: must be a number > 0"), std::string::npos);
+  EXPECT_NE(message(binary(3, 1, 1, 0.5, 1.2)).find("alpha_1_1: must be a number in (0, 1]"), std::string::npos);
+  EXPECT_NE(message(binary(3, 1, 1, 0.5, 0.9, 0.5)).find("packing_fraction: must be a number in [0, 0.5)"),
+            std::string::npos);
+  auto m = binary(3, 1, 1, 0.5, 0.9);
+  m.species[0].fraction = 0.4;
+  EXPECT_NE(message(m).find("fraction: the species fractions must sum to 1"), std::string::npos);
+  m = binary(3, 1, 1, 0.5, 0.9);
+  m.alpha[1] = 0.8;
+  EXPECT_NE(message(m).find("alpha_1_2: the restitution matrix must be symmetric"), std::string::npos);
+}
