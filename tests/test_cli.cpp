@@ -2,6 +2,8 @@
 // contract (one-line error naming the field, exit code 2, no output file left behind).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -65,7 +67,7 @@ std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
 bool is_number(const std::string& s, double& x) {
   char* end = nullptr;
   x = std::strtod(s.c_str(), &end);
-  return !s.empty() && end == s.c_str() + s.size();
+  return !s.empty() && end == s.c_str() + s.size() && std::isfinite(x);  // nan, inf: compared as text
 }
 
 /// Float-tolerant CSV comparison: header exact; numeric cells within a relative tolerance
@@ -161,6 +163,20 @@ TEST(CliGolden, EnskogFirstSonine) {
   ASSERT_EQ(exact.status, 0) << exact.err;
   // χ(3/10) = (17/20)/(343/1000) = 850/343; p* = 1 + 2 (3/2)(3/10) χ = 1108/343.
   EXPECT_NE(exact.out.find("1/2,3/10,1108/343,"), std::string::npos) << exact.out;
+}
+
+// Binary mixture HCS through [[species]] tables, sweeping a species' mass (regression data,
+// tests/golden/README.md); the physics is checked in tests/test_mixture.cpp. The error columns
+// are nan: the Maxwellian approximation's error is not estimated yet.
+TEST(CliGolden, MixtureHcs) {
+  const CliRun r = run_gkt("table " + scene_path("mixture_hcs.toml"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("mixture_hcs.csv")));
+  // Identical species through the CLI: equipartition, ζ* of the one-component gas (5/12)(1 − α²).
+  const CliRun same = run_gkt("table " + scene_path("mixture_hcs.toml") +
+                              " --set mass_2=1 --set diameter_2=1 --set alpha=0.6 --set packing_fraction=0");
+  ASSERT_EQ(same.status, 0) << same.err;
+  EXPECT_NE(same.out.find("\n0.26666666666666666,1,1,nan,nan,nan,1\n"), std::string::npos) << same.out;
 }
 
 TEST(CliGolden, NavierStokesFirstSonineExact) {
@@ -351,6 +367,12 @@ TEST_P(CliBadInput, OneLineErrorExitTwoNoOutput) {
 }
 
 const std::string kGood = "model = \"hard-spheres\"\ndimension = 3\norder = 2\n";
+const std::string kMixtureSpecies =
+    "[[species]]\nmass = 1\ndiameter = 1\nfraction = 0.5\n[[species]]\nmass = 2\ndiameter = 1\nfraction = 0.5\n";
+// A binary mixture whose second species is left open: the case appends its fraction line.
+const std::string kMixture =
+    "model = \"mixture\"\norder = 1\nalpha = 0.9\n[[species]]\nmass = 1\ndiameter = 1\n"
+    "fraction = 0.5\n[[species]]\nmass = 2\ndiameter = 1.5\n";
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, CliBadInput,
@@ -419,7 +441,31 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"exact_not_rational", "model = \"smooth-inelastic\"\nalpha = 0.5\norder = 2\n", "--exact",
                  "--exact: a requested coefficient is not a rational number"},
         BadInput{"order_above_model_max", "model = \"smooth-inelastic\"\nalpha = 0.5\norder = 13\n", "",
-                 "order: must be an integer in [1, 12]"}),
+                 "order: must be an integer in [1, 12]"},
+        BadInput{"mixture_fractions", kMixture + "fraction = 0.4\n", "",
+                 "fraction: the species fractions must sum to 1 (within 1e-12), got 0.9"},
+        BadInput{"mixture_mass", kMixture + "fraction = 0.5\n", "--set mass_2=-3", "mass_2: must be a number in (0,"},
+        BadInput{"mixture_diameter_zero", kMixture + "fraction = 0.5\n", "--set diameter_1=0",
+                 "diameter_1: must be a number in (0,"},
+        BadInput{"mixture_alpha_asymmetric",
+                 "model = \"mixture\"\norder = 1\nalpha = [[0.9, 0.8], [0.7, 0.9]]\n" + kMixtureSpecies, "",
+                 "alpha: the restitution matrix must be symmetric, got alpha[1][2] = 4/5 and alpha[2][1] = 7/10"},
+        BadInput{"mixture_alpha_range",
+                 "model = \"mixture\"\norder = 1\nalpha = [[0.9, 1.2], [1.2, 0.9]]\n" + kMixtureSpecies, "",
+                 "alpha_1_2: must be a number in (0, 1], got 6/5"},
+        BadInput{"mixture_alpha_shape", "model = \"mixture\"\norder = 1\nalpha = [[0.9, 0.8]]\n" + kMixtureSpecies, "",
+                 "alpha: a restitution matrix must be 2 x 2"},
+        BadInput{"mixture_packing", kMixture + "fraction = 0.5\n", "--set packing_fraction=0.5",
+                 "packing_fraction: must be a number in [0, 0.5) for dimension = 3"},
+        BadInput{"mixture_species_key", kMixture + "fraction = 0.5\ncharge = 1\n", "",
+                 "species[2].charge: unknown key; valid keys: diameter, fraction, mass, name"},
+        BadInput{"mixture_species_missing", kMixture, "", "species[2].fraction: required"},
+        BadInput{"mixture_one_species",
+                 "model = \"mixture\"\norder = 1\n[[species]]\nmass = 1\ndiameter = 1\nfraction = 1\n", "",
+                 "species: must be an integer in [2, 4], got 1"},
+        BadInput{"mixture_no_third_species", kMixture + "fraction = 0.5\n",
+                 "--set 'coefficients=[\"temperature_ratio_3\"]'",
+                 "coefficients: unknown coefficient 'temperature_ratio_3'"}),
     [](const auto& info) { return info.param.label; });
 
 // Without a subcommand the program is misused: exit 2 and a one-line error.

@@ -41,6 +41,17 @@ TEST(Mixture, PairEnergyChangeEqualsEngine) {
       }
 }
 
+// K_d of (θ_iθ_j)^{d/2} J0 = K_d √(1/θ_i + 1/θ_j), the step from (16.2) to (16.4).
+TEST(Mixture, CollisionIntegralConstant) {
+  for (int d : {2, 3}) {
+    const gkt::CollisionPair pair{d, Rational(3), Rational(5), Rational(2), Rational(7)};
+    const double ti = 2, tj = 7;
+    const double k_d = std::pow(M_PI, (3 * d - 1) / 2.0) / std::tgamma(d / 2.0);
+    EXPECT_NEAR(gkt::reference_collision_integral(pair) * std::pow(ti * tj, d / 2.0) / std::sqrt(1 / ti + 1 / tj), k_d,
+                1e-12 * k_d);
+  }
+}
+
 // Identical species: equipartition and ζ* = χ (d+2)(1−α²)/(4d), the one-component Maxwellian
 // value of the smooth-inelastic model (first_sonine_hcs at a2 = 0), to round-off; χ_ij reduces to
 // Carnahan–Starling (3D) / Henderson (2D).

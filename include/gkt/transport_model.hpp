@@ -51,12 +51,13 @@ struct OrderRequest {
 
 /// One coefficient at one parameter point.
 struct CoefficientValue {
-  Rational value;         ///< reduced value (exact when `exact`)
-  Rational error;         ///< estimated truncation error
-  int order = 0;          ///< Sonine order used
-  bool converged = true;  ///< false if the tolerance was not met or the series does not converge
-  bool exact = true;      ///< value and error are exact rationals
-  bool defined = true;    ///< false if no value with an error estimate exists at this order
+  Rational value;               ///< reduced value (exact when `exact`)
+  Rational error;               ///< estimated truncation error
+  int order = 0;                ///< Sonine order used
+  bool converged = true;        ///< false if the tolerance was not met or the series does not converge
+  bool exact = true;            ///< value and error are exact rationals
+  bool defined = true;          ///< false if no value with an error estimate exists at this order
+  bool error_estimated = true;  ///< false: the approximation's error is not estimated (printed nan)
 };
 
 /// A transport model: named coefficients as functions of named parameters.
@@ -67,6 +68,12 @@ class TransportModel {
   [[nodiscard]] virtual std::string description() const = 0;
   /// Returns the canonical coefficient names this model computes.
   [[nodiscard]] virtual std::vector<std::string> coefficient_names() const = 0;
+  /// Returns the coefficient names offered at a scene's fixed parameters (e.g. one
+  /// temperature_ratio_i per species of a mixture); by default all of coefficient_names().
+  [[nodiscard]] virtual std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const {
+    static_cast<void>(fixed);
+    return coefficient_names();
+  }
   /// Returns the model's parameters (scene keys) with their ranges.
   [[nodiscard]] virtual std::vector<ParameterSpec> parameters() const = 0;
   /// Returns the highest Sonine order accepted.

@@ -1,7 +1,7 @@
 #include "gkt/mixture.hpp"
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "gkt/pair_correlation.hpp"
@@ -9,10 +9,10 @@
 namespace gkt {
 
 namespace {
-std::string number(double x) {
+std::string number(double x) {  // shortest round-trip form
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return {buffer, result.ptr};
 }
 std::string species_field(const char* field, std::size_t i) { return std::string(field) + "_" + std::to_string(i + 1); }
 }  // namespace

@@ -12,6 +12,7 @@ namespace gkt::detail {
 std::unique_ptr<TransportModel> make_hard_sphere_model();
 std::unique_ptr<TransportModel> make_smooth_inelastic_model();
 std::unique_ptr<TransportModel> make_viscoelastic_model();
+std::unique_ptr<TransportModel> make_mixture_model();
 
 /// Returns the items joined by ", ", each wrapped in `quote` (for "valid: …" error messages).
 template <class Range>

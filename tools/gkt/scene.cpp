@@ -93,6 +93,65 @@ void apply_override(toml::table& scene, const std::string& assignment) {
   if (key == "t_end" || key == "points") scene.erase("times");
 }
 
+/// Mixtures: the [[species]] tables become mass_k, diameter_k, fraction_k (k from 1) and the
+/// integer `species`; a restitution matrix `alpha = [[…], …]` becomes alpha_i_j (i ≤ j). Keys
+/// given explicitly (e.g. --set mass_2=…) win over the tables.
+void flatten_mixture(toml::table& scene) {
+  const toml::node* node = scene.get("species");
+  if (node == nullptr) return;
+  const auto* array = node->as_array();
+  if (array == nullptr || !array->is_array_of_tables())
+    throw error("species: must be [[species]] tables with mass, diameter, fraction (and an optional name)");
+  toml::table flat;
+  int k = 0;
+  for (const auto& item : *array) {
+    ++k;
+    const toml::table& t = *item.as_table();
+    const std::string at = "species[" + std::to_string(k) + "].";
+    for (const auto& [key, value] : t) {
+      const std::string field(key.str());
+      if (field == "name") {
+        if (!value.is_string()) throw error(at + "name: must be a string");
+        continue;
+      }
+      if (field != "mass" && field != "diameter" && field != "fraction")
+        throw error(at + field + ": unknown key; valid keys: diameter, fraction, mass, name");
+      const std::string flat_key = field + "_" + std::to_string(k);
+      if (!scene.contains(flat_key)) flat.insert_or_assign(flat_key, value);
+    }
+    for (const char* field : {"mass", "diameter", "fraction"})
+      if (!t.contains(field) && !scene.contains(std::string(field) + "_" + std::to_string(k)))
+        throw error(at + field + ": required (a number > 0)");
+  }
+  scene.erase("species");
+  for (const auto& [key, value] : flat) scene.insert_or_assign(key, value);
+  scene.insert_or_assign("species", static_cast<int64_t>(k));
+
+  const auto* alpha = scene.get_as<toml::array>("alpha");
+  if (alpha == nullptr || alpha->empty() || !alpha->get(0)->is_array()) return;  // a number or a sweep
+  const std::string shape =
+      "alpha: a restitution matrix must be " + std::to_string(k) + " x " + std::to_string(k) + " (one row per species)";
+  if (static_cast<int>(alpha->size()) != k) throw error(shape);
+  std::vector<std::vector<const toml::node*>> rows;
+  for (const auto& row : *alpha) {
+    const auto* r = row.as_array();
+    if (r == nullptr || static_cast<int>(r->size()) != k) throw error(shape);
+    rows.emplace_back();
+    for (const auto& v : *r) rows.back().push_back(&v);
+  }
+  for (int i = 0; i < k; ++i)
+    for (int j = i; j < k; ++j) {
+      const std::string name = "alpha_" + std::to_string(i + 1) + "_" + std::to_string(j + 1);
+      const Rational a = scene_number(*rows[i][j], name), b = scene_number(*rows[j][i], name);
+      if (a != b)
+        throw error("alpha: the restitution matrix must be symmetric, got alpha[" + std::to_string(i + 1) + "][" +
+                    std::to_string(j + 1) + "] = " + a.to_string() + " and alpha[" + std::to_string(j + 1) + "][" +
+                    std::to_string(i + 1) + "] = " + b.to_string());
+      if (!scene.contains(name)) scene.insert_or_assign(name, *rows[i][j]);
+    }
+  scene.erase("alpha");
+}
+
 }  // namespace
 
 toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides) {
@@ -112,6 +171,7 @@ toml::table read_scene_table(const std::string& path, const std::vector<std::str
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order) {
   toml::table table = read_scene_table(path, overrides);
+  flatten_mixture(table);
   Scene scene;
   const auto* model_node = table.get("model");
   if (model_node == nullptr || !model_node->is_string()) {
@@ -150,7 +210,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     }
   }
 
-  const auto names = model->coefficient_names();
+  ParameterPoint fixed;  // single-valued numbers: what the model's coefficient list may depend on
+  for (const auto& [key, value] : table)
+    if (value.is_integer() || value.is_floating_point())
+      fixed.numbers[std::string(key.str())] = scene_number(value, "");
+  const auto names = model->scene_coefficient_names(fixed);
   if (const auto* c = table.get("coefficients")) {
     const auto* array = c->as_array();
     if (array == nullptr || array->empty()) throw error("coefficients: must be a non-empty list of names");

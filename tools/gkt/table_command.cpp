@@ -99,7 +99,8 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
       else
         row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double()));
     }
-    for (const auto& v : values) row.push_back(v.defined ? format_error(v.error.to_double()) : "inf");
+    for (const auto& v : values)
+      row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double()) : "nan");
     row.push_back(std::to_string(values.empty() ? request.order : values.front().order));
     table.rows.push_back(std::move(row));
 

@@ -1,0 +1,145 @@
+// The "mixture" transport model (docs/conventions.md): s = 2 … 4 smooth inelastic species,
+// dilute or dense; so far the homogeneous cooling state in the Maxwellian approximation
+// (theory.md §16).
+#include <map>
+#include <stdexcept>
+
+#include "gkt/mixture.hpp"
+#include "gkt/mixture_cooling_state.hpp"
+#include "gkt/pair_correlation.hpp"
+#include "transport/models.hpp"
+
+namespace gkt {
+
+namespace {
+
+constexpr int kMaxSpecies = 4;
+
+std::string index_name(const std::string& base, int i) { return base + "_" + std::to_string(i); }
+std::string index_name(const std::string& base, int i, int j) { return index_name(index_name(base, i), j); }
+
+ParameterSpec real(const std::string& name, const Rational& min, bool min_inclusive, const Rational& max,
+                   bool max_inclusive, const Rational& fallback, const std::string& description) {
+  return {name, ParameterSpec::Kind::real, min, max, min_inclusive, max_inclusive, fallback, description, {}};
+}
+
+class MixtureModel final : public TransportModel {
+ public:
+  [[nodiscard]] std::string name() const override { return "mixture"; }
+  [[nodiscard]] std::string description() const override {
+    return "granular mixture of s = 2..4 smooth inelastic hard spheres/disks (dilute or Enskog): homogeneous "
+           "cooling state, Maxwellian approximation";
+  }
+  [[nodiscard]] std::vector<std::string> coefficient_names() const override { return names(kMaxSpecies); }
+  [[nodiscard]] std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const override {
+    const Rational s = fixed.number("species", Rational(kMaxSpecies));
+    return names(static_cast<int>(s.to_double()));
+  }
+  [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
+    std::vector<ParameterSpec> p{{"dimension",
+                                  ParameterSpec::Kind::integer,
+                                  Rational(2),
+                                  Rational(3),
+                                  true,
+                                  true,
+                                  Rational(3),
+                                  "spatial dimension",
+                                  {}},
+                                 {"species",
+                                  ParameterSpec::Kind::integer,
+                                  Rational(2),
+                                  Rational(kMaxSpecies),
+                                  true,
+                                  true,
+                                  Rational(2),
+                                  "number of species (set by the [[species]] tables)",
+                                  {}},
+                                 real("packing_fraction", Rational(0), true, max_packing_fraction(2), false,
+                                      Rational(0), "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
+                                 real("alpha", Rational(0), false, Rational(1), true, Rational(1),
+                                      "restitution coefficient of every pair (alpha_i_j overrides one pair)")};
+    for (int i = 1; i <= kMaxSpecies; ++i) {
+      p.push_back(real(index_name("mass", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
+                       "mass of species i (any unit)"));
+      p.push_back(real(index_name("diameter", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
+                       "diameter of species i (any unit)"));
+      p.push_back(real(index_name("fraction", i), Rational(0), false, Rational(1), true, Rational(1),
+                       "mole fraction x_i (the fractions sum to 1)"));
+    }
+    for (int i = 1; i <= kMaxSpecies; ++i)
+      for (int j = i; j <= kMaxSpecies; ++j)
+        p.push_back(real(index_name("alpha", i, j), Rational(0), false, Rational(1), true, Rational(1),
+                         "restitution coefficient of the pair (i, j)"));
+    return p;
+  }
+  [[nodiscard]] int max_order() const override { return 1; }
+
+  std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
+                                         const OrderRequest& order) override {
+    if (order.tolerance || order.order != 1)
+      throw std::invalid_argument("order: the mixture model has order 1 only (Maxwellian homogeneous cooling state)");
+    const Mixture mixture = make(point);
+    const MixtureCoolingState state = mixture_cooling_state(mixture);
+    const auto s = static_cast<int>(mixture.size());
+    std::vector<CoefficientValue> out;
+    for (const auto& c : coefficients) {
+      double value = 0;
+      if (c == "cooling_rate") {
+        value = state.cooling_rate;
+      } else {
+        int i = 0;
+        for (int k = 1; k <= s; ++k)
+          if (c == index_name("temperature_ratio", k)) i = k;
+        if (i == 0)
+          throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
+                                      " species; valid: " + detail::join(names(s)));
+        value = state.temperature_ratio[static_cast<std::size_t>(i - 1)];
+      }
+      // The error of the Maxwellian approximation is not estimated yet (theory.md §16.3).
+      out.push_back({Rational::from_double(value), Rational(0), 1, state.solved, false, state.solved, false});
+    }
+    return out;
+  }
+
+ private:
+  static std::vector<std::string> names(int s) {
+    std::vector<std::string> n{"cooling_rate"};
+    for (int i = 1; i <= s; ++i) n.push_back(index_name("temperature_ratio", i));
+    return n;
+  }
+  static Mixture make(const ParameterPoint& p) {
+    const int s = static_cast<int>(p.number("species", Rational(0)).to_double());
+    if (s < 2 || s > kMaxSpecies)
+      throw std::invalid_argument("species: give 2 to " + std::to_string(kMaxSpecies) +
+                                  " [[species]] tables (mass, diameter, fraction), got " + std::to_string(s));
+    Mixture m;
+    m.dimension = static_cast<int>(p.number("dimension", Rational(3)).to_double());
+    m.packing_fraction = p.number("packing_fraction", Rational(0)).to_double();
+    for (int i = 1; i <= s; ++i) {
+      Species sp;
+      for (const char* field : {"mass", "diameter", "fraction"})
+        if (!p.numbers.contains(index_name(field, i)))
+          throw std::invalid_argument("species[" + std::to_string(i) + "]." + field + ": required");
+      sp.mass = p.number(index_name("mass", i), Rational(1)).to_double();
+      sp.diameter = p.number(index_name("diameter", i), Rational(1)).to_double();
+      sp.fraction = p.number(index_name("fraction", i), Rational(1)).to_double();
+      m.species.push_back(sp);
+    }
+    const Rational alpha = p.number("alpha", Rational(1));
+    m.alpha.assign(static_cast<std::size_t>(s * s), 0.0);
+    for (int i = 1; i <= s; ++i)
+      for (int j = i; j <= s; ++j) {
+        const double a = p.number(index_name("alpha", i, j), alpha).to_double();
+        m.alpha[static_cast<std::size_t>((i - 1) * s + j - 1)] = a;
+        m.alpha[static_cast<std::size_t>((j - 1) * s + i - 1)] = a;
+      }
+    m.validate();
+    return m;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<TransportModel> detail::make_mixture_model() { return std::make_unique<MixtureModel>(); }
+
+}  // namespace gkt
