@@ -71,6 +71,28 @@ TEST(Mixture, IdenticalSpeciesGiveOneComponentGas) {
       }
 }
 
+// First Sonine, linear in a2,i: identical species give the one-component linear scheme — van
+// Noije–Ernst's a2 and ζ* = χ ζ*(a2) — to round-off, though the mixture equations (16.7) are the
+// X² moments of two coupled species and the one-component ones the S_2 projection of one.
+TEST(Mixture, IdenticalSpeciesGiveVanNoijeErnst) {
+  for (int d : {2, 3}) {
+    const auto hcs = gkt::first_sonine_hcs(d);
+    for (const double alpha : {0.9, 0.5, 0.2})
+      for (const double phi : {0.0, 0.3}) {
+        const auto state =
+            gkt::mixture_cooling_state(binary(d, 1.0, 1.0, 0.3, alpha, phi), gkt::MixtureHcsScheme::linear);
+        ASSERT_TRUE(state.solved) << d << " " << alpha;
+        const Rational a = Rational::from_double(alpha);
+        const double chi = state.chi[0];
+        for (std::size_t i = 0; i < 2; ++i) {
+          EXPECT_NEAR(state.a2[i], hcs.a2.evaluate(a).to_double(), 1e-13) << d << " " << alpha;
+          EXPECT_NEAR(state.temperature_ratio[i], 1.0, 1e-13);
+        }
+        EXPECT_NEAR(state.cooling_rate, chi * hcs.cooling_rate.evaluate(a).to_double(), 1e-13) << d << " " << alpha;
+      }
+  }
+}
+
 // α = 1: equipartition holds exactly whatever the masses, sizes and density (no cooling).
 TEST(Mixture, ElasticMixtureIsInEquipartition) {
   for (int d : {2, 3}) {
@@ -132,18 +154,57 @@ TEST(Mixture, ExtremeRatiosConverge) {
         }
 }
 
+// Relabelling the species and changing the units of mass and length change nothing: (1, 1) +
+// (0.5, 10) is (1, 1) + (2, 0.1) with masses ×2, diameters ×0.1 and the species swapped. Both
+// schemes, first-Sonine iteration included (it sees different rational widths in the engine).
+TEST(Mixture, InvariantUnderRelabellingAndUnits) {
+  for (const auto scheme : {gkt::MixtureHcsScheme::maxwellian, gkt::MixtureHcsScheme::linear}) {
+    const auto a = gkt::mixture_cooling_state(binary(3, 0.5, 10.0, 0.3, 0.5, 0.3), scheme);
+    const auto b =
+        gkt::mixture_cooling_state(gkt::make_mixture(3, {{1.0, 1.0, 0.7, ""}, {2.0, 0.1, 0.3, ""}}, 0.5, 0.3), scheme);
+    ASSERT_TRUE(a.solved && b.solved);
+    EXPECT_NEAR(a.temperature_ratio[0], b.temperature_ratio[1], 1e-11);
+    EXPECT_NEAR(a.temperature_ratio[1], b.temperature_ratio[0], 1e-11);
+    EXPECT_NEAR(a.a2[0], b.a2[1], 1e-11);
+    EXPECT_NEAR(a.a2[1], b.a2[0], 1e-11);
+    EXPECT_NEAR(a.cooling_rate, b.cooling_rate, 1e-11);
+  }
+}
+
+// First Sonine at extreme ratios (α = 0.5, φ = 0.3): converges, and the a2,i correction moves the
+// temperature ratios by at most 10 % of the Maxwellian values (measured ≤ 7.8 %).
+TEST(Mixture, FirstSonineExtremeRatios) {
+  for (int d : {2, 3})
+    for (const double m2 : {1e-3, 1e3})
+      for (const double s2 : {0.1, 10.0}) {
+        const auto mix = binary(d, m2, s2, 0.5, 0.5, 0.3);
+        const auto m = gkt::mixture_cooling_state(mix);
+        const auto l = gkt::mixture_cooling_state(mix, gkt::MixtureHcsScheme::linear);
+        ASSERT_TRUE(m.solved && l.solved) << d << " " << m2 << " " << s2;
+        for (std::size_t i = 0; i < 2; ++i) {
+          EXPECT_NEAR(l.temperature_ratio[i], m.temperature_ratio[i], 0.1 * m.temperature_ratio[i]) << d << " " << m2;
+          EXPECT_TRUE(std::abs(l.a2[i]) < 1) << d << " " << m2 << " " << s2 << " a2 = " << l.a2[i];
+        }
+      }
+}
+
 // Three species: equal cooling rates and the normalisation; merging two identical species of a
 // ternary gives the binary result.
 TEST(Mixture, ThreeSpeciesReduceToBinary) {
   for (int d : {2, 3}) {
-    const auto two = gkt::mixture_cooling_state(binary(d, 4.0, 1.5, 0.4, 0.75, 0.2));
-    const auto three = gkt::mixture_cooling_state(
-        gkt::make_mixture(d, {{1.0, 1.0, 0.25, ""}, {4.0, 1.5, 0.6, ""}, {1.0, 1.0, 0.15, ""}}, 0.75, 0.2));
-    ASSERT_TRUE(two.solved && three.solved);
-    EXPECT_NEAR(three.temperature_ratio[0], two.temperature_ratio[0], 1e-12);
-    EXPECT_NEAR(three.temperature_ratio[2], two.temperature_ratio[0], 1e-12);
-    EXPECT_NEAR(three.temperature_ratio[1], two.temperature_ratio[1], 1e-12);
-    EXPECT_NEAR(three.cooling_rate, two.cooling_rate, 1e-12);
+    for (const auto scheme : {gkt::MixtureHcsScheme::maxwellian, gkt::MixtureHcsScheme::linear}) {
+      const auto two = gkt::mixture_cooling_state(binary(d, 4.0, 1.5, 0.4, 0.75, 0.2), scheme);
+      const auto three = gkt::mixture_cooling_state(
+          gkt::make_mixture(d, {{1.0, 1.0, 0.25, ""}, {4.0, 1.5, 0.6, ""}, {1.0, 1.0, 0.15, ""}}, 0.75, 0.2), scheme);
+      ASSERT_TRUE(two.solved && three.solved);
+      EXPECT_NEAR(three.temperature_ratio[0], two.temperature_ratio[0], 1e-11);
+      EXPECT_NEAR(three.temperature_ratio[2], two.temperature_ratio[0], 1e-11);
+      EXPECT_NEAR(three.temperature_ratio[1], two.temperature_ratio[1], 1e-11);
+      EXPECT_NEAR(three.a2[0], two.a2[0], 1e-11);
+      EXPECT_NEAR(three.a2[2], two.a2[0], 1e-11);
+      EXPECT_NEAR(three.a2[1], two.a2[1], 1e-11);
+      EXPECT_NEAR(three.cooling_rate, two.cooling_rate, 1e-11);
+    }
   }
 }
 

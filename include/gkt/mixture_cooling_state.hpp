@@ -1,5 +1,6 @@
-// The homogeneous cooling state of a granular mixture in the Maxwellian approximation: partial
-// temperatures T_i/T from equal cooling rates ζ_1 = … = ζ_s (docs/theory.md §16.2).
+// The homogeneous cooling state of a granular mixture: partial temperatures T_i/T from equal
+// cooling rates ζ_1 = … = ζ_s, in the Maxwellian approximation or in the first Sonine
+// approximation with the cumulants a2,i, linear in them (docs/theory.md §16).
 #pragma once
 
 #include <span>
@@ -14,23 +15,32 @@ namespace gkt {
 /// −2μ_ji(1+α)[1 − ½μ_ji(1+α)(1 + θ_i/θ_j)], μ_ji = m_j/(m_i + m_j) (theory.md (16.3)).
 double pair_energy_change(double mu_ji, double alpha, double theta_ratio);
 
-/// Returns ζ_i* = ζ_i/ν0 of every species at temperature ratios γ_i = T_i/T (Σ x_i γ_i = 1) with
-/// contact values χ_ij (i·s + j); ν0 = nT/η0 with η0 the elastic first-Sonine viscosity of a
-/// one-component gas of mass m̄ and diameter σ̄ (theory.md (16.4)). Writes into `rates` (size s).
+/// Returns ζ_i* = ζ_i/ν0 of every species at temperature ratios γ_i = T_i/T with contact values
+/// χ_ij (i·s + j); ν0 = nT/η0 with η0 the elastic first-Sonine viscosity of a one-component gas
+/// of mass m̄ and diameter σ̄ (theory.md (16.4)). `correction` (i·s + j, optional) is added to
+/// the pair's ⟨X1' − X1⟩: the a2 terms of (16.6). Writes into `rates` (size s).
 void species_cooling_rates(const Mixture& mixture, std::span<const double> temperature_ratio,
-                           std::span<const double> chi, std::span<double> rates);
+                           std::span<const double> chi, std::span<double> rates,
+                           std::span<const double> correction = {});
+
+/// How the species distributions of the HCS are represented.
+enum class MixtureHcsScheme {
+  maxwellian,  ///< f_i Maxwellian at T_i (a2,i = 0)
+  linear,      ///< f_i = f_M,i (1 + a2,i S_2), every collision moment linear in the a2,i
+};
 
 /// The mixture HCS.
 struct MixtureCoolingState {
   std::vector<double> temperature_ratio;  ///< γ_i = T_i/T
+  std::vector<double> a2;                 ///< a2,i (zero in the Maxwellian scheme)
   double cooling_rate = 0;                ///< the common ζ* = ζ/ν0
   std::vector<double> chi;                ///< χ_ij at i·s + j
-  int iterations = 0;                     ///< Gauss–Seidel sweeps
-  bool solved = false;                    ///< max_i |ζ_i* − ζ*| ≤ 1e-12 max(1, |ζ*|) reached
+  int iterations = 0;                     ///< outer iterations (linear scheme) or Gauss–Seidel sweeps
+  bool solved = false;                    ///< equal rates to 1e-12 (and, linear, a fixed point to 1e-12)
 };
 
-/// Returns the HCS of the mixture (validated first; throws std::invalid_argument on bad input):
-/// ζ_i* = ζ_s* for the ratios γ_i/γ_s (bracketed 1D roots, swept until fixed), then Σ x_i γ_i = 1.
-MixtureCoolingState mixture_cooling_state(const Mixture& mixture);
+/// Returns the HCS of the mixture (validated first; throws std::invalid_argument on bad input).
+MixtureCoolingState mixture_cooling_state(const Mixture& mixture,
+                                          MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian);
 
 }  // namespace gkt

@@ -2,50 +2,40 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+
+#include <Eigen/Dense>
+
+#include "gkt/collision_moments.hpp"
 
 namespace gkt {
 
-double pair_energy_change(double mu_ji, double alpha, double theta_ratio) {
-  // [garzo1999mixture]; derived in theory.md (16.3) and checked against the engine's exact
-  // moments E(0,0,1) − E(1,0,0) (tests/test_mixture.cpp).
-  return -2 * mu_ji * (1 + alpha) * (1 - 0.5 * mu_ji * (1 + alpha) * (1 + theta_ratio));
+namespace {
+
+/// Λ = (d+2)√2/8: ζ_i* = −(2/d) Λ W_i, W_i = Σ_j c_ij ⟨X1' − X1⟩_ij (theory.md (16.4)–(16.5)).
+double lambda(int d) { return (d + 2) * std::sqrt(2.0) / 8.0; }
+
+/// Returns θ_i = m_i/(m̄ γ_i), the Maxwellian width in units of √(2T/m̄).
+double theta(const Mixture& m, std::size_t i, double gamma) { return m.species[i].mass / (m.mean_mass() * gamma); }
+
+/// c_ij = x_j χ_ij (σ_ij/σ̄)^{d−1} √(1/θ_i + 1/θ_j).
+double pair_weight(const Mixture& m, std::span<const double> chi, std::size_t i, std::size_t j, double theta_i,
+                   double theta_j) {
+  const double sigma_ij = 0.5 * (m.species[i].diameter + m.species[j].diameter) / m.mean_diameter();
+  return m.species[j].fraction * chi[i * m.size() + j] * std::pow(sigma_ij, m.dimension - 1) *
+         std::sqrt(1 / theta_i + 1 / theta_j);
 }
 
-void species_cooling_rates(const Mixture& mixture, std::span<const double> temperature_ratio,
-                           std::span<const double> chi, std::span<double> rates) {
+/// Solves ζ_1 = … = ζ_s (rates from `rates_at`) for the ratios by nonlinear Gauss–Seidel on
+/// u_i = ln(γ_i/γ_s), starting from `gamma`; returns the sweeps used and leaves Σ x_i γ_i = 1.
+int solve_equal_rates(const Mixture& mixture, std::vector<double>& gamma,
+                      const std::function<void(std::span<const double>, std::span<double>)>& rates_at) {
   const std::size_t s = mixture.size();
-  const int d = mixture.dimension;
-  const double m_ref = mixture.mean_mass(), sigma_ref = mixture.mean_diameter();
-  const double prefactor = -(d + 2) * std::sqrt(2.0) / (4.0 * d);  // (16.4)
-  for (std::size_t i = 0; i < s; ++i) {
-    const Species& a = mixture.species[i];
-    const double theta_i = a.mass / (m_ref * temperature_ratio[i]);  // θ = m/(2T) in units of √(2T/m̄)
-    double sum = 0;
-    for (std::size_t j = 0; j < s; ++j) {
-      const Species& b = mixture.species[j];
-      const double theta_j = b.mass / (m_ref * temperature_ratio[j]);
-      const double mu_ji = b.mass / (a.mass + b.mass);
-      const double sigma_ij = 0.5 * (a.diameter + b.diameter) / sigma_ref;
-      sum += b.fraction * chi[i * s + j] * std::pow(sigma_ij, d - 1) * std::sqrt(1 / theta_i + 1 / theta_j) *
-             pair_energy_change(mu_ji, mixture.restitution(i, j), theta_i / theta_j);
-    }
-    rates[i] = prefactor * sum;
-  }
-}
-
-MixtureCoolingState mixture_cooling_state(const Mixture& mixture) {
-  mixture.validate();
-  const std::size_t s = mixture.size();
-  MixtureCoolingState out;
-  out.chi = mixture.contact_values();
-  // ζ_i(λγ) = √λ ζ_i(γ): the conditions ζ_i = ζ_s fix the ratios only. Unknowns u_i = ln(γ_i/γ_s),
-  // i < s (u_s = 0), solved by nonlinear Gauss–Seidel — for each i in turn the bracketed 1D root of
-  // h_i(u_i) = ζ_i − ζ_s, which exists and is unique (h_i → ∓∞ as u_i → ∓∞ as long as α_ij < 1
-  // somewhere; at α = 1 every ζ_i vanishes and equipartition is returned) — then normalised.
-  std::vector<double> u(s, 0.0), gamma(s), rates(s);
+  std::vector<double> u(s), g(s), rates(s);
+  for (std::size_t i = 0; i < s; ++i) u[i] = std::log(gamma[i] / gamma[s - 1]);
   auto evaluate = [&] {
-    for (std::size_t i = 0; i < s; ++i) gamma[i] = std::exp(u[i]);
-    species_cooling_rates(mixture, gamma, out.chi, rates);
+    for (std::size_t i = 0; i < s; ++i) g[i] = std::exp(u[i]);
+    rates_at(g, rates);
   };
   auto h = [&](std::size_t i, double t) {
     u[i] = t;
@@ -55,6 +45,7 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture) {
   evaluate();
   double scale = 0;
   for (const double r : rates) scale = std::max(scale, std::abs(r));
+  int sweeps = 0;
   if (scale > 0) {
     for (int sweep = 0; sweep < 500; ++sweep) {
       double change = 0;
@@ -72,20 +63,144 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture) {
         u[i] = 0.5 * (lo + hi);
         change = std::max(change, std::abs(u[i] - start));
       }
-      out.iterations = sweep + 1;
+      sweeps = sweep + 1;
       if (change < 1e-14) break;
     }
   }
-  evaluate();
   double norm = 0;
-  for (std::size_t i = 0; i < s; ++i) norm += mixture.species[i].fraction * gamma[i];
-  for (std::size_t i = 0; i < s; ++i) gamma[i] /= norm;
-  species_cooling_rates(mixture, gamma, out.chi, rates);
+  for (std::size_t i = 0; i < s; ++i) norm += mixture.species[i].fraction * std::exp(u[i]);
+  for (std::size_t i = 0; i < s; ++i) gamma[i] = std::exp(u[i]) / norm;
+  return sweeps;
+}
+
+/// ⟨(X1'^p − X1^p) S_2(X1)^a S_2(X2)^b⟩/J0 for p = 1, 2 and (a, b) = (0,0), (1,0), (0,1), from the
+/// engine's exact moments E(a, b, c) at the pair's widths (rational approximations of θ).
+struct PairSonineMoments {
+  double energy[3], fourth[3];  // p = 1, 2; index 0: (0,0), 1: S_2(X1), 2: S_2(X2)
+};
+
+PairSonineMoments pair_sonine_moments(const Mixture& m, std::size_t i, std::size_t j, double theta_i, double theta_j) {
+  const int d = m.dimension;
+  const CollisionPair pair{d, Rational::from_double(m.species[i].mass), Rational::from_double(m.species[j].mass),
+                           Rational::from_double(theta_i), Rational::from_double(theta_j)};
+  const auto e = scalar_collision_moments<Rational>(pair, Rational::from_double(m.restitution(i, j)), 2);
+  // S_2(X) = X²/2 − (d+2)X/2 + d(d+2)/8 (theory.md (1.1), index d/2 − 1).
+  const Rational s2[] = {Rational(d * (d + 2), 8), Rational(-(d + 2), 2), Rational(1, 2)};
+  PairSonineMoments out{};
+  for (int p = 1; p <= 2; ++p) {
+    Rational plain = e(0, 0, p) - e(p, 0, 0), own(0), partner(0);
+    for (int n = 0; n <= 2; ++n) {
+      own += s2[n] * (e(n, 0, p) - e(n + p, 0, 0));
+      partner += s2[n] * (e(0, n, p) - e(p, n, 0));
+    }
+    double* target = p == 1 ? out.energy : out.fourth;
+    target[0] = plain.to_double();
+    target[1] = own.to_double();
+    target[2] = partner.to_double();
+  }
+  return out;
+}
+
+}  // namespace
+
+double pair_energy_change(double mu_ji, double alpha, double theta_ratio) {
+  // [garzo1999mixture]; derived in theory.md (16.3) and checked against the engine's exact
+  // moments E(0,0,1) − E(1,0,0) (tests/test_mixture.cpp).
+  return -2 * mu_ji * (1 + alpha) * (1 - 0.5 * mu_ji * (1 + alpha) * (1 + theta_ratio));
+}
+
+void species_cooling_rates(const Mixture& mixture, std::span<const double> temperature_ratio,
+                           std::span<const double> chi, std::span<double> rates, std::span<const double> correction) {
+  const std::size_t s = mixture.size();
+  const double prefactor = -2.0 / mixture.dimension * lambda(mixture.dimension);  // (16.4)
+  for (std::size_t i = 0; i < s; ++i) {
+    const Species& a = mixture.species[i];
+    const double theta_i = theta(mixture, i, temperature_ratio[i]);
+    double sum = 0;
+    for (std::size_t j = 0; j < s; ++j) {
+      const double theta_j = theta(mixture, j, temperature_ratio[j]);
+      const double mu_ji = mixture.species[j].mass / (a.mass + mixture.species[j].mass);
+      double change = pair_energy_change(mu_ji, mixture.restitution(i, j), theta_i / theta_j);
+      if (!correction.empty()) change += correction[i * s + j];
+      sum += pair_weight(mixture, chi, i, j, theta_i, theta_j) * change;
+    }
+    rates[i] = prefactor * sum;
+  }
+}
+
+MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsScheme scheme) {
+  mixture.validate();
+  const std::size_t s = mixture.size();
+  const int d = mixture.dimension;
+  MixtureCoolingState out;
+  out.chi = mixture.contact_values();
+  std::vector<double> gamma(s, 1.0), rates(s), correction;
+  auto rates_at = [&](std::span<const double> g, std::span<double> r) {
+    species_cooling_rates(mixture, g, out.chi, r, correction);
+  };
+  out.iterations = solve_equal_rates(mixture, gamma, rates_at);
+  out.a2.assign(s, 0.0);
+  bool fixed_point = true;
+  if (scheme == MixtureHcsScheme::linear) {
+    // Outer iteration (theory.md §16.3): at the current γ the engine's moments give the linear
+    // equations (16.7) for a2,i; their a2 terms enter ζ_i as a fixed correction while γ is
+    // re-solved; repeat until γ and a2 stop moving.
+    const auto n = static_cast<Eigen::Index>(s);
+    const double lam = lambda(d), fourth = d * (d + 2) / 2.0;  // 2⟨X²⟩_M = d(d+2)/2
+    fixed_point = false;
+    for (int outer = 0; outer < 50 && !fixed_point; ++outer) {
+      std::vector<PairSonineMoments> pm(s * s);
+      std::vector<double> c(s * s), th(s);
+      for (std::size_t i = 0; i < s; ++i) th[i] = theta(mixture, i, gamma[i]);
+      for (std::size_t i = 0; i < s; ++i)
+        for (std::size_t j = 0; j < s; ++j) {
+          pm[i * s + j] = pair_sonine_moments(mixture, i, j, th[i], th[j]);
+          c[i * s + j] = pair_weight(mixture, out.chi, i, j, th[i], th[j]);
+        }
+      // (16.7): (d(d+2)/2)[ζ_i^M (1 + a_i) + δζ_i] + Λ Σ_j c_ij (F00 + a_i F10 + a_j F01) = 0,
+      // ζ_i^M = −(2/d)Λ Σ_j c_ij E00, δζ_i = −(2/d)Λ Σ_j c_ij (a_i E10 + a_j E01).
+      Eigen::MatrixXd a_matrix = Eigen::MatrixXd::Zero(n, n);
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+      for (std::size_t i = 0; i < s; ++i) {
+        const auto I = static_cast<Eigen::Index>(i);
+        double zeta_m = 0;
+        for (std::size_t j = 0; j < s; ++j) zeta_m += -2.0 / d * lam * c[i * s + j] * pm[i * s + j].energy[0];
+        a_matrix(I, I) += fourth * zeta_m;
+        rhs(I) -= fourth * zeta_m;
+        for (std::size_t j = 0; j < s; ++j) {
+          const auto J = static_cast<Eigen::Index>(j);
+          const PairSonineMoments& q = pm[i * s + j];
+          const double cij = c[i * s + j];
+          a_matrix(I, I) += fourth * (-2.0 / d) * lam * cij * q.energy[1] + lam * cij * q.fourth[1];
+          a_matrix(I, J) += fourth * (-2.0 / d) * lam * cij * q.energy[2] + lam * cij * q.fourth[2];
+          rhs(I) -= lam * cij * q.fourth[0];
+        }
+      }
+      const Eigen::VectorXd a = a_matrix.fullPivLu().solve(rhs);
+      correction.assign(s * s, 0.0);
+      for (std::size_t i = 0; i < s; ++i)
+        for (std::size_t j = 0; j < s; ++j)
+          correction[i * s + j] = a(static_cast<Eigen::Index>(i)) * pm[i * s + j].energy[1] +
+                                  a(static_cast<Eigen::Index>(j)) * pm[i * s + j].energy[2];
+      const std::vector<double> before = gamma;
+      solve_equal_rates(mixture, gamma, rates_at);
+      double change = 0;
+      for (std::size_t i = 0; i < s; ++i) {
+        change =
+            std::max({change, std::abs(gamma[i] - before[i]), std::abs(a(static_cast<Eigen::Index>(i)) - out.a2[i])});
+        out.a2[i] = a(static_cast<Eigen::Index>(i));
+      }
+      out.iterations = outer + 1;
+      fixed_point = change < 1e-12;
+    }
+  }
+  rates_at(gamma, rates);
   out.temperature_ratio = gamma;
   out.cooling_rate = rates[s - 1];
   double spread = 0;
   for (std::size_t i = 0; i < s; ++i) spread = std::max(spread, std::abs(rates[i] - rates[s - 1]));
-  out.solved = spread <= 1e-12 * std::max(1.0, std::abs(out.cooling_rate)) && std::isfinite(out.cooling_rate);
+  out.solved =
+      fixed_point && std::isfinite(out.cooling_rate) && spread <= 1e-12 * std::max(1.0, std::abs(out.cooling_rate));
   return out;
 }
 

@@ -1,6 +1,6 @@
 // The "mixture" transport model (docs/conventions.md): s = 2 … 4 smooth inelastic species,
-// dilute or dense; so far the homogeneous cooling state in the Maxwellian approximation
-// (theory.md §16).
+// dilute or dense; so far the homogeneous cooling state: temperature ratios, cooling rate and
+// the species cumulants a2,i (theory.md §16).
 #include <map>
 #include <stdexcept>
 
@@ -28,7 +28,7 @@ class MixtureModel final : public TransportModel {
   [[nodiscard]] std::string name() const override { return "mixture"; }
   [[nodiscard]] std::string description() const override {
     return "granular mixture of s = 2..4 smooth inelastic hard spheres/disks (dilute or Enskog): homogeneous "
-           "cooling state, Maxwellian approximation";
+           "cooling state (first Sonine or Maxwellian)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override { return names(kMaxSpecies); }
   [[nodiscard]] std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const override {
@@ -36,28 +36,39 @@ class MixtureModel final : public TransportModel {
     return names(static_cast<int>(s.to_double()));
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    std::vector<ParameterSpec> p{{"dimension",
-                                  ParameterSpec::Kind::integer,
-                                  Rational(2),
-                                  Rational(3),
-                                  true,
-                                  true,
-                                  Rational(3),
-                                  "spatial dimension",
-                                  {}},
-                                 {"species",
-                                  ParameterSpec::Kind::integer,
-                                  Rational(2),
-                                  Rational(kMaxSpecies),
-                                  true,
-                                  true,
-                                  Rational(2),
-                                  "number of species (set by the [[species]] tables)",
-                                  {}},
-                                 real("packing_fraction", Rational(0), true, max_packing_fraction(2), false,
-                                      Rational(0), "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
-                                 real("alpha", Rational(0), false, Rational(1), true, Rational(1),
-                                      "restitution coefficient of every pair (alpha_i_j overrides one pair)")};
+    std::vector<ParameterSpec> p{
+        {"dimension",
+         ParameterSpec::Kind::integer,
+         Rational(2),
+         Rational(3),
+         true,
+         true,
+         Rational(3),
+         "spatial dimension",
+         {}},
+        {"species",
+         ParameterSpec::Kind::integer,
+         Rational(2),
+         Rational(kMaxSpecies),
+         true,
+         true,
+         Rational(2),
+         "number of species (set by the [[species]] tables)",
+         {}},
+        real("packing_fraction", Rational(0), true, max_packing_fraction(2), false, Rational(0),
+             "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
+        real("alpha", Rational(0), false, Rational(1), true, Rational(1),
+             "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
+        {"hcs",
+         ParameterSpec::Kind::choice,
+         Rational(0),
+         Rational(0),
+         true,
+         true,
+         Rational(0),
+         "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear) or "
+         "Maxwellian",
+         {"linear", "maxwellian"}}};
     for (int i = 1; i <= kMaxSpecies; ++i) {
       p.push_back(real(index_name("mass", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
                        "mass of species i (any unit)"));
@@ -77,26 +88,46 @@ class MixtureModel final : public TransportModel {
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
     if (order.tolerance || order.order != 1)
-      throw std::invalid_argument("order: the mixture model has order 1 only (Maxwellian homogeneous cooling state)");
+      throw std::invalid_argument("order: the mixture model has order 1 only (first-Sonine homogeneous cooling state)");
+    const std::string hcs = point.choice("hcs", "linear");
+    parameters()[4].check(hcs);
     const Mixture mixture = make(point);
-    const MixtureCoolingState state = mixture_cooling_state(mixture);
     const auto s = static_cast<int>(mixture.size());
+    // Both schemes are solved: their difference is the error estimate (theory.md §16.3).
+    const MixtureCoolingState maxwellian = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
+    const MixtureCoolingState linear = mixture_cooling_state(mixture, MixtureHcsScheme::linear);
+    const bool use_linear = hcs == "linear";
+    const MixtureCoolingState& state = use_linear ? linear : maxwellian;
+    const MixtureCoolingState& other = use_linear ? maxwellian : linear;
+    const bool solved = maxwellian.solved && linear.solved;
+    auto value = [&](double v, double alternative, bool estimated) {
+      return CoefficientValue{Rational::from_double(v),
+                              Rational::from_double(std::abs(v - alternative)),
+                              1,
+                              solved,
+                              false,
+                              state.solved,
+                              estimated};
+    };
     std::vector<CoefficientValue> out;
     for (const auto& c : coefficients) {
-      double value = 0;
       if (c == "cooling_rate") {
-        value = state.cooling_rate;
-      } else {
-        int i = 0;
-        for (int k = 1; k <= s; ++k)
-          if (c == index_name("temperature_ratio", k)) i = k;
-        if (i == 0)
-          throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
-                                      " species; valid: " + detail::join(names(s)));
-        value = state.temperature_ratio[static_cast<std::size_t>(i - 1)];
+        out.push_back(value(state.cooling_rate, other.cooling_rate, true));
+        continue;
       }
-      // The error of the Maxwellian approximation is not estimated yet (theory.md §16.3).
-      out.push_back({Rational::from_double(value), Rational(0), 1, state.solved, false, state.solved, false});
+      int i = 0, kind = 0;
+      for (int k = 1; k <= s; ++k) {
+        if (c == index_name("temperature_ratio", k)) i = k, kind = 1;
+        if (c == index_name("a2_species", k)) i = k, kind = 2;
+      }
+      if (i == 0)
+        throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
+                                    " species; valid: " + detail::join(names(s)));
+      const auto k = static_cast<std::size_t>(i - 1);
+      if (kind == 1)
+        out.push_back(value(state.temperature_ratio[k], other.temperature_ratio[k], true));
+      else  // a2,i: no higher approximation here to estimate its error against
+        out.push_back(value(state.a2[k], state.a2[k], false));
     }
     return out;
   }
@@ -105,6 +136,7 @@ class MixtureModel final : public TransportModel {
   static std::vector<std::string> names(int s) {
     std::vector<std::string> n{"cooling_rate"};
     for (int i = 1; i <= s; ++i) n.push_back(index_name("temperature_ratio", i));
+    for (int i = 1; i <= s; ++i) n.push_back(index_name("a2_species", i));
     return n;
   }
   static Mixture make(const ParameterPoint& p) {
