@@ -181,6 +181,14 @@ TEST(CliGolden, MixtureHcs) {
   EXPECT_NE(same.out.find("\n0.26666666666666666,1,"), std::string::npos) << same.out;
 }
 
+// Tracer diffusion to a tolerance in Sonine order (regression data, tests/golden/README.md; the
+// physics in tests/test_mixture.cpp).
+TEST(CliGolden, TracerDiffusion) {
+  const CliRun r = run_gkt("table " + scene_path("tracer_diffusion.toml"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("tracer_diffusion.csv")));
+}
+
 TEST(CliGolden, NavierStokesFirstSonineExact) {
   const CliRun r = run_gkt("table " + scene_path("navier_stokes_first_sonine.toml") + " --exact");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -465,6 +473,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"mixture_one_species",
                  "model = \"mixture\"\norder = 1\n[[species]]\nmass = 1\ndiameter = 1\nfraction = 1\n", "",
                  "species: must be an integer in [2, 4], got 1"},
+        BadInput{"tracer_dense", kMixture + "fraction = 0.5\n",
+                 "--set packing_fraction=0.1 --set 'coefficients=[\"tracer_diffusion_1\"]'",
+                 "coefficients: tracer_diffusion_1 is computed for the dilute gas only"},
         BadInput{"mixture_no_third_species", kMixture + "fraction = 0.5\n",
                  "--set 'coefficients=[\"temperature_ratio_3\"]'",
                  "coefficients: unknown coefficient 'temperature_ratio_3'"}),

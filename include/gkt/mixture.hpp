@@ -13,7 +13,7 @@ namespace gkt {
 struct Species {
   double mass = 1;
   double diameter = 1;
-  double fraction = 1;  ///< mole fraction x_i = n_i/n
+  double fraction = 1;  ///< mole fraction x_i = n_i/n; 0 is a tracer (the limit x_i → 0)
   std::string name;     ///< optional label
 };
 
@@ -27,7 +27,7 @@ struct Mixture {
   [[nodiscard]] std::size_t size() const { return species.size(); }
   [[nodiscard]] double restitution(std::size_t i, std::size_t j) const { return alpha[i * size() + j]; }
   /// Throws std::invalid_argument with a one-line message naming the field and its allowed range:
-  /// d ∉ {2, 3}, fewer than 2 species, mass or diameter ≤ 0, fractions outside (0, 1] or not
+  /// d ∉ {2, 3}, fewer than 2 species, mass or diameter ≤ 0, fractions outside [0, 1] or not
   /// summing to 1 within 1e-12, α not symmetric or outside (0, 1], φ outside [0, φ_max).
   void validate() const;
   /// Returns m̄ = Σ x_i m_i, the reference mass of the reduced units (conventions.md).

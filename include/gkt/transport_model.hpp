@@ -74,6 +74,11 @@ class TransportModel {
     static_cast<void>(fixed);
     return coefficient_names();
   }
+  /// Returns the coefficients a scene computes when it does not list any; by default all of
+  /// scene_coefficient_names().
+  [[nodiscard]] virtual std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const {
+    return scene_coefficient_names(fixed);
+  }
   /// Returns the model's parameters (scene keys) with their ranges.
   [[nodiscard]] virtual std::vector<ParameterSpec> parameters() const = 0;
   /// Returns the highest Sonine order accepted.

@@ -29,8 +29,8 @@ void Mixture::validate() const {
       throw std::invalid_argument(species_field("mass", i) + ": must be a number > 0, got " + number(sp.mass));
     if (!(sp.diameter > 0) || !std::isfinite(sp.diameter))
       throw std::invalid_argument(species_field("diameter", i) + ": must be a number > 0, got " + number(sp.diameter));
-    if (!(sp.fraction > 0 && sp.fraction <= 1))
-      throw std::invalid_argument(species_field("fraction", i) + ": must be a number in (0, 1], got " +
+    if (!(sp.fraction >= 0 && sp.fraction <= 1))  // 0: a tracer (the limit x_i → 0)
+      throw std::invalid_argument(species_field("fraction", i) + ": must be a number in [0, 1], got " +
                                   number(sp.fraction));
     sum += sp.fraction;
   }

@@ -1,12 +1,15 @@
 // The "mixture" transport model (docs/conventions.md): s = 2 … 4 smooth inelastic species,
 // dilute or dense; so far the homogeneous cooling state: temperature ratios, cooling rate and
 // the species cumulants a2,i (theory.md §16).
+#include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "gkt/mixture.hpp"
 #include "gkt/mixture_cooling_state.hpp"
 #include "gkt/pair_correlation.hpp"
+#include "gkt/tracer_diffusion.hpp"
 #include "transport/models.hpp"
 
 namespace gkt {
@@ -30,10 +33,22 @@ class MixtureModel final : public TransportModel {
     return "granular mixture of s = 2..4 smooth inelastic hard spheres/disks (dilute or Enskog): homogeneous "
            "cooling state (first Sonine or Maxwellian)";
   }
-  [[nodiscard]] std::vector<std::string> coefficient_names() const override { return names(kMaxSpecies); }
+  [[nodiscard]] std::vector<std::string> coefficient_names() const override {
+    auto n = names(kMaxSpecies);
+    for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
+    return n;
+  }
   [[nodiscard]] std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const override {
-    const Rational s = fixed.number("species", Rational(kMaxSpecies));
-    return names(static_cast<int>(s.to_double()));
+    const int s = static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double());
+    auto n = names(s);
+    if (s == 2)
+      for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
+    return n;
+  }
+  /// tracer_diffusion_i only when asked for: a property of the pair at infinite dilution, not of
+  /// the scene's composition (and dilute binaries only).
+  [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const override {
+    return names(static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double()));
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     std::vector<ParameterSpec> p{
@@ -74,8 +89,8 @@ class MixtureModel final : public TransportModel {
                        "mass of species i (any unit)"));
       p.push_back(real(index_name("diameter", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
                        "diameter of species i (any unit)"));
-      p.push_back(real(index_name("fraction", i), Rational(0), false, Rational(1), true, Rational(1),
-                       "mole fraction x_i (the fractions sum to 1)"));
+      p.push_back(real(index_name("fraction", i), Rational(0), true, Rational(1), true, Rational(1),
+                       "mole fraction x_i (the fractions sum to 1; 0 = tracer)"));
     }
     for (int i = 1; i <= kMaxSpecies; ++i)
       for (int j = i; j <= kMaxSpecies; ++j)
@@ -83,56 +98,87 @@ class MixtureModel final : public TransportModel {
                          "restitution coefficient of the pair (i, j)"));
     return p;
   }
-  [[nodiscard]] int max_order() const override { return 1; }
+  [[nodiscard]] int max_order() const override { return kMaxOrder; }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
-    if (order.tolerance || order.order != 1)
-      throw std::invalid_argument("order: the mixture model has order 1 only (first-Sonine homogeneous cooling state)");
     const std::string hcs = point.choice("hcs", "linear");
     parameters()[4].check(hcs);
     const Mixture mixture = make(point);
     const auto s = static_cast<int>(mixture.size());
-    // Both schemes are solved: their difference is the error estimate (theory.md §16.3).
-    const MixtureCoolingState maxwellian = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
-    const MixtureCoolingState linear = mixture_cooling_state(mixture, MixtureHcsScheme::linear);
-    const bool use_linear = hcs == "linear";
-    const MixtureCoolingState& state = use_linear ? linear : maxwellian;
-    const MixtureCoolingState& other = use_linear ? maxwellian : linear;
-    const bool solved = maxwellian.solved && linear.solved;
-    auto value = [&](double v, double alternative, bool estimated) {
-      return CoefficientValue{Rational::from_double(v),
-                              Rational::from_double(std::abs(v - alternative)),
-                              1,
-                              solved,
-                              false,
-                              state.solved,
-                              estimated};
-    };
     std::vector<CoefficientValue> out;
     for (const auto& c : coefficients) {
-      if (c == "cooling_rate") {
-        out.push_back(value(state.cooling_rate, other.cooling_rate, true));
-        continue;
-      }
-      int i = 0, kind = 0;
+      int i = 0, kind = c == "cooling_rate" ? 0 : -1;
       for (int k = 1; k <= s; ++k) {
         if (c == index_name("temperature_ratio", k)) i = k, kind = 1;
         if (c == index_name("a2_species", k)) i = k, kind = 2;
+        if (c == index_name("tracer_diffusion", k)) i = k, kind = 3;
       }
-      if (i == 0)
+      if (kind < 0)
         throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
                                     " species; valid: " + detail::join(names(s)));
-      const auto k = static_cast<std::size_t>(i - 1);
-      if (kind == 1)
+      const auto k = static_cast<std::size_t>(i > 0 ? i - 1 : 0);
+      if (kind == 3) {
+        out.push_back(tracer_diffusion(mixture, k, order));
+        continue;
+      }
+      // The HCS is first Sonine (or Maxwellian) at every order. Both schemes are solved: their
+      // difference is the error estimate (theory.md §16.3).
+      if (!maxwellian_) {
+        maxwellian_ = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
+        linear_ = mixture_cooling_state(mixture, MixtureHcsScheme::linear);
+      }
+      const MixtureCoolingState& state = hcs == "linear" ? *linear_ : *maxwellian_;
+      const MixtureCoolingState& other = hcs == "linear" ? *maxwellian_ : *linear_;
+      auto value = [&](double v, double alternative, bool estimated) {
+        return CoefficientValue{Rational::from_double(v),
+                                Rational::from_double(std::abs(v - alternative)),
+                                order.tolerance ? 1 : order.order,
+                                maxwellian_->solved && linear_->solved,
+                                false,
+                                state.solved,
+                                estimated};
+      };
+      if (kind == 0)
+        out.push_back(value(state.cooling_rate, other.cooling_rate, true));
+      else if (kind == 1)
         out.push_back(value(state.temperature_ratio[k], other.temperature_ratio[k], true));
       else  // a2,i: no higher approximation here to estimate its error against
         out.push_back(value(state.a2[k], state.a2[k], false));
     }
+    maxwellian_.reset();
+    linear_.reset();
     return out;
   }
 
  private:
+  static constexpr int kMaxOrder = 12;
+  std::optional<MixtureCoolingState> maxwellian_, linear_;  // per evaluate() call
+
+  /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the
+  /// requested order or tolerance; error from the next two orders.
+  static CoefficientValue tracer_diffusion(const Mixture& m, std::size_t k, const OrderRequest& order) {
+    const std::string name = "tracer_diffusion_" + std::to_string(k + 1);
+    if (m.size() != 2) throw std::invalid_argument("coefficients: " + name + " needs exactly 2 species");
+    if (m.packing_fraction > 0)
+      throw std::invalid_argument("coefficients: " + name +
+                                  " is computed for the dilute gas only (packing_fraction = 0)");
+    const std::size_t h = 1 - k;
+    const Tracer tracer{m.dimension, m.species[k].mass / m.species[h].mass,
+                        m.species[k].diameter / m.species[h].diameter, m.restitution(k, h), m.restitution(h, h)};
+    // Built for the order asked (+2 for the estimate); a tolerance scan rebuilds it larger as it goes.
+    std::optional<TracerDiffusion> diffusion;
+    return detail::choose_order(order, kMaxOrder, [&](int n) {
+      if (!diffusion || diffusion->max_order() < n + 2)
+        diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(n + 2, diffusion ? 2 * diffusion->max_order() : 6)));
+      detail::OrderValue v;
+      v.exact = false;
+      v.estimate = diffusion->estimate(n);
+      v.defined = std::isfinite(diffusion->coefficient(n)) && diffusion->coefficient(n) > 0;
+      return v;
+    });
+  }
+
   static std::vector<std::string> names(int s) {
     std::vector<std::string> n{"cooling_rate"};
     for (int i = 1; i <= s; ++i) n.push_back(index_name("temperature_ratio", i));

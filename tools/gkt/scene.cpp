@@ -229,7 +229,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     }
     scene.coefficients_given = true;
   } else {
-    scene.coefficients = names;
+    scene.coefficients = model->default_coefficients(fixed);
   }
 
   const bool has_order = table.contains("order"), has_tolerance = table.contains("tolerance");
