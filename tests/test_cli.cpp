@@ -294,6 +294,38 @@ TEST(CliEvolve, GoldenAndBadInput) {
   fs::remove_all(dir);
 }
 
+// Transport coefficients along a trajectory: once the cumulants have relaxed, η*, κ*, μ* about
+// the instantaneous a(τ) equal `gkt table` at the same order about the stationary HCS (to the
+// integration tolerance); along a viscoelastic trajectory η* − 1 and μ* are both ∝ δ'(τ), so
+// their ratio is η̃1/μ̃1 = (359/1920)/(19/40) at every time.
+TEST(CliEvolve, TransportAlongTrajectory) {
+  const std::string names =
+      " --set 'coefficients=[\"shear_viscosity\", \"thermal_conductivity\", "
+      "\"density_heat_coefficient\"]'";
+  const CliRun r = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + names);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = parse_csv(r.out);
+  const CliRun hcs =
+      run_gkt("table " + scene_path("navier_stokes_converged.toml") + " --set alpha=0.8 --set order=3" + names);
+  ASSERT_EQ(hcs.status, 0) << hcs.err;
+  const auto reference = parse_csv(hcs.out);
+  ASSERT_EQ(rows[0].size(), 10U);
+  for (std::size_t c = 0; c < 3; ++c)
+    EXPECT_NEAR(std::stod(rows.back()[7 + c]), std::stod(reference[1][c]), 1e-9) << rows[0][7 + c];
+  const CliRun v = run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") +
+                           " --set 'coefficients=[\"shear_viscosity\", \"density_heat_coefficient\"]'");
+  ASSERT_EQ(v.status, 0) << v.err;
+  const auto vr = parse_csv(v.out);
+  for (std::size_t i = 1; i < vr.size(); ++i)
+    EXPECT_NEAR((std::stod(vr[i][5]) - 1) / std::stod(vr[i][6]), (359.0 / 1920) / (19.0 / 40), 1e-12) << i;
+  const CliRun bad =
+      run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") + " --set 'coefficients=[\"thermal_conductivity\"]'");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("coefficients: 'thermal_conductivity' is not offered along a viscoelastic trajectory"),
+            std::string::npos)
+      << bad.err;
+}
+
 TEST(CliViscoelastic, ConstantsAndBadInput) {
   const CliRun r = run_gkt("table " + scene_path("viscoelastic_constants.toml"));
   ASSERT_EQ(r.status, 0) << r.err;

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
 #include "gkt/homogeneous_cooling_evolution.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/navier_stokes.hpp"
 #include "gkt/viscoelastic.hpp"
 #include "scene.hpp"
 
@@ -31,6 +33,8 @@ double number(const toml::table& t, const std::string& key, double fallback, dou
   return v;
 }
 
+const char* table_model(bool viscoelastic) { return viscoelastic ? "viscoelastic" : "smooth-inelastic"; }
+
 }  // namespace
 
 Table evolve(const std::string& scene_path, const std::vector<std::string>& overrides, std::string& counters) {
@@ -38,7 +42,8 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   const auto* model_node = t.get("model");
   const bool viscoelastic =
       model_node != nullptr && model_node->is_string() && model_node->as_string()->get() == "viscoelastic";
-  std::set<std::string> valid{"model", "dimension", "order", "t_end", "points", "times", "rtol", "atol", "a2"};
+  std::set<std::string> valid{"model", "dimension", "order", "t_end", "points",
+                              "times", "rtol",      "atol",  "a2",    "coefficients"};
   if (viscoelastic) {
     valid.insert("delta");
   } else {
@@ -106,6 +111,24 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
       times.push_back(n == 1 ? t_end : start * std::pow(t_end / start, static_cast<double>(i) / (n - 1)));
   }
 
+  // Transport coefficients along the trajectory (theory.md §12.3), only those asked for.
+  const std::vector<std::string> offered =
+      viscoelastic ? std::vector<std::string>{"shear_viscosity", "density_heat_coefficient"}
+                   : std::vector<std::string>{"shear_viscosity", "thermal_conductivity", "density_heat_coefficient"};
+  std::vector<std::string> coefficients;
+  if (const auto* c = t.get("coefficients")) {
+    const auto* array = c->as_array();
+    if (array == nullptr || array->empty()) throw error("coefficients: must be a non-empty list of names");
+    for (const auto& item : *array) {
+      const std::string name = item.is_string() ? item.as_string()->get() : "";
+      if (std::find(offered.begin(), offered.end(), name) == offered.end())
+        throw error("coefficients: '" + name + "' is not offered along a " + std::string(table_model(viscoelastic)) +
+                    " trajectory; valid: " + join(offered) +
+                    (viscoelastic ? " (thermal_conductivity_1 is unverified, theory.md §13.2)" : ""));
+      coefficients.push_back(name);
+    }
+  }
+
   EvolutionResult result;
   if (viscoelastic) {
     result = evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {a2}, times, rtol, atol);
@@ -114,7 +137,7 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     result = evolve_homogeneous_cooling(hcs.hierarchy(alpha, k_max), temperature, {a2}, times, rtol, atol);
   }
   Table table;
-  table.model = viscoelastic ? "viscoelastic" : "smooth-inelastic";
+  table.model = table_model(viscoelastic);
   table.columns = {"time", "collisions", "temperature"};
   for (int k = 2; k <= k_max; ++k) {
     std::string name(1, 'a');
@@ -122,11 +145,34 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     table.columns.push_back(name);
   }
   table.columns.emplace_back("cooling_rate");
+  for (const auto& c : coefficients) table.columns.push_back(c);
   table.numeric.assign(table.columns.size(), true);
+  std::optional<NavierStokesSolver> solver;
+  std::optional<ViscoelasticConstants> constants;
+  if (!coefficients.empty()) {
+    if (viscoelastic)
+      constants = viscoelastic_constants();
+    else
+      solver.emplace(d);
+  }
   for (const auto& s : result.samples) {
     std::vector<std::string> row{format_number(s.time), format_number(s.collisions), format_number(s.temperature)};
     for (int k = 2; k <= k_max; ++k) row.push_back(format_number(s.a[static_cast<std::size_t>(k)]));
     row.push_back(format_number(s.cooling_rate));
+    if (!coefficients.empty()) {
+      NavierStokesValues v;
+      if (viscoelastic) {  // first order in δ'(τ) = δ (2T/T0)^{1/10} (theory.md (13.5), (13.7))
+        const double delta_prime = delta * std::pow(2.0 * s.temperature, 0.1);
+        v.shear_viscosity = 1 + constants->shear_viscosity_1 * delta_prime;
+        v.density_heat_coefficient = constants->density_heat_coefficient_1 * delta_prime;
+      } else {  // order N about the instantaneous cumulants a(τ)
+        v = solver->solve(alpha, static_cast<int>(order), s.a);
+      }
+      for (const auto& c : coefficients)
+        row.push_back(format_number(c == "shear_viscosity"        ? v.shear_viscosity
+                                    : c == "thermal_conductivity" ? v.thermal_conductivity
+                                                                  : v.density_heat_coefficient));
+    }
     table.rows.push_back(std::move(row));
   }
   const auto& c = result.counters;
