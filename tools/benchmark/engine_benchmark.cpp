@@ -13,6 +13,8 @@
 #include "gkt/hard_spheres.hpp"
 #include "gkt/homogeneous_cooling_evolution.hpp"
 #include "gkt/linearized_operator.hpp"
+#include "gkt/mixture_cooling_state.hpp"
+#include "gkt/tracer_diffusion.hpp"
 #include "gkt/transport_model.hpp"
 #include "gkt/viscoelastic.hpp"
 
@@ -120,6 +122,28 @@ void EnskogFirstSonineFullSetGenerated(benchmark::State& state) {
   }
 }
 BENCHMARK(EnskogFirstSonineFullSetGenerated)->Unit(benchmark::kNanosecond);
+
+/// Binary mixture HCS (3D, m2/m1 = 2.5, σ2/σ1 = 1.5, x1 = 0.4, α = 0.8, φ = 0.2): arg 0 Maxwellian,
+/// 1 first Sonine (engine moments at the iterated widths).
+void MixtureHcs(benchmark::State& state) {
+  const auto mixture = gkt::make_mixture(3, {{1.0, 1.0, 0.4, ""}, {2.5, 1.5, 0.6, ""}}, 0.8, 0.2);
+  const auto scheme = state.range(0) == 0 ? gkt::MixtureHcsScheme::maxwellian : gkt::MixtureHcsScheme::linear;
+  for (auto _ : state) benchmark::DoNotOptimize(gkt::mixture_cooling_state(mixture, scheme));
+}
+BENCHMARK(MixtureHcs)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+/// Tracer diffusion (3D, m0/m = 2.5, σ0/σ = 1.5, α = 0.8): build to order N + 2 and estimate at N.
+void TracerDiffusionEstimate(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  double error = 0;
+  for (auto _ : state) {
+    const gkt::TracerDiffusion tracer({3, 2.5, 1.5, 0.8, 0.8}, n + 2);
+    error = tracer.estimate(n).error.to_double();
+    benchmark::DoNotOptimize(error);
+  }
+  state.counters["error"] = error;
+}
+BENCHMARK(TracerDiffusionEstimate)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
 
 /// 10⁴-point α sweep (α from 0.5 to 1) of all smooth-inelastic coefficients at order 4 through
 /// the model interface (nonlinear HCS a2…a5 and η*, κ*, μ* with error estimates), matrices reused;
