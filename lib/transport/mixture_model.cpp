@@ -107,6 +107,7 @@ class MixtureModel final : public TransportModel {
     const Mixture mixture = make(point);
     const auto s = static_cast<int>(mixture.size());
     std::vector<CoefficientValue> out;
+    std::optional<MixtureCoolingState> maxwellian, linear;  // solved once, if an HCS value is asked for
     for (const auto& c : coefficients) {
       int i = 0, kind = c == "cooling_rate" ? 0 : -1;
       for (int k = 1; k <= s; ++k) {
@@ -124,17 +125,17 @@ class MixtureModel final : public TransportModel {
       }
       // The HCS is first Sonine (or Maxwellian) at every order. Both schemes are solved: their
       // difference is the error estimate (theory.md §16.3).
-      if (!maxwellian_) {
-        maxwellian_ = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
-        linear_ = mixture_cooling_state(mixture, MixtureHcsScheme::linear);
+      if (!maxwellian) {
+        maxwellian = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
+        linear = mixture_cooling_state(mixture, MixtureHcsScheme::linear);
       }
-      const MixtureCoolingState& state = hcs == "linear" ? *linear_ : *maxwellian_;
-      const MixtureCoolingState& other = hcs == "linear" ? *maxwellian_ : *linear_;
+      const MixtureCoolingState& state = hcs == "linear" ? *linear : *maxwellian;
+      const MixtureCoolingState& other = hcs == "linear" ? *maxwellian : *linear;
       auto value = [&](double v, double alternative, bool estimated) {
         return CoefficientValue{Rational::from_double(v),
                                 Rational::from_double(std::abs(v - alternative)),
                                 order.tolerance ? 1 : order.order,
-                                maxwellian_->solved && linear_->solved,
+                                maxwellian->solved && linear->solved,
                                 false,
                                 state.solved,
                                 estimated};
@@ -146,14 +147,11 @@ class MixtureModel final : public TransportModel {
       else  // a2,i: no higher approximation here to estimate its error against
         out.push_back(value(state.a2[k], state.a2[k], false));
     }
-    maxwellian_.reset();
-    linear_.reset();
     return out;
   }
 
  private:
   static constexpr int kMaxOrder = 12;
-  std::optional<MixtureCoolingState> maxwellian_, linear_;  // per evaluate() call
 
   /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the
   /// requested order or tolerance; error from the next two orders.
