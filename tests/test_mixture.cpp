@@ -95,6 +95,31 @@ TEST(Mixture, IdenticalSpeciesGiveVanNoijeErnst) {
   }
 }
 
+// Nonlinear first Sonine (products a2,i a2,j kept): identical species give the one-component HCS
+// solver's nonlinear K = 2 a2 and ζ* (Newton on the S_2 projection, §9.2) to 1e-12; linear and
+// nonlinear differ at O(a2²) (binary m2/m1 = 3, σ2/σ1 = 1.5, α = 0.3: 2e-3 … 1e-2 against a2 ≈ 0.12–0.19).
+TEST(Mixture, NonlinearSchemeMatchesOneComponentNonlinear) {
+  for (int d : {2, 3}) {
+    gkt::HomogeneousCoolingState one(d);
+    for (const double alpha : {0.9, 0.5, 0.2}) {
+      const auto state =
+          gkt::mixture_cooling_state(binary(d, 1.0, 1.0, 0.4, alpha, 0.2), gkt::MixtureHcsScheme::nonlinear);
+      ASSERT_TRUE(state.solved) << d << " " << alpha;
+      const auto reference = one.solve(Rational::from_double(alpha), 2, gkt::HcsScheme::nonlinear);
+      for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(state.a2[i], reference.a[2], 1e-12) << d << " " << alpha;
+      EXPECT_NEAR(state.cooling_rate, state.chi[0] * reference.cooling_rate, 1e-12) << d << " " << alpha;
+    }
+    const auto mix = binary(d, 3.0, 1.5, 0.5, 0.3, 0.0);
+    const auto lin = gkt::mixture_cooling_state(mix, gkt::MixtureHcsScheme::linear);
+    const auto non = gkt::mixture_cooling_state(mix, gkt::MixtureHcsScheme::nonlinear);
+    ASSERT_TRUE(lin.solved && non.solved);
+    for (std::size_t i = 0; i < 2; ++i) {
+      EXPECT_NEAR(non.a2[i], lin.a2[i], 2 * lin.a2[i] * lin.a2[i] + 1e-3) << d;
+      EXPECT_NE(non.a2[i], lin.a2[i]);
+    }
+  }
+}
+
 // α = 1: equipartition holds exactly whatever the masses, sizes and density (no cooling).
 TEST(Mixture, ElasticMixtureIsInEquipartition) {
   for (int d : {2, 3}) {

@@ -1,6 +1,6 @@
 // The homogeneous cooling state of a granular mixture: partial temperatures T_i/T from equal
 // cooling rates ζ_1 = … = ζ_s, in the Maxwellian approximation or in the first Sonine
-// approximation with the cumulants a2,i, linear in them (docs/theory.md §16).
+// approximation with the cumulants a2,i, linear or nonlinear in them (docs/theory.md §16).
 #pragma once
 
 #include <span>
@@ -27,6 +27,7 @@ void species_cooling_rates(const Mixture& mixture, std::span<const double> tempe
 enum class MixtureHcsScheme {
   maxwellian,  ///< f_i Maxwellian at T_i (a2,i = 0)
   linear,      ///< f_i = f_M,i (1 + a2,i S_2), every collision moment linear in the a2,i
+  nonlinear,   ///< the same f_i with the products a2,i a2,j (and ζ_i a2,i) kept
 };
 
 /// The mixture HCS.

@@ -73,10 +73,10 @@ int solve_equal_rates(const Mixture& mixture, std::vector<double>& gamma,
   return sweeps;
 }
 
-/// ⟨(X1'^p − X1^p) S_2(X1)^a S_2(X2)^b⟩/J0 for p = 1, 2 and (a, b) = (0,0), (1,0), (0,1), from the
-/// engine's exact moments E(a, b, c) at the pair's widths (rational approximations of θ).
+/// ⟨(X1'^p − X1^p) S_2(X1)^a S_2(X2)^b⟩/J0 for p = 1, 2 and (a, b) = (0,0), (1,0), (0,1), (1,1),
+/// from the engine's exact moments E(a, b, c) at the pair's widths (rational approximations of θ).
 struct PairSonineMoments {
-  double energy[3], fourth[3];  // p = 1, 2; index 0: (0,0), 1: S_2(X1), 2: S_2(X2)
+  double energy[4], fourth[4];  // p = 1, 2; index 0: (0,0), 1: S_2(X1), 2: S_2(X2), 3: both
 };
 
 PairSonineMoments pair_sonine_moments(const Mixture& m, std::size_t i, std::size_t j, double theta_i, double theta_j) {
@@ -88,15 +88,17 @@ PairSonineMoments pair_sonine_moments(const Mixture& m, std::size_t i, std::size
   const Rational s2[] = {Rational(d * (d + 2), 8), Rational(-(d + 2), 2), Rational(1, 2)};
   PairSonineMoments out{};
   for (int p = 1; p <= 2; ++p) {
-    Rational plain = e(0, 0, p) - e(p, 0, 0), own(0), partner(0);
+    Rational plain = e(0, 0, p) - e(p, 0, 0), own(0), partner(0), both(0);
     for (int n = 0; n <= 2; ++n) {
       own += s2[n] * (e(n, 0, p) - e(n + p, 0, 0));
       partner += s2[n] * (e(0, n, p) - e(p, n, 0));
+      for (int l = 0; l <= 2; ++l) both += s2[n] * s2[l] * (e(n, l, p) - e(n + p, l, 0));
     }
     double* target = p == 1 ? out.energy : out.fourth;
     target[0] = plain.to_double();
     target[1] = own.to_double();
     target[2] = partner.to_double();
+    target[3] = both.to_double();
   }
   return out;
 }
@@ -141,12 +143,14 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
   out.iterations = solve_equal_rates(mixture, gamma, rates_at);
   out.a2.assign(s, 0.0);
   bool fixed_point = true;
-  if (scheme == MixtureHcsScheme::linear) {
-    // Outer iteration (theory.md §16.3): at the current γ the engine's moments give the linear
-    // equations (16.7) for a2,i; their a2 terms enter ζ_i as a fixed correction while γ is
-    // re-solved; repeat until γ and a2 stop moving.
+  if (scheme != MixtureHcsScheme::maxwellian) {
+    // Outer iteration (theory.md §16.3): at the current γ the engine's moments give the equations
+    // (16.7) for the a2,i, solved by Newton's method (one exact step when linear); their a2 terms
+    // enter ζ_i as a fixed correction while γ is re-solved; repeat until γ and a2 stop moving.
     const auto n = static_cast<Eigen::Index>(s);
-    const double lam = lambda(d), fourth = d * (d + 2) / 2.0;  // 2⟨X²⟩_M = d(d+2)/2
+    const double lam = lambda(d), fourth = d * (d + 2) / 2.0;            // 2⟨X²⟩_M = d(d+2)/2
+    const double q = scheme == MixtureHcsScheme::nonlinear ? 1.0 : 0.0;  // keeps the a_i a_j terms
+    Eigen::VectorXd a = Eigen::VectorXd::Zero(n);
     fixed_point = false;
     for (int outer = 0; outer < 50 && !fixed_point; ++outer) {
       std::vector<PairSonineMoments> pm(s * s);
@@ -157,42 +161,53 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
           pm[i * s + j] = pair_sonine_moments(mixture, i, j, th[i], th[j]);
           c[i * s + j] = pair_weight(mixture, out.chi, i, j, th[i], th[j]);
         }
-      // (16.7): (d(d+2)/2)[ζ_i^M (1 + a_i) + δζ_i] + Λ Σ_j c_ij (F00 + a_i F10 + a_j F01) = 0,
-      // ζ_i^M = −(2/d)Λ Σ_j c_ij E00, δζ_i = −(2/d)Λ Σ_j c_ij (a_i E10 + a_j E01).
-      Eigen::MatrixXd a_matrix = Eigen::MatrixXd::Zero(n, n);
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-      for (std::size_t i = 0; i < s; ++i) {
-        const auto I = static_cast<Eigen::Index>(i);
-        double zeta_m = 0;
-        for (std::size_t j = 0; j < s; ++j) zeta_m += -2.0 / d * lam * c[i * s + j] * pm[i * s + j].energy[0];
-        a_matrix(I, I) += fourth * zeta_m;
-        rhs(I) -= fourth * zeta_m;
-        for (std::size_t j = 0; j < s; ++j) {
-          const auto J = static_cast<Eigen::Index>(j);
-          const PairSonineMoments& q = pm[i * s + j];
-          const double cij = c[i * s + j];
-          a_matrix(I, I) += fourth * (-2.0 / d) * lam * cij * q.energy[1] + lam * cij * q.fourth[1];
-          a_matrix(I, J) += fourth * (-2.0 / d) * lam * cij * q.energy[2] + lam * cij * q.fourth[2];
-          rhs(I) -= lam * cij * q.fourth[0];
+      // G_i = (d(d+2)/2) [ζ_i (1 + a_i)] + Λ Σ_j c_ij (F00 + a_i F10 + a_j F01 + q a_i a_j F11) = 0 with
+      // ζ_i = −(2/d)Λ Σ_j c_ij (E00 + a_i E10 + a_j E01 + q a_i a_j E11); linear (q = 0):
+      // ζ_i (1 + a_i) → ζ_i^M (1 + a_i) + δζ_i, the a2-product of ζ dropped.
+      const Eigen::VectorXd start = a;
+      for (int newton = 0; newton < 50; ++newton) {
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+        Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(n, n);
+        for (std::size_t i = 0; i < s; ++i) {
+          const auto I = static_cast<Eigen::Index>(i);
+          double zeta_m = 0, zeta_a = 0;
+          Eigen::VectorXd dzeta = Eigen::VectorXd::Zero(n);
+          for (std::size_t j = 0; j < s; ++j) {
+            const auto J = static_cast<Eigen::Index>(j);
+            const PairSonineMoments& m = pm[i * s + j];
+            const double w = -2.0 / d * lam * c[i * s + j];
+            zeta_m += w * m.energy[0];
+            zeta_a += w * (a(I) * m.energy[1] + a(J) * m.energy[2] + q * a(I) * a(J) * m.energy[3]);
+            dzeta(I) += w * (m.energy[1] + q * a(J) * m.energy[3]);
+            dzeta(J) += w * (m.energy[2] + q * a(I) * m.energy[3]);
+            const double v = lam * c[i * s + j];
+            g(I) += v * (m.fourth[0] + a(I) * m.fourth[1] + a(J) * m.fourth[2] + q * a(I) * a(J) * m.fourth[3]);
+            jac(I, I) += v * (m.fourth[1] + q * a(J) * m.fourth[3]);
+            jac(I, J) += v * (m.fourth[2] + q * a(I) * m.fourth[3]);
+          }
+          g(I) += fourth * (zeta_m * (1 + a(I)) + zeta_a * (1 + q * a(I)));
+          jac.row(I) += fourth * (1 + q * a(I)) * dzeta.transpose();
+          jac(I, I) += fourth * (zeta_m + q * zeta_a);
         }
+        const Eigen::VectorXd step = jac.fullPivLu().solve(-g);
+        a += step;
+        if (step.lpNorm<Eigen::Infinity>() < 1e-15 * (1 + a.lpNorm<Eigen::Infinity>())) break;
       }
-      const Eigen::VectorXd a = a_matrix.fullPivLu().solve(rhs);
       correction.assign(s * s, 0.0);
       for (std::size_t i = 0; i < s; ++i)
-        for (std::size_t j = 0; j < s; ++j)
-          correction[i * s + j] = a(static_cast<Eigen::Index>(i)) * pm[i * s + j].energy[1] +
-                                  a(static_cast<Eigen::Index>(j)) * pm[i * s + j].energy[2];
+        for (std::size_t j = 0; j < s; ++j) {
+          const PairSonineMoments& m = pm[i * s + j];
+          const double ai = a(static_cast<Eigen::Index>(i)), aj = a(static_cast<Eigen::Index>(j));
+          correction[i * s + j] = ai * m.energy[1] + aj * m.energy[2] + q * ai * aj * m.energy[3];
+        }
       const std::vector<double> before = gamma;
       solve_equal_rates(mixture, gamma, rates_at);
-      double change = 0;
-      for (std::size_t i = 0; i < s; ++i) {
-        change =
-            std::max({change, std::abs(gamma[i] - before[i]), std::abs(a(static_cast<Eigen::Index>(i)) - out.a2[i])});
-        out.a2[i] = a(static_cast<Eigen::Index>(i));
-      }
+      double change = (a - start).lpNorm<Eigen::Infinity>();
+      for (std::size_t i = 0; i < s; ++i) change = std::max(change, std::abs(gamma[i] - before[i]));
       out.iterations = outer + 1;
       fixed_point = change < 1e-12;
     }
+    for (std::size_t i = 0; i < s; ++i) out.a2[i] = a(static_cast<Eigen::Index>(i));
   }
   rates_at(gamma, rates);
   out.temperature_ratio = gamma;

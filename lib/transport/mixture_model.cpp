@@ -81,9 +81,9 @@ class MixtureModel final : public TransportModel {
          true,
          true,
          Rational(0),
-         "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear) or "
-         "Maxwellian",
-         {"linear", "maxwellian"}}};
+         "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
+         "nonlinear in them) or Maxwellian",
+         {"linear", "nonlinear", "maxwellian"}}};
     for (int i = 1; i <= kMaxSpecies; ++i) {
       p.push_back(real(index_name("mass", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
                        "mass of species i (any unit)"));
@@ -107,7 +107,7 @@ class MixtureModel final : public TransportModel {
     const Mixture mixture = make(point);
     const auto s = static_cast<int>(mixture.size());
     std::vector<CoefficientValue> out;
-    std::optional<MixtureCoolingState> maxwellian, linear;  // solved once, if an HCS value is asked for
+    std::optional<MixtureCoolingState> chosen, alternative;  // solved once, if an HCS value is asked for
     for (const auto& c : coefficients) {
       int i = 0, kind = c == "cooling_rate" ? 0 : -1;
       for (int k = 1; k <= s; ++k) {
@@ -123,19 +123,23 @@ class MixtureModel final : public TransportModel {
         out.push_back(tracer_diffusion(mixture, k, order));
         continue;
       }
-      // The HCS is first Sonine (or Maxwellian) at every order. Both schemes are solved: their
-      // difference is the error estimate (theory.md §16.3).
-      if (!maxwellian) {
-        maxwellian = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
-        linear = mixture_cooling_state(mixture, MixtureHcsScheme::linear);
+      // The HCS is first Sonine (or Maxwellian) at every order. The Maxwellian and a first-Sonine
+      // scheme are both solved: their difference is the error estimate (theory.md §16.3).
+      if (!chosen) {
+        const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                        : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                            : MixtureHcsScheme::nonlinear;
+        chosen = mixture_cooling_state(mixture, scheme);
+        alternative = mixture_cooling_state(
+            mixture, scheme == MixtureHcsScheme::maxwellian ? MixtureHcsScheme::linear : MixtureHcsScheme::maxwellian);
       }
-      const MixtureCoolingState& state = hcs == "linear" ? *linear : *maxwellian;
-      const MixtureCoolingState& other = hcs == "linear" ? *maxwellian : *linear;
-      auto value = [&](double v, double alternative, bool estimated) {
+      const MixtureCoolingState& state = *chosen;
+      const MixtureCoolingState& other = *alternative;
+      auto value = [&](double v, double other_value, bool estimated) {
         return CoefficientValue{Rational::from_double(v),
-                                Rational::from_double(std::abs(v - alternative)),
+                                Rational::from_double(std::abs(v - other_value)),
                                 order.tolerance ? 1 : order.order,
-                                maxwellian->solved && linear->solved,
+                                state.solved && other.solved,
                                 false,
                                 state.solved,
                                 estimated};
