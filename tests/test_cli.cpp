@@ -352,6 +352,11 @@ TEST(CliStability, GoldenAndErrors) {
   const CliRun r = run_gkt("stability " + scene_path("hcs_stability.toml"));
   ASSERT_EQ(r.status, 0) << r.err;
   expect_csv_close(r.out, read_file(golden_path("hcs_stability.csv")));
+  // The dense gas (theory.md (14.4)–(14.5)), first Sonine through the closed forms and at order 4.
+  const CliRun dense = run_gkt("stability " + scene_path("hcs_stability.toml") +
+                               " --set 'alpha=[0.9, 0.6]' --set 'packing_fraction=[0.1, 0.3]' --set 'order=[1, 4]'");
+  ASSERT_EQ(dense.status, 0) << dense.err;
+  expect_csv_close(dense.out, read_file(golden_path("hcs_stability_dense.csv")));
   const fs::path scene = fs::temp_directory_path() / ("gkt_stability_" + std::to_string(::getpid()) + ".toml");
   std::ofstream(scene) << "model = \"hard-spheres\"\norder = 2\n";
   const CliRun bad = run_gkt("stability " + scene.string());
@@ -460,10 +465,6 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"unknown_pair_correlation",
                  "model = \"smooth-inelastic\"\npacking_fraction = 0.2\npair_correlation = \"py\"\norder = 1\n", "",
                  "pair_correlation: must be one of \"carnahan-starling\", got \"py\""},
-        BadInput{
-            "dense_stability",
-            "model = \"smooth-inelastic\"\npacking_fraction = 0.2\norder = 1\ncoefficients = [\"critical_length\"]\n",
-            "", "coefficients: critical_length is computed for the dilute gas only"},
         BadInput{"unknown_scheme", "model = \"smooth-inelastic\"\nscheme = \"improved\"\norder = 1\n", "",
                  "scheme: must be one of \"standard\", \"modified\", got \"improved\""},
         BadInput{"alpha_zero", "model = \"smooth-inelastic\"\nalpha = 0\norder = 1\n", "",

@@ -9,11 +9,13 @@
 #include "gkt/hcs_stability.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "gkt/navier_stokes.hpp"
+#include "gkt/pair_correlation.hpp"
 
 namespace {
 
-Eigen::Vector3cd eigenvalues(int d, double zeta, double eta, double kappa, double mu, double k) {
-  const auto m = gkt::longitudinal_matrix(d, zeta, eta, kappa, mu, k);
+Eigen::Vector3cd eigenvalues(int d, double zeta, double eta, double kappa, double mu, double k,
+                             const gkt::StabilityDensity& dense = {}) {
+  const auto m = gkt::longitudinal_matrix(d, zeta, eta, kappa, mu, k, dense);
   Eigen::Matrix3cd e;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) e(r, c) = m[r][c];
@@ -73,4 +75,48 @@ TEST(HcsStability, ElasticGasIsStable) {
   EXPECT_EQ(s.shear_wavenumber, 0.0);
   EXPECT_EQ(s.heat_wavenumber, 0.0);
   EXPECT_TRUE(std::isinf(s.critical_length));
+}
+
+// Dense gas (Enskog, theory.md (14.4)–(14.5)), with the solver's order-4 coefficients at φ = 0.3
+// (α = 0.8, 0.6; d = 2, 3; ζ* = χ ζ*_dilute): the heat-mode eigenvalue of the dense longitudinal
+// matrix — which also carries the bulk viscosity and ζ_U — changes sign at the closed-form k∥c,
+// whose determinant leaves both out; the shear mode at √(ζ*/η*). At φ → 0 the dense input gives
+// the dilute values.
+TEST(HcsStability, DenseHeatModeCrossesZeroAtTheClosedFormWavenumber) {
+  for (int d : {2, 3}) {
+    gkt::NavierStokesSolver ns(d);
+    gkt::HomogeneousCoolingState hcs(d);
+    const auto& pc = gkt::pair_correlation("carnahan-starling");
+    for (const gkt::Rational& alpha : {gkt::Rational(4, 5), gkt::Rational(3, 5)}) {
+      const gkt::Rational phi(3, 10);
+      const double chi = pc.contact_value(d, phi).to_double(), dchi = pc.packing_derivative(d, phi).to_double();
+      const gkt::EnskogState st{0.3, chi, dchi};
+      const auto state = hcs.solve(alpha, 5, gkt::HcsScheme::nonlinear);
+      const auto v = ns.solve(alpha, 4, state.a, gkt::SonineScheme::standard, st);
+      const double a = alpha.to_double(), zeta = chi * state.cooling_rate;
+      gkt::StabilityDensity density;
+      density.pressure = st.pressure(d, a);
+      density.pressure_derivative = (d == 3 ? 2.0 : 1.0) * (1 + a) * 0.3 * (chi + dchi);
+      density.log_chi_derivative = dchi / chi;
+      density.bulk_viscosity = v.bulk_viscosity;
+      density.cooling_rate_first_order = v.cooling_rate_first_order;
+      const auto s =
+          gkt::hcs_stability(d, zeta, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient, density);
+      ASSERT_GT(s.heat_wavenumber, 0) << d << " " << alpha;
+      auto heat = [&](double k) {
+        return heat_mode(
+            eigenvalues(d, zeta, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient, k, density));
+      };
+      EXPECT_GT(heat(0.999 * s.heat_wavenumber).real(), 0) << d << " " << alpha;
+      EXPECT_LT(heat(1.001 * s.heat_wavenumber).real(), 0) << d << " " << alpha;
+      EXPECT_NEAR(zeta - v.shear_viscosity * s.shear_wavenumber * s.shear_wavenumber, 0.0, 1e-14);
+      std::cout << "[ dense ] d=" << d << " alpha=" << alpha << " phi=0.3: k_shear=" << s.shear_wavenumber
+                << " k_heat=" << s.heat_wavenumber << "\n";
+    }
+  }
+  gkt::StabilityDensity dilute;
+  const auto a = gkt::hcs_stability(3, 0.2, 1.1, 1.2, 0.3, dilute);
+  const auto b = gkt::hcs_stability(3, 0.2, 1.1, 1.2, 0.3);
+  EXPECT_EQ(a.heat_wavenumber, b.heat_wavenumber);
+  EXPECT_NEAR(b.heat_wavenumber, std::sqrt(2 * 0.2 / (5 * (1.2 - 0.3))), 1e-15);
 }

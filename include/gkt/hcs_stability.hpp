@@ -1,6 +1,6 @@
-// Linear stability of the homogeneous cooling state of the dilute gas: critical wave numbers of
-// the shear and heat modes and the critical system size (docs/theory.md §14; [garzo2019] ch. 4;
-// seed 003 for the mixture version).
+// Linear stability of the homogeneous cooling state of the dilute and the dense (Enskog) gas:
+// critical wave numbers of the shear and heat modes and the critical system size (docs/theory.md
+// §14; [garzo2019] ch. 4; seed 003 for the mixture version).
 //
 // Units: k* = k v0/ν0 and L* = L ν0/v0 with v0 = √(2T/m), ν0 = nT/η0 (docs/conventions.md).
 #pragma once
@@ -10,21 +10,34 @@
 
 namespace gkt {
 
+/// What the dense (Enskog) gas adds to the linearised equations (theory.md (14.4)); the default is
+/// the dilute gas.
+struct StabilityDensity {
+  double pressure = 1;                  ///< p* = p/(nT)
+  double pressure_derivative = 0;       ///< φ ∂p*/∂φ
+  double log_chi_derivative = 0;        ///< λ = φ ∂ln χ/∂φ (ζ0 ∝ χ(φ) n T^{1/2})
+  double bulk_viscosity = 0;            ///< bulk viscosity / η0 (longitudinal momentum only)
+  double cooling_rate_first_order = 0;  ///< ζ_U (energy equation only)
+};
+
 /// Critical values of one state.
 struct HcsStability {
   double shear_wavenumber = 0;  ///< k⊥c* = √(ζ*/η*): shear modes grow for k* < k⊥c*
-  double heat_wavenumber = 0;  ///< k∥c* = √((d−1)ζ*/((d+2)(κ* − μ*))): the heat mode grows below it (0 if κ* ≤ μ*)
-  double critical_length = 0;  ///< L_c* = 2π/max(k⊥c*, k∥c*): boxes larger than this are unstable
+  double heat_wavenumber = 0;   ///< k∥c* of (14.3)/(14.5): the heat mode grows below it (0 if it never does)
+  double critical_length = 0;   ///< L_c* = 2π/max(k⊥c*, k∥c*): boxes larger than this are unstable
 };
 
-/// Returns the critical values for dimension d from the reduced ζ*, η*, κ*, μ* (theory.md (14.3)).
+/// Returns the critical values for dimension d from the reduced ζ*, η*, κ*, μ* (theory.md (14.3);
+/// dense gas (14.5), with ζ* = χ ζ*_dilute and the dense η*, κ*, μ*).
 HcsStability hcs_stability(int dimension, double cooling_rate, double shear_viscosity, double thermal_conductivity,
-                           double density_heat_coefficient);
+                           double density_heat_coefficient, const StabilityDensity& dense = {});
 
-/// Returns the 3×3 matrix M(k*) of the longitudinal modes (ρ, θ, w∥): ∂_τ X = M X (theory.md (14.2)).
+/// Returns the 3×3 matrix M(k*) of the longitudinal modes (ρ, θ, w∥): ∂_τ X = M X (theory.md (14.2),
+/// dense (14.4)).
 std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimension, double cooling_rate,
                                                                        double shear_viscosity,
                                                                        double thermal_conductivity,
-                                                                       double density_heat_coefficient, double k);
+                                                                       double density_heat_coefficient, double k,
+                                                                       const StabilityDensity& dense = {});
 
 }  // namespace gkt

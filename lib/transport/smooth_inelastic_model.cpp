@@ -158,9 +158,6 @@ class SmoothInelasticModel final : public TransportModel {
       }
       const int transport = transport_index(c);
       if (transport >= 0) {
-        if (transport >= 3 && transport <= 5 && phi.sign() > 0)
-          throw std::invalid_argument("coefficients: " + c +
-                                      " is computed for the dilute gas only (packing_fraction = 0)");
         out.push_back(transport_value(*hcs, d, alpha, scheme, sonine, dense, transport, order));
         continue;
       }
@@ -214,13 +211,24 @@ class SmoothInelasticModel final : public TransportModel {
     if (c == "cooling_rate_first_order") return 7;
     return -1;
   }
-  static double pick_transport(const NavierStokesValues& v, int which, int d, double zeta) {
+  /// The transport value `which` from one order's η*, κ*, μ*, …; the stability values (3–5) also
+  /// need the dilute ζ* of the same order and the density (theory.md (14.4)–(14.5)).
+  static double pick_transport(const NavierStokesValues& v, int which, int d, double zeta_dilute, const Dense& dense,
+                               const Rational& alpha) {
     if (which == 6) return v.bulk_viscosity;
     if (which == 7) return v.cooling_rate_first_order;
     if (which < 3)
       return which == 0 ? v.shear_viscosity : which == 1 ? v.thermal_conductivity : v.density_heat_coefficient;
-    const HcsStability s =
-        hcs_stability(d, zeta, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient);
+    const EnskogState st = dense.state();
+    const double a = alpha.to_double(), phi = st.packing_fraction;
+    StabilityDensity density;
+    density.pressure = st.pressure(d, a);
+    density.pressure_derivative = (d == 3 ? 2.0 : 1.0) * (1 + a) * phi * (st.chi + st.phi_dchi);  // φ ∂p*/∂φ
+    density.log_chi_derivative = st.phi_dchi / st.chi;
+    density.bulk_viscosity = v.bulk_viscosity;
+    density.cooling_rate_first_order = v.cooling_rate_first_order;
+    const HcsStability s = hcs_stability(d, st.chi * zeta_dilute, v.shear_viscosity, v.thermal_conductivity,
+                                         v.density_heat_coefficient, density);
     return which == 3 ? s.shear_wavenumber : which == 4 ? s.heat_wavenumber : s.critical_length;
   }
   CoefficientValue transport_value(HomogeneousCoolingState& hcs, int d, const Rational& alpha,
@@ -231,16 +239,23 @@ class SmoothInelasticModel final : public TransportModel {
       const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
       Rational value;
       bool exact = false;
+      const double zeta_linear = hcs.solve(alpha, 2, HcsScheme::linear).exact_cooling_rate->to_double();
       if ((dense.phi.sign() > 0 || which >= 6) && sonine == SonineScheme::standard) {
         // The dense closed forms, linear in a2 like Garzó–Dufty's (theory.md §15.7).
         const EnskogState st = dense.state();
-        value = Rational::from_double(enskog_form(d, which).evaluate(alpha, st.packing_fraction, st.chi, st.phi_dchi));
+        auto form = [&](int k) { return enskog_form(d, k).evaluate(alpha, st.packing_fraction, st.chi, st.phi_dchi); };
+        if (which >= 3 && which <= 5) {
+          const NavierStokesValues v1{form(0), form(1), form(2), form(6), form(7)};
+          value = Rational::from_double(pick_transport(v1, which, d, zeta_linear, dense, alpha));
+        } else {
+          value = Rational::from_double(form(which));
+        }
       } else if (dense.phi.sign() > 0 || which >= 6) {
         // Modified scheme: through the solver (the a2² products of the collisional terms kept).
         auto& solver = ns_[static_cast<std::size_t>(d - 2)];
         if (!solver) solver = std::make_unique<NavierStokesSolver>(d);
         const NavierStokesValues v1 = solver->solve(alpha, 1, {1.0, 0.0, a2.to_double()}, sonine, dense.state());
-        value = Rational::from_double(pick_transport(v1, which, d, 0.0));
+        value = Rational::from_double(pick_transport(v1, which, d, zeta_linear, dense, alpha));
       } else {
         // The closed forms linear in a2 (theory.md (10.8)): exact for η*, κ*, μ* (the stability
         // values take square roots).
@@ -251,14 +266,15 @@ class SmoothInelasticModel final : public TransportModel {
         exact = which < 3;
         value = exact ? v[static_cast<std::size_t>(which)]
                       : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()},
-                                                             which, d, zeta.to_double()));
+                                                             which, d, zeta.to_double(), dense, alpha));
       }
       const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine, dense);
       const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine, dense);
       if (n2 == nullptr || n3 == nullptr) return {value, Rational(0), 1, false, exact, true};
       const TruncationEstimate e = estimate_truncation(
-          value, Rational::from_double(pick_transport(*n2, which, d, nonlinear(hcs, d, alpha, 3).cooling_rate)),
-          Rational::from_double(pick_transport(*n3, which, d, nonlinear(hcs, d, alpha, 4).cooling_rate)));
+          value,
+          Rational::from_double(pick_transport(*n2, which, d, nonlinear(hcs, d, alpha, 3).cooling_rate, dense, alpha)),
+          Rational::from_double(pick_transport(*n3, which, d, nonlinear(hcs, d, alpha, 4).cooling_rate, dense, alpha)));
       return {value, e.error, 1, e.converging, exact, true};
     }
     return choose_order(order, max_order(), [&](int n) {
@@ -269,10 +285,12 @@ class SmoothInelasticModel final : public TransportModel {
       const auto* s2 = navier_stokes(hcs, d, alpha, n + 2, sonine, dense);
       v.defined = s0 != nullptr && s1 != nullptr && s2 != nullptr;
       if (!v.defined) return v;
-      v.estimate = estimate_truncation(
-          Rational::from_double(pick_transport(*s0, which, d, nonlinear(hcs, d, alpha, n + 1).cooling_rate)),
-          Rational::from_double(pick_transport(*s1, which, d, nonlinear(hcs, d, alpha, n + 2).cooling_rate)),
-          Rational::from_double(pick_transport(*s2, which, d, nonlinear(hcs, d, alpha, n + 3).cooling_rate)));
+      v.estimate = estimate_truncation(Rational::from_double(pick_transport(
+                                           *s0, which, d, nonlinear(hcs, d, alpha, n + 1).cooling_rate, dense, alpha)),
+                                       Rational::from_double(pick_transport(
+                                           *s1, which, d, nonlinear(hcs, d, alpha, n + 2).cooling_rate, dense, alpha)),
+                                       Rational::from_double(pick_transport(
+                                           *s2, which, d, nonlinear(hcs, d, alpha, n + 3).cooling_rate, dense, alpha)));
       return v;
     });
   }
