@@ -318,6 +318,29 @@ TEST(CliEvolve, TransportAlongTrajectory) {
   const auto vr = parse_csv(v.out);
   for (std::size_t i = 1; i < vr.size(); ++i)
     EXPECT_NEAR((std::stod(vr[i][5]) - 1) / std::stod(vr[i][6]), (359.0 / 1920) / (19.0 / 40), 1e-12) << i;
+  // Time-dependent critical size: constant α relaxes to `gkt stability` at the same order; for
+  // viscoelastic grains k⊥c* = √(ζ*/η*) ∝ δ'^{1/2} ∝ T^{1/20} at late times, so L_c* ∝ T^{−1/20}
+  // (∝ t^{1/12} with T ∝ t^{−5/3}): the log-slope over the last three decades of T is −1/20 within 5 %.
+  const std::string critical = " --set 'coefficients=[\"critical_wavenumber_shear\", \"critical_length\"]'";
+  const CliRun c = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + critical);
+  ASSERT_EQ(c.status, 0) << c.err;
+  const CliRun s =
+      run_gkt("stability " + scene_path("hcs_stability.toml") + " --set alpha=0.8 --set order=3" + critical);
+  ASSERT_EQ(s.status, 0) << s.err;
+  const auto crows = parse_csv(c.out), srows = parse_csv(s.out);
+  EXPECT_NEAR(std::stod(crows.back()[7]), std::stod(srows[1][0]), 1e-9);
+  EXPECT_NEAR(std::stod(crows.back()[8]), std::stod(srows[1][1]), 1e-7);
+  const CliRun vc = run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") + critical);
+  ASSERT_EQ(vc.status, 0) << vc.err;
+  const auto vcr = parse_csv(vc.out);
+  const std::size_t length = vcr[0].size() - 1;
+  ASSERT_EQ(vcr[0][length], "critical_length");
+  const auto& late = vcr.back();
+  std::size_t earlier = vcr.size() - 1;
+  while (earlier > 1 && std::stod(vcr[earlier][2]) < 1e3 * std::stod(late[2])) --earlier;
+  const double slope = std::log(std::stod(late[length]) / std::stod(vcr[earlier][length])) /
+                       std::log(std::stod(late[2]) / std::stod(vcr[earlier][2]));
+  EXPECT_NEAR(slope, -1.0 / 20, 0.05 / 20) << "rows " << earlier << ", " << vcr.size() - 1;
   const CliRun bad =
       run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") + " --set 'coefficients=[\"thermal_conductivity\"]'");
   EXPECT_EQ(bad.status, 2);

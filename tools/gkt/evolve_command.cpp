@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <stdexcept>
 
+#include "gkt/hcs_stability.hpp"
 #include "gkt/homogeneous_cooling_evolution.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "gkt/navier_stokes.hpp"
@@ -113,8 +115,11 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
 
   // Transport coefficients along the trajectory (theory.md §12.3), only those asked for.
   const std::vector<std::string> offered =
-      viscoelastic ? std::vector<std::string>{"shear_viscosity", "density_heat_coefficient"}
-                   : std::vector<std::string>{"shear_viscosity", "thermal_conductivity", "density_heat_coefficient"};
+      viscoelastic ? std::vector<std::string>{"shear_viscosity", "density_heat_coefficient",
+                                              "critical_wavenumber_shear", "critical_length"}
+                   : std::vector<std::string>{"shear_viscosity",          "thermal_conductivity",
+                                              "density_heat_coefficient", "critical_wavenumber_shear",
+                                              "critical_wavenumber_heat", "critical_length"};
   std::vector<std::string> coefficients;
   if (const auto* c = t.get("coefficients")) {
     const auto* array = c->as_array();
@@ -168,10 +173,25 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
       } else {  // order N about the instantaneous cumulants a(τ)
         v = solver->solve(alpha, static_cast<int>(order), s.a);
       }
+      // Critical sizes at the instantaneous state (theory.md §12.3): viscoelastic from the shear
+      // mode alone, k⊥c* = √(ζ*(τ)/η*(τ)) (the heat mode, k∥c* ≈ √(2ζ*/5) at small δ', is slower
+      // and would need the unverified κ̃1).
+      HcsStability stability;
+      if (viscoelastic) {
+        stability.shear_wavenumber = std::sqrt(std::max(s.cooling_rate, 0.0) / v.shear_viscosity);
+        stability.critical_length =
+            stability.shear_wavenumber > 0 ? 2 * std::numbers::pi / stability.shear_wavenumber : INFINITY;
+      } else {
+        stability =
+            hcs_stability(d, s.cooling_rate, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient);
+      }
       for (const auto& c : coefficients)
-        row.push_back(format_number(c == "shear_viscosity"        ? v.shear_viscosity
-                                    : c == "thermal_conductivity" ? v.thermal_conductivity
-                                                                  : v.density_heat_coefficient));
+        row.push_back(format_number(c == "shear_viscosity"             ? v.shear_viscosity
+                                    : c == "thermal_conductivity"      ? v.thermal_conductivity
+                                    : c == "density_heat_coefficient"  ? v.density_heat_coefficient
+                                    : c == "critical_wavenumber_shear" ? stability.shear_wavenumber
+                                    : c == "critical_wavenumber_heat"  ? stability.heat_wavenumber
+                                                                       : stability.critical_length));
     }
     table.rows.push_back(std::move(row));
   }
