@@ -27,6 +27,12 @@ struct HcsStability {
   double critical_length = 0;   ///< L_c* = 2π/max(k⊥c*, k∥c*): boxes larger than this are unstable
 };
 
+/// Returns k⊥c* = √(ζ*/η*), below which the shear (vortex) modes grow (theory.md (14.1)); 0 if ζ* ≤ 0.
+double shear_critical_wavenumber(double cooling_rate, double shear_viscosity);
+
+/// Returns L_c* = 2π/k* for the largest critical wave number k* (∞ when k* = 0: never unstable).
+double critical_length(double largest_wavenumber);
+
 /// Returns the critical values for dimension d from the reduced ζ*, η*, κ*, μ* (theory.md (14.3);
 /// dense gas (14.5), with ζ* = χ ζ*_dilute and the dense η*, κ*, μ*).
 HcsStability hcs_stability(int dimension, double cooling_rate, double shear_viscosity, double thermal_conductivity,

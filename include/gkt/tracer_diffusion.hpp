@@ -21,20 +21,18 @@ struct Tracer {
   void validate() const;
 };
 
-/// Returns γ0 = T0/T, the tracer's temperature over the host's in the HCS (both Maxwellian),
-/// from ζ0 = ζ_host (theory.md (16.4) with x0 → 0).
-double tracer_temperature_ratio(const Tracer& tracer);
-
 /// The tracer diffusion coefficient, built once per tracer and evaluated at any order.
 class TracerDiffusion {
  public:
-  /// Builds the operator for `tracer` up to `max_order` Sonine polynomials (c S_0 … c S_{N−1}).
+  /// Builds the operator for `tracer` (validated) up to `max_order` Sonine polynomials
+  /// (c S_0 … c S_{N−1}).
   TracerDiffusion(const Tracer& tracer, int max_order);
   /// Returns D0* = D0/D_ref at order N ≤ max_order, D_ref = (dΓ(d/2)/(4π^{(d−1)/2}))√(T/m)/(nσ^{d−1})
   /// the host's first-approximation self-diffusion coefficient (flux of tracer number −D0 ∇n0).
   [[nodiscard]] double coefficient(int order) const;
   /// Returns D0* at `order` with its truncation error from orders +1, +2 (order ≤ max_order − 2).
   [[nodiscard]] TruncationEstimate estimate(int order) const;
+  /// Returns γ0 = T0/T of the tracer in the host's HCS (both Maxwellian; ζ0 = ζ_host, (16.4) with x0 = 0).
   [[nodiscard]] double temperature_ratio() const { return gamma_; }
   [[nodiscard]] int max_order() const { return max_order_; }
 

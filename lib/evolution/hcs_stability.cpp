@@ -23,6 +23,14 @@ std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimen
            {-i * k / 2.0 * (p + dense.pressure_derivative), -i * k / 2.0 * p, a / 2 - eta * k * k}}};
 }
 
+double shear_critical_wavenumber(double cooling_rate, double shear_viscosity) {
+  return std::sqrt(std::max(cooling_rate, 0.0) / shear_viscosity);
+}
+
+double critical_length(double largest_wavenumber) {
+  return largest_wavenumber > 0 ? 2 * std::numbers::pi / largest_wavenumber : INFINITY;
+}
+
 HcsStability hcs_stability(int dimension, double cooling_rate, double shear_viscosity, double thermal_conductivity,
                            double density_heat_coefficient, const StabilityDensity& dense) {
   if (dimension != 2 && dimension != 3) throw std::invalid_argument("dimension: must be 2 or 3");
@@ -30,7 +38,7 @@ HcsStability hcs_stability(int dimension, double cooling_rate, double shear_visc
     throw std::invalid_argument("hcs_stability: transport coefficients must be positive");
   const double d = dimension, zeta = std::max(cooling_rate, 0.0), p = dense.pressure;
   HcsStability s;
-  s.shear_wavenumber = std::sqrt(zeta / shear_viscosity);
+  s.shear_wavenumber = shear_critical_wavenumber(cooling_rate, shear_viscosity);
   // det M = (k²/2)[(ζ*(1+λ) + U k²) p* − (ζ*/2 + K k²)(p* + φ∂p*)] vanishes at (14.5).
   const double kappa = (d + 2) / (2 * (d - 1)) * thermal_conductivity;
   const double mu = (d + 2) / (2 * (d - 1)) * density_heat_coefficient;
@@ -38,8 +46,7 @@ HcsStability hcs_stability(int dimension, double cooling_rate, double shear_visc
   const double numerator = zeta * ((1 + dense.log_chi_derivative) * p - 0.5 * longitudinal);
   const double denominator = kappa * longitudinal - mu * p;
   s.heat_wavenumber = numerator > 0 && denominator > 0 ? std::sqrt(numerator / denominator) : 0.0;
-  const double k = std::max(s.shear_wavenumber, s.heat_wavenumber);
-  s.critical_length = k > 0 ? 2 * std::numbers::pi / k : INFINITY;
+  s.critical_length = critical_length(std::max(s.shear_wavenumber, s.heat_wavenumber));
   return s;
 }
 

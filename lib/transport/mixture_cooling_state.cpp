@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "gkt/collision_moments.hpp"
+#include "gkt/sonine.hpp"
 
 namespace gkt {
 
@@ -84,8 +85,7 @@ PairSonineMoments pair_sonine_moments(const Mixture& m, std::size_t i, std::size
   const CollisionPair pair{d, Rational::from_double(m.species[i].mass), Rational::from_double(m.species[j].mass),
                            Rational::from_double(theta_i), Rational::from_double(theta_j)};
   const auto e = scalar_collision_moments<Rational>(pair, Rational::from_double(m.restitution(i, j)), 2);
-  // S_2(X) = X²/2 − (d+2)X/2 + d(d+2)/8 (theory.md (1.1), index d/2 − 1).
-  const Rational s2[] = {Rational(d * (d + 2), 8), Rational(-(d + 2), 2), Rational(1, 2)};
+  const std::vector<Rational> s2 = sonine_table(sonine_twice_m(d, 0), 2)[2];  // S_2 = Σ_n s2[n] X^n
   PairSonineMoments out{};
   for (int p = 1; p <= 2; ++p) {
     Rational plain = e(0, 0, p) - e(p, 0, 0), own(0), partner(0), both(0);

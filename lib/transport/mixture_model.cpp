@@ -51,39 +51,29 @@ class MixtureModel final : public TransportModel {
     return names(static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double()));
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    std::vector<ParameterSpec> p{
-        {"dimension",
-         ParameterSpec::Kind::integer,
-         Rational(2),
-         Rational(3),
-         true,
-         true,
-         Rational(3),
-         "spatial dimension",
-         {}},
-        {"species",
-         ParameterSpec::Kind::integer,
-         Rational(2),
-         Rational(kMaxSpecies),
-         true,
-         true,
-         Rational(2),
-         "number of species (set by the [[species]] tables)",
-         {}},
-        real("packing_fraction", Rational(0), true, max_packing_fraction(2), false, Rational(0),
-             "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
-        real("alpha", Rational(0), false, Rational(1), true, Rational(1),
-             "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
-        {"hcs",
-         ParameterSpec::Kind::choice,
-         Rational(0),
-         Rational(0),
-         true,
-         true,
-         Rational(0),
-         "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
-         "nonlinear in them) or Maxwellian",
-         {"linear", "nonlinear", "maxwellian"}}};
+    std::vector<ParameterSpec> p{{"dimension",
+                                  ParameterSpec::Kind::integer,
+                                  Rational(2),
+                                  Rational(3),
+                                  true,
+                                  true,
+                                  Rational(3),
+                                  "spatial dimension",
+                                  {}},
+                                 {"species",
+                                  ParameterSpec::Kind::integer,
+                                  Rational(2),
+                                  Rational(kMaxSpecies),
+                                  true,
+                                  true,
+                                  Rational(2),
+                                  "number of species (set by the [[species]] tables)",
+                                  {}},
+                                 real("packing_fraction", Rational(0), true, max_packing_fraction(2), false,
+                                      Rational(0), "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
+                                 real("alpha", Rational(0), false, Rational(1), true, Rational(1),
+                                      "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
+                                 hcs_spec()};
     for (int i = 1; i <= kMaxSpecies; ++i) {
       p.push_back(real(index_name("mass", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
                        "mass of species i (any unit)"));
@@ -103,7 +93,7 @@ class MixtureModel final : public TransportModel {
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
     const std::string hcs = point.choice("hcs", "linear");
-    parameters()[4].check(hcs);
+    hcs_spec().check(hcs);
     const Mixture mixture = make(point);
     const auto s = static_cast<int>(mixture.size());
     std::vector<CoefficientValue> out;
@@ -157,6 +147,19 @@ class MixtureModel final : public TransportModel {
  private:
   static constexpr int kMaxOrder = 12;
 
+  static ParameterSpec hcs_spec() {
+    return {"hcs",
+            ParameterSpec::Kind::choice,
+            Rational(0),
+            Rational(0),
+            true,
+            true,
+            Rational(0),
+            "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
+            "nonlinear in them) or Maxwellian",
+            {"linear", "nonlinear", "maxwellian"}};
+  }
+
   /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the
   /// requested order or tolerance; error from the next two orders.
   static CoefficientValue tracer_diffusion(const Mixture& m, std::size_t k, const OrderRequest& order) {
@@ -175,8 +178,12 @@ class MixtureModel final : public TransportModel {
         diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(n + 2, diffusion ? 2 * diffusion->max_order() : 6)));
       detail::OrderValue v;
       v.exact = false;
-      v.estimate = diffusion->estimate(n);
-      v.defined = std::isfinite(diffusion->coefficient(n)) && diffusion->coefficient(n) > 0;
+      // Undefined (no positive D*, e.g. a heavy tracer at strong dissipation) unless orders n … n+2
+      // are finite and D*(n) > 0; only then the estimate, which converts them to exact rationals.
+      const double value = diffusion->coefficient(n);
+      v.defined = value > 0 && std::isfinite(value) && std::isfinite(diffusion->coefficient(n + 1)) &&
+                  std::isfinite(diffusion->coefficient(n + 2));
+      if (v.defined) v.estimate = diffusion->estimate(n);
       return v;
     });
   }

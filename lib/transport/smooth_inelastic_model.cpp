@@ -236,10 +236,11 @@ class SmoothInelasticModel final : public TransportModel {
                                    const OrderRequest& order) {
     if (scheme == "linear") {
       // First Sonine about f_M(1 + a2 S2) with the van Noije–Ernst a2; error against orders 2, 3.
-      const Rational a2 = *hcs.solve(alpha, 2, HcsScheme::linear).exact_a2;
+      const HcsState linear = hcs.solve(alpha, 2, HcsScheme::linear);
+      const Rational a2 = *linear.exact_a2;
+      const double zeta_linear = linear.exact_cooling_rate->to_double();  // ζ0 + a2 ζ2, dilute
       Rational value;
       bool exact = false;
-      const double zeta_linear = hcs.solve(alpha, 2, HcsScheme::linear).exact_cooling_rate->to_double();
       if ((dense.phi.sign() > 0 || which >= 6) && sonine == SonineScheme::standard) {
         // The dense closed forms, linear in a2 like Garzó–Dufty's (theory.md §15.7).
         const EnskogState st = dense.state();
@@ -262,11 +263,10 @@ class SmoothInelasticModel final : public TransportModel {
         auto& fs = first_sonine_[static_cast<std::size_t>(d - 2)];
         if (!fs) fs = first_sonine_navier_stokes(d);
         const auto v = fs->evaluate(alpha, a2, sonine);
-        const Rational zeta = fs->zeta_0.evaluate(alpha) + a2 * fs->zeta_a2.evaluate(alpha);
         exact = which < 3;
         value = exact ? v[static_cast<std::size_t>(which)]
                       : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()},
-                                                             which, d, zeta.to_double(), dense, alpha));
+                                                             which, d, zeta_linear, dense, alpha));
       }
       const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine, dense);
       const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine, dense);

@@ -33,12 +33,8 @@ void Tracer::validate() const {
   if (!(alpha_host > 0 && alpha_host <= 1)) throw std::invalid_argument("alpha_host: must be a number in (0, 1]");
 }
 
-double tracer_temperature_ratio(const Tracer& tracer) {
-  tracer.validate();
-  return mixture_cooling_state(as_mixture(tracer)).temperature_ratio[0];
-}
-
 TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order) : max_order_(max_order) {
+  tracer.validate();
   if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
   const MixtureCoolingState hcs = mixture_cooling_state(as_mixture(tracer));
   const int d = tracer.dimension;
@@ -53,13 +49,13 @@ TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order) : max_orde
   const auto gain = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1_post, 1, n);
   const auto loss = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1, 1, n);
   const auto pieces = detail::vector_pieces(d, n, 0);
-  const double k_d = std::pow(std::numbers::pi, (3 * d - 1) / 2.0) / std::tgamma(d / 2.0);
-  const double w = std::pow(0.5 * (1 + tracer.diameter_ratio), d - 1) * k_d * std::pow(std::numbers::pi, -d) *
-                   std::sqrt(1 / theta0_ + 1);
-  const double nu0 = 8 * std::pow(std::numbers::pi, (d - 1) / 2.0) / ((d + 2) * std::tgamma(d / 2.0) * std::sqrt(2.0));
-  const double zeta = hcs.cooling_rate * nu0;  // the host's ζ in units of n σ^{d−1} √(2T/m)
+  // c = π^{(d−1)/2}/Γ(d/2) = K_d/π^d carries every geometric factor below.
+  const double c = std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
+  const double w = std::pow(0.5 * (1 + tracer.diameter_ratio), d - 1) * c * std::sqrt(1 / theta0_ + 1);
+  const double nu0 = 8 * c / ((d + 2) * std::sqrt(2.0));  // ν0 = nT/η0 in units of n σ^{d−1} √(2T/m)
+  const double zeta = hcs.cooling_rate * nu0;             // the host's ζ in those units
   // D0* = (√2 π^{(d−1)/2}/(θ0 Γ(d/2))) (M⁻¹)_00 (16.10); the tracer's velocity unit is 1/√θ0.
-  prefactor_ = std::sqrt(2.0) * std::pow(std::numbers::pi, (d - 1) / 2.0) / (theta0_ * std::tgamma(d / 2.0));
+  prefactor_ = std::sqrt(2.0) * c / theta0_;
   matrix_.assign(static_cast<std::size_t>(max_order), std::vector<double>(static_cast<std::size_t>(max_order)));
   for (int p = 0; p < max_order; ++p)
     for (int q = 0; q < max_order; ++q)

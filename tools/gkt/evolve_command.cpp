@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -178,9 +177,8 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
       // and would need the unverified κ̃1).
       HcsStability stability;
       if (viscoelastic) {
-        stability.shear_wavenumber = std::sqrt(std::max(s.cooling_rate, 0.0) / v.shear_viscosity);
-        stability.critical_length =
-            stability.shear_wavenumber > 0 ? 2 * std::numbers::pi / stability.shear_wavenumber : INFINITY;
+        stability.shear_wavenumber = shear_critical_wavenumber(s.cooling_rate, v.shear_viscosity);
+        stability.critical_length = critical_length(stability.shear_wavenumber);
       } else {
         stability =
             hcs_stability(d, s.cooling_rate, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient);

@@ -68,17 +68,15 @@ std::string cpp_horner(const RationalPolynomial& p) {
   return out;
 }
 
+/// numerator/denominator in LaTeX (a polynomial alone when the denominator is 1).
+std::string latex_function(const RationalFunction& f) {
+  if (f.denominator == RationalPolynomial(1L)) return latex_polynomial(f.numerator);
+  return "\\frac{" + latex_polynomial(f.numerator) + "}{" + latex_polynomial(f.denominator) + "}";
+}
+
 std::string render(const RationalFunction& f, const std::string& format, const std::string& name, int dimension,
                    const std::string& model, const std::string& scheme = "standard") {
-  if (format == "latex") {
-    if (f.denominator == RationalPolynomial(1L)) return latex_polynomial(f.numerator) + "\n";
-    std::string out("\\frac{");
-    out += latex_polynomial(f.numerator);
-    out += "}{";
-    out += latex_polynomial(f.denominator);
-    out += "}\n";
-    return out;
-  }
+  if (format == "latex") return latex_function(f) + "\n";
   if (format == "cpp") {
     std::ostringstream out;
     out << "// " << name << " of model " << model << ", d = " << dimension << ", first Sonine (" << scheme
@@ -150,8 +148,7 @@ std::string render(const EnskogClosedForm& f, const std::string& format, const s
     if (!first) out << (format == "latex" ? "\n + " : " + ");
     first = false;
     if (format == "latex") {
-      const std::string value = render(r, format, name, dimension, "");
-      out << "\\left(" << value.substr(0, value.size() - 1) << "\\right)" << monomial(m, format);
+      out << "\\left(" << latex_function(r) << "\\right)" << monomial(m, format);
     } else {
       out << "(" << r.numerator.to_string() << ")/(" << r.denominator.to_string() << ")" << monomial(m, format);
     }
