@@ -246,6 +246,14 @@ TEST(CliFormula, TextLatexAndHardSpheres) {
             "(-16/15*alpha^3 + 16/15*alpha^2 + 8/15*alpha - 8/15)/(alpha^3 - alpha^2 + 17/30*alpha - 27/10)\n");
   const CliRun latex = run_gkt("formula " + scene_path("hcs_first_sonine.toml") + " --coefficient a2 --format latex");
   EXPECT_EQ(latex.out.rfind("\\frac{-\\frac{16}{15}\\alpha^{3}", 0), 0U) << latex.out;
+  // A mixture scene has no closed forms: refused, not answered with the one-component gas's.
+  const CliRun mixture = run_gkt("formula " + scene_path("mixture_hcs.toml") + " --coefficient cooling_rate");
+  EXPECT_EQ(mixture.status, 2);
+  EXPECT_NE(mixture.err.find(
+                "model: gkt formula has closed forms for \"hard-spheres\" and \"smooth-inelastic\", got \"mixture\""),
+            std::string::npos)
+      << mixture.err;
+  EXPECT_TRUE(mixture.out.empty());
   const CliRun hs =
       run_gkt("formula " + scene_path("hard_spheres_exact.toml") + " --coefficient shear_viscosity --order 2");
   EXPECT_EQ(hs.out, "205/202\n");

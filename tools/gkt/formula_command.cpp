@@ -165,6 +165,12 @@ std::string formula(const std::string& scene_path, const std::vector<std::string
   std::vector<std::string> all = overrides;
   if (order) all.push_back(std::string("order=") + std::to_string(*order));
   const Scene scene = load_scene(scene_path, all, /*require_order=*/false);
+  // Closed forms exist for these models only; any other would fall through to the one-component
+  // smooth-inelastic forms below and print the wrong gas.
+  if (scene.model != "hard-spheres" && scene.model != "smooth-inelastic")
+    throw std::invalid_argument(
+        "model: gkt formula has closed forms for \"hard-spheres\" and \"smooth-inelastic\", got \"" + scene.model +
+        "\"");
   int dimension = 3, n = 1;
   bool dense = false;
   for (const auto& axis : scene.axes) {
