@@ -181,6 +181,27 @@ TEST(CliGolden, MixtureHcs) {
   EXPECT_NE(same.out.find("\n0.26666666666666666,1,"), std::string::npos) << same.out;
 }
 
+// Navier–Stokes coefficients of dilute binary and ternary mixtures with their error estimates
+// (regression data, tests/golden/README.md; the physics in tests/test_mixture_navier_stokes.cpp).
+TEST(CliGolden, MixtureTransport) {
+  const CliRun r = run_gkt("table " + scene_path("mixture_transport.toml") +
+                           " --set 'alpha=[0.9, 0.6]' --set 'mass_2=[0.5, 4]' --set dimension=3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("mixture_transport.csv")));
+  const CliRun ternary =
+      run_gkt("table " + scene_path("mixture_transport_ternary.toml") + " --set 'alpha_1_1=[0.9]' --set order=2");
+  ASSERT_EQ(ternary.status, 0) << ternary.err;
+  expect_csv_close(ternary.out, read_file(golden_path("mixture_transport_ternary.csv")));
+  // Identical species through the CLI: η* and κ* of the one-component gas about a Maxwellian HCS
+  // at α = 0.5, first order: 1/(ν_η − ζ/2) = 1.28 and 1.70666… (= 128/75).
+  const CliRun same = run_gkt("table " + scene_path("mixture_transport.toml") +
+                              " --set mass_2=1 --set diameter_2=1 --set alpha=0.5 --set order=1 --set dimension=3" +
+                              " --set 'coefficients=[\"shear_viscosity\", \"thermal_conductivity\"]'");
+  ASSERT_EQ(same.status, 0) << same.err;
+  EXPECT_NE(same.out.find("\n1.28,"), std::string::npos) << same.out;
+  EXPECT_NE(same.out.find(",1.70666666666666"), std::string::npos) << same.out;
+}
+
 // Tracer diffusion to a tolerance in Sonine order (regression data, tests/golden/README.md; the
 // physics in tests/test_mixture.cpp).
 TEST(CliGolden, TracerDiffusion) {
@@ -542,7 +563,13 @@ INSTANTIATE_TEST_SUITE_P(
                  "coefficients: tracer_diffusion_1 is computed for the dilute gas only"},
         BadInput{"mixture_no_third_species", kMixture + "fraction = 0.5\n",
                  "--set 'coefficients=[\"temperature_ratio_3\"]'",
-                 "coefficients: unknown coefficient 'temperature_ratio_3'"}),
+                 "coefficients: unknown coefficient 'temperature_ratio_3'"},
+        BadInput{
+            "mixture_transport_dense", kMixture + "fraction = 0.5\n",
+            "--set 'packing_fraction=[0, 0.2]' --set 'coefficients=[\"cooling_rate\", \"mutual_diffusion_1_2\"]'",
+            "coefficients: mutual_diffusion_1_2 is implemented for the dilute mixture only (packing_fraction = 0)"},
+        BadInput{"mixture_transport_order", kMixture + "fraction = 0.5\n", "--set order=13",
+                 "order: must be an integer in [1, 12]"}),
     [](const auto& info) { return info.param.label; });
 
 // Without a subcommand the program is misused: exit 2 and a one-line error.

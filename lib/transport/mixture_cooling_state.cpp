@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 
 #include <Eigen/Dense>
 
@@ -216,6 +217,64 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
   for (std::size_t i = 0; i < s; ++i) spread = std::max(spread, std::abs(rates[i] - rates[s - 1]));
   out.solved =
       fixed_point && std::isfinite(out.cooling_rate) && spread <= 1e-12 * std::max(1.0, std::abs(out.cooling_rate));
+  return out;
+}
+
+MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureCoolingState& state) {
+  if (mixture.packing_fraction != 0)
+    throw std::invalid_argument("packing_fraction: the mixture's HCS derivatives are implemented for 0 only");
+  // Fixed units n = 1, m̄ = 1, σ̄ = 1, T = 1/2 (velocity unit √(2T/m̄)), θ_k = m_k/γ_k. Then
+  // ζ_i = −(2c_d/d) Σ_l n_l σ_il^{d−1} w_il E_il(θ_i/θ_l), w_il = √(γ_i/m_i + γ_l/m_l), E_il of (16.3):
+  // (16.4) before the reduction by ν0 = 4√2 c_d/(d+2); `zeta` below omits the factor 2c_d/d.
+  const std::size_t s = mixture.size();
+  const int d = mixture.dimension;
+  const double mbar = mixture.mean_mass(), sbar = mixture.mean_diameter();
+  const std::vector<double>& g = state.temperature_ratio;
+  std::vector<double> m(s), x(s);
+  for (std::size_t k = 0; k < s; ++k) {
+    m[k] = mixture.species[k].mass / mbar;
+    x[k] = mixture.species[k].fraction;
+  }
+  // dF(i, k) = ∂ζ_i/∂γ_k, dn(i, j) = ∂ζ_i/∂n_j; ζ(i) the rates (all equal).
+  const auto n = static_cast<Eigen::Index>(s);
+  Eigen::MatrixXd dF = Eigen::MatrixXd::Zero(n, n), dn = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd zeta = Eigen::VectorXd::Zero(n);
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t l = 0; l < s; ++l) {
+      const auto I = static_cast<Eigen::Index>(i), L = static_cast<Eigen::Index>(l);
+      const double sigma = 0.5 * (mixture.species[i].diameter + mixture.species[l].diameter) / sbar;
+      const double f = -std::pow(sigma, d - 1);
+      const double a = mixture.restitution(i, l), mu = m[l] / (m[i] + m[l]);
+      const double w = std::sqrt(g[i] / m[i] + g[l] / m[l]);
+      const double r = m[i] * g[l] / (m[l] * g[i]);  // θ_i/θ_l
+      const double e = pair_energy_change(mu, a, r), de = mu * mu * (1 + a) * (1 + a);
+      zeta(I) += f * x[l] * w * e;
+      dn(I, L) += f * w * e;
+      if (l == i) {
+        dF(I, I) += f * x[l] * e / (m[i] * w);
+      } else {
+        dF(I, I) += f * x[l] * (e / (2 * m[i] * w) - w * de * r / g[i]);
+        dF(I, L) += f * x[l] * (e / (2 * m[l] * w) + w * de * r / g[l]);
+      }
+    }
+  // Rows 0 … s−2: d(ζ_i − ζ_{s−1}) = 0; row s−1: d(Σ_k n_k γ_k − n) = 0 (∂/∂n_j of it: γ_j − 1).
+  Eigen::MatrixXd jac(n, n);
+  for (Eigen::Index i = 0; i + 1 < n; ++i) jac.row(i) = dF.row(i) - dF.row(n - 1);
+  for (Eigen::Index k = 0; k < n; ++k) jac(n - 1, k) = x[static_cast<std::size_t>(k)];
+  const auto lu = jac.fullPivLu();
+  MixtureCoolingSensitivity out;
+  out.temperature_ratio.assign(s * s, 0.0);
+  out.cooling_rate.assign(s, 0.0);
+  const double to_reduced = (d + 2) / (2 * std::sqrt(2.0) * d);  // ζ* = to_reduced · zeta (ν0 of (16.4))
+  for (std::size_t j = 0; j < s; ++j) {
+    const auto J = static_cast<Eigen::Index>(j);
+    Eigen::VectorXd rhs(n);
+    for (Eigen::Index i = 0; i + 1 < n; ++i) rhs(i) = -(dn(i, J) - dn(n - 1, J));
+    rhs(n - 1) = 1 - g[j];
+    const Eigen::VectorXd dg = lu.solve(rhs);
+    for (std::size_t i = 0; i < s; ++i) out.temperature_ratio[i * s + j] = dg(static_cast<Eigen::Index>(i)) / g[i];
+    out.cooling_rate[j] = to_reduced * (dn(n - 1, J) + dF.row(n - 1).dot(dg));
+  }
   return out;
 }
 

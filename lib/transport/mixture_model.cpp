@@ -1,6 +1,8 @@
 // The "mixture" transport model (docs/conventions.md): s = 2 … 4 smooth inelastic species,
-// dilute or dense; so far the homogeneous cooling state: temperature ratios, cooling rate and
-// the species cumulants a2,i (theory.md §16).
+// dilute or dense: the homogeneous cooling state (temperature ratios, cooling rate, the species
+// cumulants a2,i; theory.md §16) and, for the dilute gas, the Navier–Stokes coefficients at any
+// Sonine order (theory.md §17).
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -8,7 +10,9 @@
 
 #include "gkt/mixture.hpp"
 #include "gkt/mixture_cooling_state.hpp"
+#include "gkt/mixture_navier_stokes.hpp"
 #include "gkt/pair_correlation.hpp"
+#include "gkt/sonine_solution.hpp"
 #include "gkt/tracer_diffusion.hpp"
 #include "transport/models.hpp"
 
@@ -31,24 +35,31 @@ class MixtureModel final : public TransportModel {
   [[nodiscard]] std::string name() const override { return "mixture"; }
   [[nodiscard]] std::string description() const override {
     return "granular mixture of s = 2..4 smooth inelastic hard spheres/disks (dilute or Enskog): homogeneous "
-           "cooling state (first Sonine or Maxwellian)";
+           "cooling state (first Sonine or Maxwellian); Navier-Stokes coefficients of the dilute mixture at any order";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto n = names(kMaxSpecies);
+    for (const auto& t : transport_names(kMaxSpecies)) n.push_back(t);
     for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
     return n;
   }
   [[nodiscard]] std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const override {
     const int s = static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double());
     auto n = names(s);
+    for (const auto& t : transport_names(s)) n.push_back(t);
     if (s == 2)
       for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
     return n;
   }
-  /// tracer_diffusion_i only when asked for: a property of the pair at infinite dilution, not of
-  /// the scene's composition (and dilute binaries only).
+  /// The HCS always; the Navier–Stokes coefficients when the scene is dilute (a fixed φ = 0: they
+  /// are not implemented for the dense gas yet); tracer_diffusion_i only when asked for (a property
+  /// of the pair at infinite dilution, not of the scene's composition).
   [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const override {
-    return names(static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double()));
+    const int s = static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double());
+    auto n = names(s);
+    if (fixed.number("packing_fraction", Rational(1)).sign() == 0)
+      for (const auto& t : transport_names(s)) n.push_back(t);
+    return n;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     std::vector<ParameterSpec> p{{"dimension",
@@ -98,6 +109,7 @@ class MixtureModel final : public TransportModel {
     const auto s = static_cast<int>(mixture.size());
     std::vector<CoefficientValue> out;
     std::optional<MixtureCoolingState> chosen, alternative;  // solved once, if an HCS value is asked for
+    TransportCache transport;                                // built once, if a transport value is asked for
     for (const auto& c : coefficients) {
       int i = 0, kind = c == "cooling_rate" ? 0 : -1;
       for (int k = 1; k <= s; ++k) {
@@ -105,9 +117,14 @@ class MixtureModel final : public TransportModel {
         if (c == index_name("a2_species", k)) i = k, kind = 2;
         if (c == index_name("tracer_diffusion", k)) i = k, kind = 3;
       }
-      if (kind < 0)
-        throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
-                                    " species; valid: " + detail::join(names(s)));
+      if (kind < 0) {
+        const auto all = transport_names(s);
+        if (std::find(all.begin(), all.end(), c) == all.end())
+          throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
+                                      " species; valid: " + detail::join(names(s)) + ", " + detail::join(all));
+        out.push_back(transport.value(mixture, c, order));
+        continue;
+      }
       const auto k = static_cast<std::size_t>(i > 0 ? i - 1 : 0);
       if (kind == 3) {
         out.push_back(tracer_diffusion(mixture, k, order));
@@ -186,6 +203,63 @@ class MixtureModel final : public TransportModel {
       if (v.defined) v.estimate = diffusion->estimate(n);
       return v;
     });
+  }
+
+  /// The mixture's Navier–Stokes operator for one parameter point, grown as orders are asked for,
+  /// and the coefficients of every order solved so far.
+  struct TransportCache {
+    std::optional<MixtureNavierStokes> operators;
+    std::map<int, MixtureTransportValues> by_order;
+
+    const MixtureTransportValues& at(const Mixture& m, int n) {
+      if (const auto it = by_order.find(n); it != by_order.end()) return it->second;
+      if (!operators || operators->max_order() < n)
+        operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)));
+      return by_order.emplace(n, operators->coefficients(n)).first->second;
+    }
+
+    /// Returns the coefficient `name` at the requested order or tolerance, its error from the next
+    /// two orders (theory.md §6), undefined (nan) if a value is not finite.
+    CoefficientValue value(const Mixture& m, const std::string& name, const OrderRequest& order) {
+      if (m.packing_fraction > 0)
+        throw std::invalid_argument("coefficients: " + name +
+                                    " is implemented for the dilute mixture only (packing_fraction = 0)");
+      const auto s = m.size();
+      auto pick = [&](const MixtureTransportValues& v) {
+        if (name == "shear_viscosity") return v.shear_viscosity;
+        if (name == "thermal_conductivity") return v.thermal_conductivity;
+        for (std::size_t i = 0; i < s; ++i) {
+          const int a = static_cast<int>(i) + 1;
+          if (name == index_name("thermal_diffusion", a)) return v.thermal_diffusion[i];
+          if (name == index_name("pressure_diffusion", a)) return v.pressure_diffusion[i];
+          if (name == index_name("dufour", a)) return v.dufour[i];
+          for (std::size_t j = 0; j < s; ++j)
+            if (name == index_name("mutual_diffusion", a, static_cast<int>(j) + 1))
+              return v.mutual_diffusion[i * s + j];
+        }
+        throw std::logic_error("mixture: no transport value named " + name);
+      };
+      return detail::choose_order(order, kMaxOrder, [&](int n) {
+        detail::OrderValue v;
+        v.exact = false;
+        const double a = pick(at(m, n)), b = pick(at(m, n + 1)), c = pick(at(m, n + 2));
+        v.defined = std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
+        if (v.defined)
+          v.estimate =
+              estimate_truncation(Rational::from_double(a), Rational::from_double(b), Rational::from_double(c));
+        return v;
+      });
+    }
+  };
+
+  /// Returns the Navier–Stokes coefficient names of s species (theory.md §17).
+  static std::vector<std::string> transport_names(int s) {
+    std::vector<std::string> n{"shear_viscosity", "thermal_conductivity"};
+    for (int i = 1; i <= s; ++i)
+      for (int j = 1; j <= s; ++j) n.push_back(index_name("mutual_diffusion", i, j));
+    for (const char* base : {"thermal_diffusion", "pressure_diffusion", "dufour"})
+      for (int i = 1; i <= s; ++i) n.push_back(index_name(base, i));
+    return n;
   }
 
   static std::vector<std::string> names(int s) {

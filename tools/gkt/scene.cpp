@@ -214,6 +214,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   for (const auto& [key, value] : table)
     if (value.is_integer() || value.is_floating_point())
       fixed.numbers[std::string(key.str())] = scene_number(value, "");
+  for (const auto& spec : specs)  // a key not given is single-valued too: its default
+    if (spec.kind != ParameterSpec::Kind::choice && !table.contains(spec.name))
+      fixed.numbers[spec.name] = spec.default_value;
   const auto names = model->scene_coefficient_names(fixed);
   if (const auto* c = table.get("coefficients")) {
     const auto* array = c->as_array();

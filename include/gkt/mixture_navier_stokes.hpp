@@ -1,0 +1,60 @@
+// Navier–Stokes transport coefficients of a dilute granular mixture of s smooth inelastic hard
+// spheres (d = 3) or disks (d = 2) about its (Maxwellian) homogeneous cooling state, at any
+// Sonine order (docs/theory.md §17; [garzo2002mixture], [garzo2007mixture] at φ = 0).
+//
+// Reduced as in docs/conventions.md "Mixtures": D_ij* = D_ij/(n D0), D^T_i* = D^T_i/D0,
+// D^p_i* = D^p_i/D0, η* = η/η0, λ* = λ/κ0, D''_j* = T D''_j/κ0, with D0, η0, κ0 the elastic
+// first-approximation self-diffusion, viscosity and conductivity of a one-component gas of mass
+// m̄ = Σ x_i m_i and diameter σ̄ = Σ x_i σ_i at the same n and T.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gkt/mixture.hpp"
+#include "gkt/mixture_cooling_state.hpp"
+
+namespace gkt {
+
+/// The Navier–Stokes coefficients of one Sonine order (species indices from 0).
+struct MixtureTransportValues {
+  /// D_ij* at i·s + j: j_i = −Σ_j (m_i m_j n_j/ρ) D_ij ∇ln n_j − ρ D^T_i ∇ln T (theory.md (17.1)).
+  std::vector<double> mutual_diffusion;
+  std::vector<double> thermal_diffusion;   ///< D^T_i*
+  std::vector<double> pressure_diffusion;  ///< D^p_i* = Σ_j m_i m_j n_j D_ij/ρ² (j_i ∋ −ρ D^p_i ∇ln p; (17.8))
+  std::vector<double> dufour;              ///< D''_j*: q = −λ∇T − T² Σ_j D''_j ∇ln n_j
+  double shear_viscosity = 0;              ///< η*
+  double thermal_conductivity = 0;         ///< λ*
+};
+
+/// The linearised Boltzmann operator of a dilute mixture in Sonine polynomials, built once (exact
+/// engine moments rounded to double) and solved at any order up to max_order.
+class MixtureNavierStokes {
+ public:
+  /// Builds the operator for `mixture` (validated; φ must be 0) about its Maxwellian HCS, with
+  /// vector trial functions c S_0 … c S_max_order and tensor ones Y_2 S_0 … Y_2 S_{max_order−1}
+  /// per species. Throws std::invalid_argument naming the field on bad input.
+  MixtureNavierStokes(const Mixture& mixture, int max_order);
+
+  /// Returns the coefficients at Sonine order N (vector modes c S_0 … c S_N, shear Y_2 S_0 …
+  /// Y_2 S_{N−1}), 1 ≤ N ≤ max_order.
+  [[nodiscard]] MixtureTransportValues coefficients(int order) const;
+  [[nodiscard]] int max_order() const { return max_order_; }
+  /// Returns the Maxwellian HCS the coefficients are built about.
+  [[nodiscard]] const MixtureCoolingState& cooling_state() const { return state_; }
+
+ private:
+  Mixture mixture_;
+  MixtureCoolingState state_;
+  MixtureCoolingSensitivity sensitivity_;
+  int max_order_;
+  std::size_t s_;
+  double zeta_ = 0;                                    // ζ in the units n = σ̄ = m̄ = √(2T/m̄) = 1
+  std::vector<double> theta_, mass_, fraction_;        // θ_k = m_k/γ_k, m_k/m̄, x_k
+  Eigen::MatrixXd vector_operator_, tensor_operator_;  // rows (i, p), columns (k, q); index i·n + p
+  Eigen::MatrixXd vector_d_, vector_m_, tensor_d_;     // one-species ζ pieces D(p, q), M(p, q)
+  Eigen::VectorXd vector_flux_, tensor_flux_;          // ⟨x² S_q⟩ of the two modes
+};
+
+}  // namespace gkt

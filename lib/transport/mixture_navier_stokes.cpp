@@ -1,0 +1,203 @@
+#include "gkt/mixture_navier_stokes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "gkt/collision_moments.hpp"
+#include "transport/galerkin_pieces.hpp"
+
+namespace gkt {
+
+namespace {
+
+/// c_d = π^{(d−1)/2}/Γ(d/2): (θ_iθ_j)^{d/2} J0_ij π^{−d} = c_d √(1/θ_i + 1/θ_j) (theory.md (16.4)).
+double geometric_factor(int d) { return std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0); }
+
+Eigen::MatrixXd to_matrix(const std::vector<std::vector<double>>& m) {
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(m.size()));
+  for (std::size_t p = 0; p < m.size(); ++p)
+    for (std::size_t q = 0; q < m.size(); ++q)
+      out(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(q)) = m[p][q];
+  return out;
+}
+
+Eigen::VectorXd to_vector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+/// Adds the pair (i, j)'s part of −∫ψ_ip · (J_ij[X_i, f_j] + J_ij[f_i, X_j]) to `op` (theory.md
+/// (17.4)): the loss and gain moments of the engine with the unknown at v1 (X_i) and at v2 (X_j).
+void add_pair(Eigen::MatrixXd& op, const CollisionPair& pair, const Rational& alpha, int rank, int n_max, std::size_t i,
+              std::size_t j, double weight_self, double weight_other) {
+  const auto block = static_cast<Eigen::Index>(n_max + 1);
+  const auto gain_self = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1_post, rank, n_max);
+  const auto loss_self = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1, rank, n_max);
+  const auto gain_other = sonine_collision_moments<Rational>(pair, alpha, Slot::v2, Slot::v1_post, rank, n_max);
+  const auto loss_other = sonine_collision_moments<Rational>(pair, alpha, Slot::v2, Slot::v1, rank, n_max);
+  const auto I = static_cast<Eigen::Index>(i) * block, J = static_cast<Eigen::Index>(j) * block;
+  for (int p = 0; p <= n_max; ++p)
+    for (int q = 0; q <= n_max; ++q) {
+      op(I + p, I + q) -= weight_self * (gain_self(p, q) - loss_self(p, q)).to_double();
+      op(I + p, J + q) -= weight_other * (gain_other(p, q) - loss_other(p, q)).to_double();
+    }
+}
+
+/// Rows and columns of the species blocks (block size `full`) restricted to their first `n`.
+Eigen::MatrixXd leading_blocks(const Eigen::MatrixXd& m, std::size_t s, int full, int n) {
+  const auto S = static_cast<Eigen::Index>(s);
+  Eigen::MatrixXd out(S * n, S * n);
+  for (Eigen::Index i = 0; i < S; ++i)
+    for (Eigen::Index k = 0; k < S; ++k) out.block(i * n, k * n, n, n) = m.block(i * full, k * full, n, n);
+  return out;
+}
+
+}  // namespace
+
+MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
+    : mixture_(mixture), max_order_(max_order), s_(mixture.size()) {
+  mixture.validate();
+  if (mixture.packing_fraction != 0)
+    throw std::invalid_argument(
+        "packing_fraction: the mixture's Navier-Stokes coefficients are implemented for the dilute gas (0) only");
+  if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
+  state_ = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
+  sensitivity_ = mixture_cooling_sensitivity(mixture, state_);
+  const int d = mixture.dimension;
+  const double c_d = geometric_factor(d);
+  // Units n = 1, m̄ = 1, σ̄ = 1, velocity √(2T/m̄) = 1 (so T = 1/2): θ_k = m_k/γ_k. The engine needs
+  // √(θ_iθ_j) rational for the cross moments of the vector mode, so √θ_k is rounded to a rational
+  // (53 bits) and θ_k is its exact square.
+  std::vector<Rational> root(s_), mass(s_);
+  for (std::size_t k = 0; k < s_; ++k) {
+    mass[k] = Rational::from_double(mixture.species[k].mass / mixture.mean_mass());
+    root[k] = Rational::from_double(std::sqrt(mass[k].to_double() / state_.temperature_ratio[k]));
+    theta_.push_back((root[k] * root[k]).to_double());
+    mass_.push_back(mass[k].to_double());
+    fraction_.push_back(mixture.species[k].fraction);
+  }
+  zeta_ = state_.cooling_rate * 4 * std::sqrt(2.0) * c_d / (d + 2);  // ζ = ζ* ν0, ν0 = 4√2 c_d/(d+2)
+  const int nv = max_order + 1, nt = max_order;
+  const auto S = static_cast<Eigen::Index>(s_);
+  vector_operator_ = Eigen::MatrixXd::Zero(S * nv, S * nv);
+  tensor_operator_ = Eigen::MatrixXd::Zero(S * nt, S * nt);
+  for (std::size_t i = 0; i < s_; ++i)
+    for (std::size_t j = 0; j < s_; ++j) {
+      const CollisionPair pair{d, mass[i], mass[j], root[i] * root[i], root[j] * root[j]};
+      const Rational alpha = Rational::from_double(mixture.restitution(i, j));
+      const double sigma = 0.5 * (mixture.species[i].diameter + mixture.species[j].diameter) / mixture.mean_diameter();
+      const double rate = std::pow(sigma, d - 1) * c_d * std::sqrt(1 / theta_[i] + 1 / theta_[j]);
+      add_pair(vector_operator_, pair, alpha, 1, nv - 1, i, j, rate * fraction_[j], rate * fraction_[i]);
+      add_pair(tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j], rate * fraction_[i]);
+    }
+  const auto vp = detail::rounded(detail::vector_pieces(d, nv - 1, 0));
+  const auto tp = detail::rounded(detail::tensor_pieces(d, nt - 1, 0));
+  vector_d_ = to_matrix(vp.d);
+  vector_m_ = to_matrix(vp.m);
+  tensor_d_ = to_matrix(tp.d);
+  vector_flux_ = to_vector(vp.flux);
+  tensor_flux_ = to_vector(tp.flux);
+}
+
+MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
+  if (order < 1 || order > max_order_)
+    throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(max_order_) + "]");
+  const int d = mixture_.dimension;
+  const std::size_t s = s_;
+  const auto S = static_cast<Eigen::Index>(s);
+  const double c_d = geometric_factor(d);
+  const double eta0 = (d + 2) / (8 * std::sqrt(2.0) * c_d);  // η0 = ((d+2)Γ(d/2)/(8π^{(d−1)/2}))√(m̄T)/σ̄^{d−1}
+  const double kappa0 = d * (d + 2) / (2.0 * (d - 1)) * eta0;
+  const double d0 = d / (4 * std::sqrt(2.0) * c_d);  // D0 = (dΓ(d/2)/(4π^{(d−1)/2}))√(T/m̄)/(nσ̄^{d−1})
+  const double temperature = 0.5;
+
+  // Vector modes (theory.md (17.5)–(17.6)): unknowns φ̃_kq, X_k = (f_k/n_k) Σ_q φ̃_kq c_k S_q(θ_k V²).
+  const int n = order + 1;
+  const Eigen::MatrixXd op = leading_blocks(vector_operator_, s, max_order_ + 1, n);
+  const Eigen::MatrixXd dv = vector_d_.topLeftCorner(n, n), mv = vector_m_.topLeftCorner(n, n);
+  Eigen::MatrixXd ka = op, kb = op, mass_block = Eigen::MatrixXd::Zero(S * n, S * n);
+  for (Eigen::Index i = 0; i < S; ++i) {
+    ka.block(i * n, i * n, n, n) += zeta_ * (dv - 0.5 * mv);
+    kb.block(i * n, i * n, n, n) += zeta_ * dv;
+    mass_block.block(i * n, i * n, n, n) = mv;
+  }
+  // Total momentum Σ_k m_k ∫V X_k = 0 replaces the p = 0 row of the most abundant species: that row
+  // is otherwise the momentum balance, a combination of the others (theory.md (17.7)).
+  const auto major =
+      static_cast<Eigen::Index>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
+  for (Eigen::MatrixXd* k : {&ka, &kb}) {
+    k->row(major * n).setZero();
+    for (Eigen::Index j = 0; j < S; ++j)
+      (*k)(major * n, j * n) = mass_[static_cast<std::size_t>(j)] / std::sqrt(theta_[static_cast<std::size_t>(j)]);
+  }
+  Eigen::VectorXd sa = Eigen::VectorXd::Zero(S * n);
+  for (std::size_t i = 0; i < s; ++i) {
+    const auto I = static_cast<Eigen::Index>(i) * n;
+    // (17.5): −x_i θ_i^{−1/2} ⟨x S_p (x − d/2 − θ_i)⟩, x − d/2 = 1 − S_1
+    sa.segment(I, n) = -fraction_[i] / std::sqrt(theta_[i]) * ((1 - theta_[i]) * mv.col(0) - mv.col(1));
+  }
+  sa(major * n) = 0;
+  const Eigen::VectorXd a = ka.partialPivLu().solve(sa);
+  const auto lu_b = kb.partialPivLu();
+
+  MixtureTransportValues out;
+  out.mutual_diffusion.assign(s * s, 0.0);
+  out.thermal_diffusion.assign(s, 0.0);
+  out.pressure_diffusion.assign(s, 0.0);
+  out.dufour.assign(s, 0.0);
+  const double m00 = mv(0, 0);
+  const Eigen::VectorXd fv = vector_flux_.head(n);
+  double lambda = 0;
+  for (std::size_t i = 0; i < s; ++i) {
+    const auto I = static_cast<Eigen::Index>(i) * n;
+    out.thermal_diffusion[i] = -mass_[i] / d / std::sqrt(theta_[i]) * m00 * a(I) / d0;  // (17.9)
+    lambda -= mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(a.segment(I, n)) / (2 * d * temperature);
+  }
+  out.thermal_conductivity = lambda / kappa0;
+  for (std::size_t j = 0; j < s; ++j) {
+    Eigen::VectorXd sb(S * n);
+    for (std::size_t i = 0; i < s; ++i) {
+      const auto I = static_cast<Eigen::Index>(i) * n;
+      const double g = sensitivity_.temperature_ratio[i * s + j];
+      // (17.6): −θ_i^{−1/2}[δ_ij M(p,0) + x_i (∂_j ln γ_i ⟨x S_p (x − d/2)⟩ − θ_i M(p,0))]
+      sb.segment(I, n) =
+          -1 / std::sqrt(theta_[i]) *
+          ((i == j ? 1.0 : 0.0) * mv.col(0) + fraction_[i] * (g * (mv.col(0) - mv.col(1)) - theta_[i] * mv.col(0)));
+    }
+    const double dzeta = sensitivity_.cooling_rate[j] * 4 * std::sqrt(2.0) * c_d / (d + 2);
+    sb += dzeta * (mass_block * a);
+    sb(major * n) = 0;
+    const Eigen::VectorXd b = lu_b.solve(sb);
+    double heat = 0;
+    for (std::size_t i = 0; i < s; ++i) {
+      const auto I = static_cast<Eigen::Index>(i) * n;
+      out.mutual_diffusion[i * s + j] = -m00 / (mass_[j] * d * std::sqrt(theta_[i])) * b(I) / d0;  // (17.9)
+      heat += 0.5 * mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(b.segment(I, n)) / d;
+    }
+    out.dufour[j] = -fraction_[j] * heat / (temperature * kappa0);  // (17.10)
+  }
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t j = 0; j < s; ++j)
+      out.pressure_diffusion[i] += mass_[i] * mass_[j] * fraction_[j] * out.mutual_diffusion[i * s + j];
+
+  // Shear mode: X_k = (f_k/n_k) Σ_q φ̃_kq Y_2(c_k) S_q, source −2 x_i ((d−1)/d) ⟨x² S_p⟩ (17.11).
+  const int nt = order;
+  Eigen::MatrixXd kc = leading_blocks(tensor_operator_, s, max_order_, nt);
+  const Eigen::VectorXd ft = tensor_flux_.head(nt);
+  Eigen::VectorXd sc(S * nt);
+  for (std::size_t i = 0; i < s; ++i) {
+    const auto I = static_cast<Eigen::Index>(i) * nt;
+    kc.block(I, I, nt, nt) += zeta_ * tensor_d_.topLeftCorner(nt, nt);
+    sc.segment(I, nt) = -2 * fraction_[i] * (d - 1.0) / d * ft;
+  }
+  const Eigen::VectorXd c = kc.partialPivLu().solve(sc);
+  double eta = 0;
+  for (std::size_t i = 0; i < s; ++i)
+    eta -= mass_[i] / theta_[i] * ft.dot(c.segment(static_cast<Eigen::Index>(i) * nt, nt)) / (d * (d + 2.0));
+  out.shear_viscosity = eta / eta0;
+  return out;
+}
+
+}  // namespace gkt

@@ -1,0 +1,226 @@
+// Navier–Stokes coefficients of a dilute granular mixture at any Sonine order (theory.md §17):
+// the one-component limit against the single-species solver, the tracer limit against the
+// Boltzmann–Lorentz solution, the reciprocity of the elastic operator, fluxes summing to zero,
+// the HCS density derivatives against finite differences, continuity in x → 0 and α → 1, and
+// extreme mass and size ratios.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "gkt/mixture.hpp"
+#include "gkt/mixture_cooling_state.hpp"
+#include "gkt/mixture_navier_stokes.hpp"
+#include "gkt/navier_stokes.hpp"
+#include "gkt/tracer_diffusion.hpp"
+
+using gkt::Rational;
+
+namespace {
+
+gkt::Mixture binary(int d, double m2, double s2, double x1, double alpha) {
+  return gkt::make_mixture(d, {{1.0, 1.0, x1, "1"}, {m2, s2, 1 - x1, "2"}}, alpha);
+}
+
+double relative(double a, double b) { return std::abs(a - b) / std::max(1.0, std::abs(b)); }
+
+}  // namespace
+
+// Identical species: η*, λ* and Σ_j D''_j* are the one-component η*, κ*, μ* of the smooth
+// inelastic gas about the Maxwellian HCS (NavierStokesSolver with a2 = 0, an independent
+// assembly) at every order; D^T_i vanishes; D_1j = (δ_1j − x_1) D_self with D_self the tagged
+// particle's diffusion (TracerDiffusion of an identical tracer at the same basis c S_0 … c S_N).
+TEST(MixtureNavierStokes, IdenticalSpeciesGiveOneComponentCoefficients) {
+  for (int d : {2, 3}) {
+    gkt::NavierStokesSolver one(d);
+    for (double alpha : {1.0, 0.8, 0.5, 0.2}) {
+      const gkt::MixtureNavierStokes ns(binary(d, 1, 1, 0.3, alpha), 4);
+      const gkt::TracerDiffusion tagged({d, 1, 1, alpha, alpha}, 5);
+      for (int order = 1; order <= 4; ++order) {
+        const auto v = ns.coefficients(order);
+        const auto o = one.solve(Rational::from_double(alpha), order, {1.0, 0.0, 0.0});
+        EXPECT_LT(relative(v.shear_viscosity, o.shear_viscosity), 1e-13) << d << " " << alpha << " " << order;
+        EXPECT_LT(relative(v.thermal_conductivity, o.thermal_conductivity), 1e-13);
+        EXPECT_LT(relative(v.dufour[0] + v.dufour[1], o.density_heat_coefficient), 1e-13);
+        EXPECT_LT(std::abs(v.thermal_diffusion[0]) + std::abs(v.thermal_diffusion[1]), 1e-13);
+        const double self = tagged.coefficient(order + 1);
+        EXPECT_LT(relative(v.mutual_diffusion[0], 0.7 * self), 1e-13);
+        EXPECT_LT(relative(v.mutual_diffusion[1], -0.3 * self), 1e-13);
+      }
+    }
+  }
+}
+
+// Tracer limit x_1 = 0: the tracer's D_11 is the Boltzmann–Lorentz solution of §16.5 (a separate
+// code path: the tracer's operator alone), D_11* = (m_2/m_1) D0*, at every order, for unequal
+// masses, sizes and restitution.
+TEST(MixtureNavierStokes, TracerDiffusionEqualsBoltzmannLorentzSolution) {
+  for (int d : {2, 3})
+    for (double mass : {0.1, 3.0})
+      for (double alpha : {1.0, 0.7}) {
+        gkt::Mixture m = gkt::make_mixture(d, {{mass, 1.5, 0.0, "tracer"}, {1, 1, 1.0, "host"}}, alpha);
+        m.alpha = {alpha, 0.9 * alpha, 0.9 * alpha, alpha};
+        const gkt::MixtureNavierStokes ns(m, 5);
+        const gkt::TracerDiffusion tracer({d, mass, 1.5, 0.9 * alpha, alpha}, 6);
+        for (int order = 1; order <= 5; ++order)
+          EXPECT_LT(relative(ns.coefficients(order).mutual_diffusion[0] * mass, tracer.coefficient(order + 1)), 1e-12)
+              << d << " " << mass << " " << alpha << " " << order;
+      }
+}
+
+// x_1 → 0 is continuous and differentiable: every coefficient moves linearly, the change from
+// x_1 = 0 to 1e-8 being 1/100 of the change to 1e-6 (within 2 %; the slopes are large — up to
+// ~2·10³ for a hot heavy tracer — so a fixed tolerance would not test anything).
+TEST(MixtureNavierStokes, TracerLimitIsContinuous) {
+  auto flat = [](const gkt::MixtureTransportValues& v) {
+    std::vector<double> out{v.shear_viscosity, v.thermal_conductivity};
+    for (const auto* group : {&v.mutual_diffusion, &v.thermal_diffusion, &v.pressure_diffusion, &v.dufour})
+      out.insert(out.end(), group->begin(), group->end());
+    return out;
+  };
+  for (int d : {2, 3})
+    for (double mass : {0.1, 3.0}) {
+      const auto a = flat(gkt::MixtureNavierStokes(binary(d, mass, 0.7, 0.0, 0.6), 3).coefficients(3));
+      const auto b = flat(gkt::MixtureNavierStokes(binary(d, mass, 0.7, 1e-8, 0.6), 3).coefficients(3));
+      const auto c = flat(gkt::MixtureNavierStokes(binary(d, mass, 0.7, 1e-6, 0.6), 3).coefficients(3));
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        const double step = b[k] - a[k], slope = (c[k] - a[k]) / 100;
+        EXPECT_LE(std::abs(step - slope), 0.02 * std::abs(slope) + 1e-12 * (1 + std::abs(a[k])))
+            << d << " " << mass << " " << k;
+      }
+    }
+}
+
+// α → 1 is continuous (ζ → 0 removes no equation: the momentum constraint replaces one row at
+// every α), and α = 1 gives equipartition.
+TEST(MixtureNavierStokes, ElasticLimitIsContinuous) {
+  for (int d : {2, 3}) {
+    const gkt::MixtureNavierStokes one(binary(d, 4, 2, 0.4, 1.0), 3), near(binary(d, 4, 2, 0.4, 1 - 1e-9), 3);
+    const auto a = one.coefficients(3), b = near.coefficients(3);
+    EXPECT_LT(relative(b.shear_viscosity, a.shear_viscosity), 1e-7);
+    EXPECT_LT(relative(b.thermal_conductivity, a.thermal_conductivity), 1e-7);
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_LT(relative(b.mutual_diffusion[k], a.mutual_diffusion[k]), 1e-7);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_LT(relative(b.thermal_diffusion[k], a.thermal_diffusion[k]), 1e-7);
+      EXPECT_LT(relative(b.dufour[k], a.dufour[k]), 1e-7);
+    }
+  }
+}
+
+// Elastic binary: the operator is symmetric in ⟨X, Y⟩ = Σ_i ∫X_i Y_i/f_i, so at every Galerkin
+// order (17.12) ρD^T_1 = m_1 T D''_1 − (d/2) m_1 n_1 (1/m_1 − 1/m_2)(m_1²/ρ) D_11, and the mass
+// flux depends on the densities only through ∇ln n_1/m_1 − ∇ln n_2/m_2:
+// m_1³ n_1 D_11 = −m_1 m_2² n_2 D_12 (theory.md §17.4). Nothing in the assembly imposes either.
+TEST(MixtureNavierStokes, ElasticBinaryIsReciprocal) {
+  for (int d : {2, 3})
+    for (double mass : {0.2, 5.0}) {
+      const double x1 = 0.3;
+      const gkt::MixtureNavierStokes ns(gkt::make_mixture(d, {{mass, 2.0, x1, ""}, {1, 1, 1 - x1, ""}}, 1.0), 4);
+      const double mbar = x1 * mass + 1 - x1, m1 = mass / mbar, m2 = 1 / mbar;
+      const double cd = std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
+      const double eta0 = (d + 2) / (8 * std::sqrt(2.0) * cd), kappa0 = d * (d + 2) / (2.0 * (d - 1)) * eta0;
+      const double d0 = d / (4 * std::sqrt(2.0) * cd);  // units n = m̄ = σ̄ = √(2T/m̄) = 1 (T = 1/2)
+      for (int order = 1; order <= 4; ++order) {
+        const auto v = ns.coefficients(order);
+        const double thermal = d0 * v.thermal_diffusion[0];
+        const double reciprocal =
+            m1 * kappa0 * v.dufour[0] - m1 * (d / 2.0) * (1 / m1 - 1 / m2) * m1 * m1 * x1 * d0 * v.mutual_diffusion[0];
+        EXPECT_NEAR(thermal, reciprocal, 1e-13) << d << " " << mass << " " << order;
+        EXPECT_GT(std::abs(thermal), 1e-3);
+        EXPECT_NEAR(m1 * m1 * m1 * x1 * v.mutual_diffusion[0], -m1 * m2 * m2 * (1 - x1) * v.mutual_diffusion[1], 1e-13);
+      }
+    }
+}
+
+// Σ_i j_i = 0: Σ_i D^T_i = 0 and Σ_i m_i D_ij = 0 for every j, inelastic ternary (3D and 2D).
+TEST(MixtureNavierStokes, MassFluxesSumToZero) {
+  for (int d : {2, 3}) {
+    gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.2, ""}, {3, 1.5, 0.5, ""}, {0.5, 0.8, 0.3, ""}}, 0.8);
+    m.alpha = {0.9, 0.8, 0.7, 0.8, 0.6, 0.75, 0.7, 0.75, 0.95};
+    const gkt::MixtureNavierStokes ns(m, 3);
+    for (int order = 1; order <= 3; ++order) {
+      const auto v = ns.coefficients(order);
+      double sum_t = 0, scale = 0;
+      for (double x : v.thermal_diffusion) {
+        sum_t += x;
+        scale = std::max(scale, std::abs(x));
+      }
+      EXPECT_LT(std::abs(sum_t), 1e-13 * scale);
+      for (std::size_t j = 0; j < 3; ++j) {
+        double sum = 0, big = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+          sum += m.species[i].mass * v.mutual_diffusion[i * 3 + j];
+          big = std::max(big, std::abs(m.species[i].mass * v.mutual_diffusion[i * 3 + j]));
+        }
+        EXPECT_LT(std::abs(sum), 1e-13 * big);
+      }
+      EXPECT_GT(v.shear_viscosity, 0);
+      EXPECT_GT(v.thermal_conductivity, 0);
+    }
+  }
+}
+
+// The implicit derivatives of the HCS (16.11) against central differences of the solved HCS,
+// with the partial densities changed one at a time at fixed T (the reduced ζ* converted to the
+// fixed units: ζ ∝ ζ* n σ̄^{d−1}/√m̄).
+TEST(MixtureNavierStokes, CoolingStateSensitivityEqualsFiniteDifferences) {
+  for (int d : {2, 3}) {
+    gkt::Mixture base = gkt::make_mixture(d, {{1, 1, 0.3, ""}, {4, 1.6, 0.5, ""}, {0.4, 0.7, 0.2, ""}}, 0.7);
+    base.alpha = {0.9, 0.7, 0.6, 0.7, 0.5, 0.8, 0.6, 0.8, 0.95};
+    const auto state = gkt::mixture_cooling_state(base);
+    const auto sens = gkt::mixture_cooling_sensitivity(base, state);
+    auto at = [&](const std::vector<double>& n, std::vector<double>& gamma) {
+      gkt::Mixture m = base;
+      double total = 0, mbar = 0, sbar = 0;
+      for (double v : n) total += v;
+      for (std::size_t k = 0; k < 3; ++k) {
+        m.species[k].fraction = n[k] / total;
+        mbar += m.species[k].fraction * m.species[k].mass;
+        sbar += m.species[k].fraction * m.species[k].diameter;
+      }
+      double sum = 0;  // fractions summing to 1 within 1e-12
+      for (std::size_t k = 0; k + 1 < 3; ++k) sum += m.species[k].fraction;
+      m.species[2].fraction = 1 - sum;
+      const auto s = gkt::mixture_cooling_state(m);
+      gamma = s.temperature_ratio;
+      return s.cooling_rate * total * std::pow(sbar, d - 1) / std::sqrt(mbar);
+    };
+    const double mbar = base.mean_mass(), sbar = base.mean_diameter();
+    const double unit = std::pow(sbar, d - 1) / std::sqrt(mbar);
+    for (std::size_t j = 0; j < 3; ++j) {
+      const double h = 1e-5;
+      std::vector<double> up{0.3, 0.5, 0.2}, down = up, gu, gd;
+      up[j] += h;
+      down[j] -= h;
+      const double dzeta = (at(up, gu) - at(down, gd)) / (2 * h) / unit;
+      EXPECT_NEAR(sens.cooling_rate[j], dzeta, 1e-8) << d << " " << j;
+      for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_NEAR(sens.temperature_ratio[i * 3 + j], (std::log(gu[i]) - std::log(gd[i])) / (2 * h), 1e-8);
+    }
+  }
+}
+
+// Mass ratios 10^±3 with diameter ratios 0.1 and 10 (α = 0.5, d = 2, 3): every coefficient is
+// finite, η* and λ* positive, and orders 3 → 4 change η* by less than 1 %.
+TEST(MixtureNavierStokes, ExtremeRatiosStayFinite) {
+  for (int d : {2, 3})
+    for (double mass : {1e-3, 1e3})
+      for (double size : {0.1, 10.0}) {
+        const gkt::MixtureNavierStokes ns(binary(d, mass, size, 0.5, 0.5), 4);
+        const auto a = ns.coefficients(3), b = ns.coefficients(4);
+        for (const auto* v : {&a, &b}) {
+          EXPECT_TRUE(std::isfinite(v->shear_viscosity) && v->shear_viscosity > 0) << d << " " << mass << " " << size;
+          EXPECT_TRUE(std::isfinite(v->thermal_conductivity) && v->thermal_conductivity > 0);
+          for (double x : v->mutual_diffusion) EXPECT_TRUE(std::isfinite(x));
+          for (double x : v->thermal_diffusion) EXPECT_TRUE(std::isfinite(x));
+          for (double x : v->dufour) EXPECT_TRUE(std::isfinite(x));
+        }
+        EXPECT_LT(relative(b.shear_viscosity, a.shear_viscosity), 1e-2) << d << " " << mass << " " << size;
+      }
+}
+
+// Dense mixtures are refused with a one-line error naming the field.
+TEST(MixtureNavierStokes, DenseIsRefused) {
+  EXPECT_THROW(gkt::MixtureNavierStokes(gkt::make_mixture(3, {{1, 1, 0.5, ""}, {2, 1, 0.5, ""}}, 0.9, 0.2), 2),
+               std::invalid_argument);
+}
