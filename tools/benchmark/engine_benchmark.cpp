@@ -14,6 +14,8 @@
 #include "gkt/homogeneous_cooling_evolution.hpp"
 #include "gkt/linearized_operator.hpp"
 #include "gkt/mixture_cooling_state.hpp"
+#include "gkt/mixture_navier_stokes.hpp"
+#include "gkt/sonine_solution.hpp"
 #include "gkt/tracer_diffusion.hpp"
 #include "gkt/transport_model.hpp"
 #include "gkt/viscoelastic.hpp"
@@ -144,6 +146,31 @@ void TracerDiffusionEstimate(benchmark::State& state) {
   state.counters["error"] = error;
 }
 BENCHMARK(TracerDiffusionEstimate)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
+
+/// Dilute binary Navier–Stokes set (3D, m2/m1 = 2.5, σ2/σ1 = 1.5, x1 = 0.4, α = 0.8): arg 1 = 0 the
+/// cold call (Maxwellian HCS, its derivatives and the operator built to order N + 2, then orders N,
+/// N+1, N+2 solved — the estimate), 1 the warm solve of order N alone on a built operator.
+void MixtureNavierStokesSet(benchmark::State& state) {
+  const auto mixture = gkt::make_mixture(3, {{1.0, 1.0, 0.4, ""}, {2.5, 1.5, 0.6, ""}}, 0.8);
+  const int n = static_cast<int>(state.range(0));
+  double error = 0;
+  if (state.range(1) == 0) {
+    for (auto _ : state) {
+      const gkt::MixtureNavierStokes ns(mixture, n + 2);
+      const auto a = ns.coefficients(n), b = ns.coefficients(n + 1), c = ns.coefficients(n + 2);
+      error = gkt::estimate_truncation(Rational::from_double(a.thermal_conductivity),
+                                       Rational::from_double(b.thermal_conductivity),
+                                       Rational::from_double(c.thermal_conductivity))
+                  .error.to_double();
+      benchmark::DoNotOptimize(error);
+    }
+    state.counters["lambda_error"] = error;
+  } else {
+    const gkt::MixtureNavierStokes ns(mixture, n);
+    for (auto _ : state) benchmark::DoNotOptimize(ns.coefficients(n));
+  }
+}
+BENCHMARK(MixtureNavierStokesSet)->ArgsProduct({{1, 2, 4, 8}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 /// 10⁴-point α sweep (α from 0.5 to 1) of all smooth-inelastic coefficients at order 4 through
 /// the model interface (nonlinear HCS a2…a5 and η*, κ*, μ* with error estimates), matrices reused;
