@@ -202,6 +202,20 @@ TEST(CliGolden, MixtureTransport) {
   EXPECT_NE(same.out.find(",1.70666666666666"), std::string::npos) << same.out;
 }
 
+// Segregation criterion of an intruder and the HCS stability of a dilute binary (regression data,
+// tests/golden/README.md; the physics in tests/test_mixture_navier_stokes.cpp). Elastic rows: Λ is
+// linear in g* with slope −1 − D12-term/D11-term, so rows g* = 0 and −5 differ; γ = 1 exactly.
+TEST(CliGolden, MixtureSegregationAndStability) {
+  const CliRun r =
+      run_gkt("table " + scene_path("segregation.toml") + " --set 'alpha=[1, 0.8]' --set 'mass_1=[0.5, 4]'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("segregation.csv")));
+  const CliRun st = run_gkt("stability " + scene_path("mixture_transport.toml") +
+                            " --set 'alpha=[0.9, 0.6]' --set 'mass_2=[0.5, 4]' --set dimension=3 --set order=2");
+  ASSERT_EQ(st.status, 0) << st.err;
+  expect_csv_close(st.out, read_file(golden_path("mixture_stability.csv")));
+}
+
 // Tracer diffusion to a tolerance in Sonine order (regression data, tests/golden/README.md; the
 // physics in tests/test_mixture.cpp).
 TEST(CliGolden, TracerDiffusion) {
@@ -414,7 +428,9 @@ TEST(CliStability, GoldenAndErrors) {
   const CliRun bad = run_gkt("stability " + scene.string());
   fs::remove(scene);
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.err.find("model: \"hard-spheres\" has no stability analysis"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("model: \"hard-spheres\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\""),
+            std::string::npos)
+      << bad.err;
 }
 
 TEST(Cli, SetOverridesSceneKeys) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "gkt/hcs_stability.hpp"
 #include "gkt/mixture.hpp"
 #include "gkt/mixture_cooling_state.hpp"
 #include "gkt/mixture_navier_stokes.hpp"
@@ -223,4 +224,107 @@ TEST(MixtureNavierStokes, ExtremeRatiosStayFinite) {
 TEST(MixtureNavierStokes, DenseIsRefused) {
   EXPECT_THROW(gkt::MixtureNavierStokes(gkt::make_mixture(3, {{1, 1, 0.5, ""}, {2, 1, 0.5, ""}}, 0.9, 0.2), 2),
                std::invalid_argument);
+}
+
+// The thermal diffusion factor Λ_i of a binary (17.13): zero for identical species (nothing
+// segregates) at any α and gravity; at finite x_1 the per-particle solve equals Λ rebuilt from the
+// ordinary D_ij, D^T_i (two scalings of the system, the second singular at x_1 = 0); and x_1 → 0 is
+// continuous, the tracer limit of [garzo2007mixture]'s criterion.
+TEST(MixtureNavierStokes, ThermalDiffusionFactor) {
+  for (int d : {2, 3})
+    for (double alpha : {1.0, 0.7}) {
+      const auto same = gkt::MixtureNavierStokes(binary(d, 1, 1, 0.3, alpha), 3).coefficients(3);
+      for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_LT(std::abs(same.segregation[i]), 1e-12) << d << " " << alpha;
+        EXPECT_LT(std::abs(same.segregation_gravity[i]), 1e-12);
+      }
+      for (double mass : {0.2, 5.0}) {
+        const double x1 = 0.3;
+        const gkt::Mixture m = binary(d, mass, 1.7, x1, alpha);
+        const auto v = gkt::MixtureNavierStokes(m, 3).coefficients(3);
+        const double mbar = x1 + (1 - x1) * mass, m1 = 1 / mbar, m2 = mass / mbar;
+        const double d11 = m1 * m1 * x1 * v.mutual_diffusion[0], d12 = m1 * m2 * (1 - x1) * v.mutual_diffusion[1];
+        const double den = d11 - d12 * x1 / (1 - x1);
+        const double lambda0 = -1 - (d12 / (1 - x1) - v.thermal_diffusion[0]) / den;
+        const double lambda1 = -1 - d12 / (1 - x1) / den;
+        EXPECT_NEAR(v.segregation[0], lambda0, 1e-12 * (1 + std::abs(lambda0))) << d << " " << alpha << " " << mass;
+        EXPECT_NEAR(v.segregation_gravity[0], lambda1, 1e-12 * (1 + std::abs(lambda1)));
+        EXPECT_GT(std::abs(v.segregation[0]), 1e-3);
+        const auto tracer = gkt::MixtureNavierStokes(binary(d, mass, 1.7, 0.0, alpha), 3).coefficients(3);
+        const auto near = gkt::MixtureNavierStokes(binary(d, mass, 1.7, 1e-8, alpha), 3).coefficients(3);
+        EXPECT_TRUE(std::isfinite(tracer.segregation[0]));
+        EXPECT_LT(relative(near.segregation[0], tracer.segregation[0]), 1e-6);
+        EXPECT_LT(relative(near.segregation_gravity[0], tracer.segregation_gravity[0]), 1e-6);
+        EXPECT_TRUE(std::isnan(tracer.segregation[1]));  // the host is pure: no Λ
+      }
+    }
+}
+
+namespace {
+
+gkt::MixtureStabilityInput stability_input(const gkt::Mixture& m, const gkt::MixtureNavierStokes& ns,
+                                           const gkt::MixtureTransportValues& v) {
+  std::vector<double> x;
+  for (const auto& sp : m.species) x.push_back(sp.fraction);
+  return {m.dimension,
+          x,
+          ns.cooling_state().cooling_rate,
+          ns.cooling_sensitivity().cooling_rate,
+          v.shear_viscosity,
+          v.thermal_conductivity,
+          v.dufour,
+          v.drift,
+          v.thermal_drift};
+}
+
+int growing_modes(const Eigen::MatrixXcd& m) {
+  int n = 0;
+  for (const auto& e : m.eigenvalues()) n += e.real() > 0;
+  return n;
+}
+
+}  // namespace
+
+// HCS stability of a mixture (17.14): identical species give the one-component critical wave
+// numbers (14.1), (14.3) with the Maxwellian-HCS coefficients; the composition modes add nothing.
+TEST(MixtureNavierStokes, StabilityOfIdenticalSpeciesIsOneComponent) {
+  for (int d : {2, 3}) {
+    gkt::NavierStokesSolver one(d);
+    for (double alpha : {0.9, 0.6, 0.3}) {
+      const gkt::Mixture m = binary(d, 1, 1, 0.4, alpha);
+      const gkt::MixtureNavierStokes ns(m, 2);
+      const auto v = ns.coefficients(2);
+      const auto o = one.solve(Rational::from_double(alpha), 2, {1.0, 0.0, 0.0});
+      const double zeta = (d + 2) * (1 - alpha * alpha) / (4.0 * d);
+      const auto expected =
+          gkt::hcs_stability(d, zeta, o.shear_viscosity, o.thermal_conductivity, o.density_heat_coefficient);
+      const auto got = gkt::mixture_hcs_stability(stability_input(m, ns, v));
+      EXPECT_LT(relative(got.shear_wavenumber, expected.shear_wavenumber), 1e-12) << d << " " << alpha;
+      EXPECT_GT(expected.heat_wavenumber, 0.05);
+      EXPECT_LT(relative(got.heat_wavenumber, expected.heat_wavenumber), 1e-9) << d << " " << alpha;
+      EXPECT_LT(relative(got.critical_length, expected.critical_length), 1e-9);
+    }
+  }
+}
+
+// Unequal binary and ternary: at k∥c* a real eigenvalue of the full longitudinal matrix crosses
+// zero — one growing mode fewer just above it than just below (the root of det M found by
+// interpolation is checked against the eigenvalues themselves).
+TEST(MixtureNavierStokes, StabilityHeatModeCrossesZero) {
+  for (int d : {2, 3}) {
+    gkt::Mixture ternary = gkt::make_mixture(d, {{1, 1, 0.5, ""}, {1.5, 0.8, 0.3, ""}, {4, 2, 0.2, ""}}, 0.7);
+    for (const gkt::Mixture& m : {binary(d, 3, 1.5, 0.4, 0.6), binary(d, 0.2, 0.7, 0.5, 0.8), ternary}) {
+      const gkt::MixtureNavierStokes ns(m, 2);
+      const auto in = stability_input(m, ns, ns.coefficients(2));
+      const auto st = gkt::mixture_hcs_stability(in);
+      ASSERT_GT(st.heat_wavenumber, 0.05) << d << " " << m.size();
+      EXPECT_EQ(growing_modes(gkt::mixture_longitudinal_matrix(in, 0.99 * st.heat_wavenumber)),
+                growing_modes(gkt::mixture_longitudinal_matrix(in, 1.01 * st.heat_wavenumber)) + 1)
+          << d << " " << m.size();
+      double smallest = INFINITY;
+      for (const auto& e : gkt::mixture_longitudinal_matrix(in, st.heat_wavenumber).eigenvalues())
+        smallest = std::min(smallest, std::abs(e));
+      EXPECT_LT(smallest, 1e-8);
+    }
+  }
 }

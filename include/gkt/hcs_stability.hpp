@@ -7,6 +7,9 @@
 
 #include <array>
 #include <complex>
+#include <vector>
+
+#include <Eigen/Dense>
 
 namespace gkt {
 
@@ -45,5 +48,27 @@ std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimen
                                                                        double thermal_conductivity,
                                                                        double density_heat_coefficient, double k,
                                                                        const StabilityDensity& dense = {});
+
+/// What the longitudinal modes of a dilute mixture need (reduced as in docs/conventions.md
+/// "Mixtures"; theory.md §17.7).
+struct MixtureStabilityInput {
+  int dimension = 3;
+  std::vector<double> fraction;            ///< x_i
+  double cooling_rate = 0;                 ///< ζ*
+  std::vector<double> cooling_derivative;  ///< n (∂ζ/∂n_j)/ν0 (MixtureCoolingSensitivity::cooling_rate)
+  double shear_viscosity = 0;              ///< η*
+  double thermal_conductivity = 0;         ///< λ*
+  std::vector<double> dufour;              ///< D''_j*
+  std::vector<double> drift;               ///< w_i = D0 Σ_j drift[i·s + j] ∇ln n_j + … (s × s)
+  std::vector<double> thermal_drift;       ///< … + D0 thermal_drift[i] ∇ln T
+};
+
+/// Returns the (s+2)×(s+2) matrix of the longitudinal modes (ρ_1 … ρ_s, θ, w∥), ρ_i = δn_i/n_i:
+/// ∂_τ X = M X at k* (theory.md (17.14)).
+Eigen::MatrixXcd mixture_longitudinal_matrix(const MixtureStabilityInput& in, double k);
+
+/// Returns the critical values of a dilute mixture's HCS: k⊥c* = √(ζ*/η*) and k∥c*, the largest k*
+/// at which det M(k*) of (17.14) vanishes (a real eigenvalue crosses zero; 0 if none).
+HcsStability mixture_hcs_stability(const MixtureStabilityInput& in);
 
 }  // namespace gkt

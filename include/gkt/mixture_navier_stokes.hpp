@@ -24,8 +24,15 @@ struct MixtureTransportValues {
   std::vector<double> thermal_diffusion;   ///< D^T_i*
   std::vector<double> pressure_diffusion;  ///< D^p_i* = Σ_j m_i m_j n_j D_ij/ρ² (j_i ∋ −ρ D^p_i ∇ln p; (17.8))
   std::vector<double> dufour;              ///< D''_j*: q = −λ∇T − T² Σ_j D''_j ∇ln n_j
-  double shear_viscosity = 0;              ///< η*
-  double thermal_conductivity = 0;         ///< λ*
+  /// Per-particle drift of species i relative to u, w_i = j_i/(m_i n_i) = D0 Σ_j drift[i·s + j] ∇ln n_j +
+  /// D0 thermal_drift[i] ∇ln T, finite also for a tracer i (theory.md (17.13)).
+  std::vector<double> drift, thermal_drift;
+  /// Λ_i = segregation[i] + g* segregation_gravity[i] (binaries only, else empty): the thermal
+  /// diffusion factor of species i, ∂ln(n_i/n) = −Λ_i ∂ln T in a steady state with j_i = 0 and
+  /// ∂p = −ρg, g* = ρg/(n ∂T) (theory.md (17.13)); nan if the other species is absent.
+  std::vector<double> segregation, segregation_gravity;
+  double shear_viscosity = 0;       ///< η*
+  double thermal_conductivity = 0;  ///< λ*
 };
 
 /// The linearised Boltzmann operator of a dilute mixture in Sonine polynomials, built once (exact
@@ -43,18 +50,27 @@ class MixtureNavierStokes {
   [[nodiscard]] int max_order() const { return max_order_; }
   /// Returns the Maxwellian HCS the coefficients are built about.
   [[nodiscard]] const MixtureCoolingState& cooling_state() const { return state_; }
+  /// Returns the HCS density derivatives used in the sources (theory.md §16.6).
+  [[nodiscard]] const MixtureCoolingSensitivity& cooling_sensitivity() const { return sensitivity_; }
 
  private:
+  /// Fills out.drift, out.thermal_drift and, for a binary, out.segregation* from the vector modes
+  /// solved per particle (theory.md (17.13)).
+  void species_drift(int order, const Eigen::MatrixXd& per_particle, MixtureTransportValues& out) const;
+
   Mixture mixture_;
   MixtureCoolingState state_;
   MixtureCoolingSensitivity sensitivity_;
   int max_order_;
   std::size_t s_;
-  double zeta_ = 0;                                    // ζ in the units n = σ̄ = m̄ = √(2T/m̄) = 1
-  std::vector<double> theta_, mass_, fraction_;        // θ_k = m_k/γ_k, m_k/m̄, x_k
-  Eigen::MatrixXd vector_operator_, tensor_operator_;  // rows (i, p), columns (k, q); index i·n + p
-  Eigen::MatrixXd vector_d_, vector_m_, tensor_d_;     // one-species ζ pieces D(p, q), M(p, q)
-  Eigen::VectorXd vector_flux_, tensor_flux_;          // ⟨x² S_q⟩ of the two modes
+  double zeta_ = 0;                              // ζ in the units n = σ̄ = m̄ = √(2T/m̄) = 1
+  std::vector<double> theta_, mass_, fraction_;  // θ_k = m_k/γ_k, m_k/m̄, x_k
+  // Rows (i, p), columns (k, q), index i·n + p. The vector operator is kept in two parts: the
+  // species-diagonal one (X_i against f_j, weight x_j) and the cross one (f_i against X_j) without its
+  // weight, x_i per particle of the unknown's species or x_j per particle of the row's (17.4), (17.13).
+  Eigen::MatrixXd vector_self_, vector_cross_, tensor_operator_;
+  Eigen::MatrixXd vector_d_, vector_m_, tensor_d_;  // one-species ζ pieces D(p, q), M(p, q)
+  Eigen::VectorXd vector_flux_, tensor_flux_;       // ⟨x² S_q⟩ of the two modes
 };
 
 }  // namespace gkt

@@ -50,4 +50,67 @@ HcsStability hcs_stability(int dimension, double cooling_rate, double shear_visc
   return s;
 }
 
+Eigen::MatrixXcd mixture_longitudinal_matrix(const MixtureStabilityInput& in, double k) {
+  const auto s = static_cast<Eigen::Index>(in.fraction.size());
+  const double d = in.dimension, z = in.cooling_rate, k2 = k * k;
+  const double to_heat = (d + 2) / (2 * (d - 1));  // K = to_heat λ*, U_j = to_heat D''_j* (14.2)
+  const double nu_d0 = d / (d + 2);                // ν0 D0/v̄²
+  const std::complex<double> i(0, 1);
+  Eigen::MatrixXcd m = Eigen::MatrixXcd::Zero(s + 2, s + 2);
+  const Eigen::Index t = s, w = s + 1;
+  for (Eigen::Index a = 0; a < s; ++a) {
+    const auto A = static_cast<std::size_t>(a);
+    for (Eigen::Index b = 0; b < s; ++b) {
+      const auto B = static_cast<std::size_t>(b);
+      m(a, b) = k2 * nu_d0 * in.drift[A * in.fraction.size() + B];  // −∇·(n_a w_a)/n_a
+      m(t, b) -= k2 * nu_d0 * in.fraction[A] * in.drift[A * in.fraction.size() + B];
+    }
+    m(a, t) = k2 * nu_d0 * in.thermal_drift[A];
+    m(a, w) = -i * k;
+    m(t, t) -= k2 * nu_d0 * in.fraction[A] * in.thermal_drift[A];
+    m(t, a) -= in.fraction[A] * in.cooling_derivative[A] + to_heat * in.dufour[A] * k2;
+    m(w, a) = -i * k / 2.0 * in.fraction[A];
+  }
+  m(t, t) -= z / 2 + to_heat * in.thermal_conductivity * k2;
+  m(t, w) = -2 / d * i * k;
+  m(w, t) = -i * k / 2.0;
+  m(w, w) = z / 2 - (d - 1) / d * in.shear_viscosity * k2;
+  return m;
+}
+
+HcsStability mixture_hcs_stability(const MixtureStabilityInput& in) {
+  if (!(in.shear_viscosity > 0) || !(in.thermal_conductivity > 0))
+    throw std::invalid_argument("hcs_stability: transport coefficients must be positive");
+  HcsStability out;
+  out.shear_wavenumber = shear_critical_wavenumber(in.cooling_rate, in.shear_viscosity);
+  // det M is a real polynomial of degree s + 2 in z = k²: interpolate it at z = 0 … s+2, drop the
+  // powers of z that vanish identically (conservation), take the largest positive real root.
+  const auto degree = static_cast<Eigen::Index>(in.fraction.size()) + 2;
+  Eigen::MatrixXd vandermonde(degree + 1, degree + 1);
+  Eigen::VectorXd values(degree + 1);
+  for (Eigen::Index r = 0; r <= degree; ++r) {
+    const double z = static_cast<double>(r);
+    for (Eigen::Index c = 0; c <= degree; ++c) vandermonde(r, c) = std::pow(z, static_cast<double>(c));
+    values(r) = mixture_longitudinal_matrix(in, std::sqrt(z)).determinant().real();
+  }
+  const Eigen::VectorXd coefficients = vandermonde.fullPivLu().solve(values);
+  const double scale = coefficients.cwiseAbs().maxCoeff();
+  Eigen::Index low = 0, high = degree;
+  while (low <= degree && std::abs(coefficients(low)) <= 1e-10 * scale) ++low;
+  while (high > low && std::abs(coefficients(high)) <= 1e-10 * scale) --high;
+  double largest = 0;
+  if (high > low) {
+    const Eigen::Index n = high - low;  // companion matrix of Σ c_{low+j} z^j
+    Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(n, n);
+    for (Eigen::Index j = 1; j < n; ++j) companion(j, j - 1) = 1;
+    for (Eigen::Index j = 0; j < n; ++j) companion(j, n - 1) = -coefficients(low + j) / coefficients(high);
+    const Eigen::VectorXcd roots = companion.eigenvalues();
+    for (const auto& r : roots)
+      if (r.real() > 0 && std::abs(r.imag()) <= 1e-9 * std::abs(r)) largest = std::max(largest, r.real());
+  }
+  out.heat_wavenumber = std::sqrt(largest);
+  out.critical_length = critical_length(std::max(out.shear_wavenumber, out.heat_wavenumber));
+  return out;
+}
+
 }  // namespace gkt

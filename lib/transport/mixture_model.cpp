@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "gkt/hcs_stability.hpp"
 #include "gkt/mixture.hpp"
 #include "gkt/mixture_cooling_state.hpp"
 #include "gkt/mixture_navier_stokes.hpp"
@@ -62,29 +63,33 @@ class MixtureModel final : public TransportModel {
     return n;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    std::vector<ParameterSpec> p{{"dimension",
-                                  ParameterSpec::Kind::integer,
-                                  Rational(2),
-                                  Rational(3),
-                                  true,
-                                  true,
-                                  Rational(3),
-                                  "spatial dimension",
-                                  {}},
-                                 {"species",
-                                  ParameterSpec::Kind::integer,
-                                  Rational(2),
-                                  Rational(kMaxSpecies),
-                                  true,
-                                  true,
-                                  Rational(2),
-                                  "number of species (set by the [[species]] tables)",
-                                  {}},
-                                 real("packing_fraction", Rational(0), true, max_packing_fraction(2), false,
-                                      Rational(0), "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
-                                 real("alpha", Rational(0), false, Rational(1), true, Rational(1),
-                                      "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
-                                 hcs_spec()};
+    std::vector<ParameterSpec> p{
+        {"dimension",
+         ParameterSpec::Kind::integer,
+         Rational(2),
+         Rational(3),
+         true,
+         true,
+         Rational(3),
+         "spatial dimension",
+         {}},
+        {"species",
+         ParameterSpec::Kind::integer,
+         Rational(2),
+         Rational(kMaxSpecies),
+         true,
+         true,
+         Rational(2),
+         "number of species (set by the [[species]] tables)",
+         {}},
+        real("packing_fraction", Rational(0), true, max_packing_fraction(2), false, Rational(0),
+             "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
+        real("alpha", Rational(0), false, Rational(1), true, Rational(1),
+             "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
+        real("reduced_gravity", Rational(-1000000L), true, Rational(1000000L), true, Rational(0),
+             "g* = rho g/(n dT/dz) of the segregation criterion thermal_diffusion_factor_i "
+             "(dp/dz = -rho g)"),
+        hcs_spec()};
     for (int i = 1; i <= kMaxSpecies; ++i) {
       p.push_back(real(index_name("mass", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
                        "mass of species i (any unit)"));
@@ -110,6 +115,7 @@ class MixtureModel final : public TransportModel {
     std::vector<CoefficientValue> out;
     std::optional<MixtureCoolingState> chosen, alternative;  // solved once, if an HCS value is asked for
     TransportCache transport;                                // built once, if a transport value is asked for
+    transport.gravity = point.number("reduced_gravity", Rational(0)).to_double();
     for (const auto& c : coefficients) {
       int i = 0, kind = c == "cooling_rate" ? 0 : -1;
       for (int k = 1; k <= s; ++k) {
@@ -208,14 +214,28 @@ class MixtureModel final : public TransportModel {
   /// The mixture's Navier–Stokes operator for one parameter point, grown as orders are asked for,
   /// and the coefficients of every order solved so far.
   struct TransportCache {
+    struct AtOrder {
+      MixtureTransportValues values;
+      HcsStability stability;  ///< critical wave numbers from this order's coefficients (nan if η* or λ* ≤ 0)
+    };
     std::optional<MixtureNavierStokes> operators;
-    std::map<int, MixtureTransportValues> by_order;
+    std::map<int, AtOrder> by_order;
+    double gravity = 0;  ///< g* of the segregation criterion
 
-    const MixtureTransportValues& at(const Mixture& m, int n) {
+    const AtOrder& at(const Mixture& m, int n) {
       if (const auto it = by_order.find(n); it != by_order.end()) return it->second;
       if (!operators || operators->max_order() < n)
         operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)));
-      return by_order.emplace(n, operators->coefficients(n)).first->second;
+      AtOrder a{operators->coefficients(n), {NAN, NAN, NAN}};
+      const MixtureTransportValues& v = a.values;
+      if (v.shear_viscosity > 0 && v.thermal_conductivity > 0) {
+        std::vector<double> x;
+        for (const auto& sp : m.species) x.push_back(sp.fraction);
+        a.stability = mixture_hcs_stability({m.dimension, x, operators->cooling_state().cooling_rate,
+                                             operators->cooling_sensitivity().cooling_rate, v.shear_viscosity,
+                                             v.thermal_conductivity, v.dufour, v.drift, v.thermal_drift});
+      }
+      return by_order.emplace(n, std::move(a)).first->second;
     }
 
     /// Returns the coefficient `name` at the requested order or tolerance, its error from the next
@@ -225,7 +245,11 @@ class MixtureModel final : public TransportModel {
         throw std::invalid_argument("coefficients: " + name +
                                     " is implemented for the dilute mixture only (packing_fraction = 0)");
       const auto s = m.size();
-      auto pick = [&](const MixtureTransportValues& v) {
+      auto pick = [&](const AtOrder& at_order) {
+        const MixtureTransportValues& v = at_order.values;
+        if (name == "critical_wavenumber_shear") return at_order.stability.shear_wavenumber;
+        if (name == "critical_wavenumber_heat") return at_order.stability.heat_wavenumber;
+        if (name == "critical_length") return at_order.stability.critical_length;
         if (name == "shear_viscosity") return v.shear_viscosity;
         if (name == "thermal_conductivity") return v.thermal_conductivity;
         for (std::size_t i = 0; i < s; ++i) {
@@ -233,6 +257,8 @@ class MixtureModel final : public TransportModel {
           if (name == index_name("thermal_diffusion", a)) return v.thermal_diffusion[i];
           if (name == index_name("pressure_diffusion", a)) return v.pressure_diffusion[i];
           if (name == index_name("dufour", a)) return v.dufour[i];
+          if (name == index_name("thermal_diffusion_factor", a))
+            return v.segregation.empty() ? NAN : v.segregation[i] + gravity * v.segregation_gravity[i];
           for (std::size_t j = 0; j < s; ++j)
             if (name == index_name("mutual_diffusion", a, static_cast<int>(j) + 1))
               return v.mutual_diffusion[i * s + j];
@@ -259,6 +285,10 @@ class MixtureModel final : public TransportModel {
       for (int j = 1; j <= s; ++j) n.push_back(index_name("mutual_diffusion", i, j));
     for (const char* base : {"thermal_diffusion", "pressure_diffusion", "dufour"})
       for (int i = 1; i <= s; ++i) n.push_back(index_name(base, i));
+    if (s == 2)
+      for (int i = 1; i <= s; ++i) n.push_back(index_name("thermal_diffusion_factor", i));
+    for (const char* c : {"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"})
+      n.emplace_back(c);
     return n;
   }
 

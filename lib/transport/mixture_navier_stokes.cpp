@@ -49,10 +49,11 @@ Eigen::VectorXd to_vector(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
 
-/// Adds the pair (i, j)'s part of −∫ψ_ip · (J_ij[X_i, f_j] + J_ij[f_i, X_j]) to `op` (theory.md
-/// (17.4)): the loss and gain moments of the engine with the unknown at v1 (X_i) and at v2 (X_j).
-void add_pair(Eigen::MatrixXd& op, const CollisionPair& pair, const Rational& alpha, int rank, int n_max, std::size_t i,
-              std::size_t j, double weight_self, double weight_other) {
+/// Adds the pair (i, j)'s part of −∫ψ_ip · (J_ij[X_i, f_j] + J_ij[f_i, X_j]) (theory.md (17.4)): the
+/// loss and gain moments of the engine with the unknown at v1 (X_i, into `self`) and at v2 (X_j,
+/// into `cross`), times the given weights.
+void add_pair(Eigen::MatrixXd& self, Eigen::MatrixXd& cross, const CollisionPair& pair, const Rational& alpha, int rank,
+              int n_max, std::size_t i, std::size_t j, double weight_self, double weight_other) {
   const auto block = static_cast<Eigen::Index>(n_max + 1);
   const auto gain_self = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1_post, rank, n_max);
   const auto loss_self = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1, rank, n_max);
@@ -61,8 +62,8 @@ void add_pair(Eigen::MatrixXd& op, const CollisionPair& pair, const Rational& al
   const auto I = static_cast<Eigen::Index>(i) * block, J = static_cast<Eigen::Index>(j) * block;
   for (int p = 0; p <= n_max; ++p)
     for (int q = 0; q <= n_max; ++q) {
-      op(I + p, I + q) -= weight_self * (gain_self(p, q) - loss_self(p, q)).to_double();
-      op(I + p, J + q) -= weight_other * (gain_other(p, q) - loss_other(p, q)).to_double();
+      self(I + p, I + q) -= weight_self * (gain_self(p, q) - loss_self(p, q)).to_double();
+      cross(I + p, J + q) -= weight_other * (gain_other(p, q) - loss_other(p, q)).to_double();
     }
 }
 
@@ -97,7 +98,8 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
   zeta_ = state_.cooling_rate * 4 * std::sqrt(2.0) * c_d / (d + 2);  // ζ = ζ* ν0, ν0 = 4√2 c_d/(d+2)
   const int nv = max_order + 1, nt = max_order;
   const auto S = static_cast<Eigen::Index>(s_);
-  vector_operator_ = Eigen::MatrixXd::Zero(S * nv, S * nv);
+  vector_self_ = Eigen::MatrixXd::Zero(S * nv, S * nv);
+  vector_cross_ = vector_self_;
   tensor_operator_ = Eigen::MatrixXd::Zero(S * nt, S * nt);
   for (std::size_t i = 0; i < s_; ++i)
     for (std::size_t j = 0; j < s_; ++j) {
@@ -111,8 +113,9 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
       const Rational alpha = Rational::from_double(mixture.restitution(i, j));
       const double sigma = 0.5 * (mixture.species[i].diameter + mixture.species[j].diameter) / mixture.mean_diameter();
       const double rate = std::pow(sigma, d - 1) * c_d * std::sqrt(1 / theta_[i] + 1 / theta_[j]);
-      add_pair(vector_operator_, pair, alpha, 1, nv - 1, i, j, rate * fraction_[j], rate * fraction_[i]);
-      add_pair(tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j], rate * fraction_[i]);
+      add_pair(vector_self_, vector_cross_, pair, alpha, 1, nv - 1, i, j, rate * fraction_[j], rate);
+      add_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
+               rate * fraction_[i]);
     }
   const auto vp = detail::rounded(detail::vector_pieces(d, nv - 1, 0));
   const auto tp = detail::rounded(detail::tensor_pieces(d, nt - 1, 0));
@@ -137,7 +140,11 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
 
   // Vector modes (theory.md (17.5)–(17.6)): unknowns φ̃_kq, X_k = (f_k/n_k) Σ_q φ̃_kq c_k S_q(θ_k V²).
   const int n = order + 1;
-  const Eigen::MatrixXd op = leading_blocks(vector_operator_, s, max_order_ + 1, n);
+  const Eigen::MatrixXd self = leading_blocks(vector_self_, s, max_order_ + 1, n);
+  const Eigen::MatrixXd cross = leading_blocks(vector_cross_, s, max_order_ + 1, n);
+  Eigen::VectorXd weight(S * n);  // x_i on the rows (or columns) of species i
+  for (Eigen::Index i = 0; i < S; ++i) weight.segment(i * n, n).setConstant(fraction_[static_cast<std::size_t>(i)]);
+  const Eigen::MatrixXd op = self + weight.asDiagonal() * cross;
   const Eigen::MatrixXd dv = vector_d_.topLeftCorner(n, n), mv = vector_m_.topLeftCorner(n, n);
   Eigen::MatrixXd ka = op, kb = op, mass_block = Eigen::MatrixXd::Zero(S * n, S * n);
   for (Eigen::Index i = 0; i < S; ++i) {
@@ -204,6 +211,8 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
     for (std::size_t j = 0; j < s; ++j)
       out.pressure_diffusion[i] += mass_[i] * mass_[j] * fraction_[j] * out.mutual_diffusion[i * s + j];
 
+  species_drift(order, self + cross * weight.asDiagonal(), out);
+
   // Shear mode: X_k = (f_k/n_k) Σ_q φ̃_kq Y_2(c_k) S_q, source −2 x_i ((d−1)/d) ⟨x² S_p⟩ (17.11).
   const int nt = order;
   Eigen::MatrixXd kc = leading_blocks(tensor_operator_, s, max_order_, nt);
@@ -220,6 +229,77 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
     eta -= mass_[i] / theta_[i] * ft.dot(c.segment(static_cast<Eigen::Index>(i) * nt, nt)) / (d * (d + 2.0));
   out.shear_viscosity = eta / eta0;
   return out;
+}
+
+void MixtureNavierStokes::species_drift(int order, const Eigen::MatrixXd& per_particle,
+                                        MixtureTransportValues& out) const {
+  // (17.13): per particle of the row's species — rows divided by x_i, unknowns φ_i = φ̃_i/x_i, so the
+  // operator's cross part carries x_j — every quantity stays finite as a species becomes a tracer.
+  // Heat mode 𝒜 and the ∇ln n_j modes ℬ^j (coefficient of ∇ln n_j, hence the factor x_j).
+  const int d = mixture_.dimension;
+  const int n = order + 1;
+  const auto S = static_cast<Eigen::Index>(s_);
+  const Eigen::MatrixXd dv = vector_d_.topLeftCorner(n, n), mv = vector_m_.topLeftCorner(n, n);
+  const double dzeta_unit = 4 * std::sqrt(2.0) * geometric_factor(d) / (d + 2);
+  Eigen::MatrixXd ka = per_particle, kb = per_particle;
+  for (Eigen::Index i = 0; i < S; ++i) {
+    ka.block(i * n, i * n, n, n) += zeta_ * (dv - 0.5 * mv);
+    kb.block(i * n, i * n, n, n) += zeta_ * dv;
+  }
+  const auto major =
+      static_cast<Eigen::Index>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
+  for (Eigen::MatrixXd* k : {&ka, &kb}) {
+    k->row(major * n).setZero();
+    for (Eigen::Index j = 0; j < S; ++j) {
+      const auto J = static_cast<std::size_t>(j);
+      (*k)(major * n, j * n) = fraction_[J] * mass_[J] / std::sqrt(theta_[J]);
+    }
+  }
+  Eigen::VectorXd sa(S * n);
+  for (std::size_t i = 0; i < s_; ++i)
+    sa.segment(static_cast<Eigen::Index>(i) * n, n) =
+        -1 / std::sqrt(theta_[i]) * ((1 - theta_[i]) * mv.col(0) - mv.col(1));
+  sa(major * n) = 0;
+  const Eigen::VectorXd a = ka.partialPivLu().solve(sa);
+  const auto lu = kb.partialPivLu();
+  // Specific fluxes ∫V·X_i/x_i = θ_i^{−1/2} M(0,0) φ_i0: heat[i] (∇ln T), density[i][j] (∇ln n_j).
+  std::vector<double> heat(s_);
+  std::vector<std::vector<double>> density(s_, std::vector<double>(s_));
+  for (std::size_t i = 0; i < s_; ++i) heat[i] = a(static_cast<Eigen::Index>(i) * n) / std::sqrt(theta_[i]);
+  for (std::size_t j = 0; j < s_; ++j) {
+    Eigen::VectorXd sb(S * n);
+    for (std::size_t i = 0; i < s_; ++i) {
+      const double g = sensitivity_.temperature_ratio[i * s_ + j];
+      sb.segment(static_cast<Eigen::Index>(i) * n, n) =
+          -1 / std::sqrt(theta_[i]) *
+          ((i == j ? 1.0 : 0.0) * mv.col(0) + fraction_[j] * (g * (mv.col(0) - mv.col(1)) - theta_[i] * mv.col(0)));
+    }
+    const double dzeta = sensitivity_.cooling_rate[j] * dzeta_unit * fraction_[j];
+    for (Eigen::Index i = 0; i < S; ++i) sb.segment(i * n, n) += dzeta * (mv * a.segment(i * n, n));
+    sb(major * n) = 0;
+    const Eigen::VectorXd b = lu.solve(sb);
+    for (std::size_t i = 0; i < s_; ++i) density[i][j] = b(static_cast<Eigen::Index>(i) * n) / std::sqrt(theta_[i]);
+  }
+  // w_i = (1/d) M(0,0) × the specific fluxes, in units of D0 (d/(4√2 c_d) in the units of (16.11)).
+  const double to_drift = vector_m_(0, 0) / d * 4 * std::sqrt(2.0) * geometric_factor(d) / d;
+  out.drift.assign(s_ * s_, 0.0);
+  out.thermal_drift.assign(s_, 0.0);
+  for (std::size_t i = 0; i < s_; ++i) {
+    out.thermal_drift[i] = to_drift * heat[i];
+    for (std::size_t j = 0; j < s_; ++j) out.drift[i * s_ + j] = to_drift * density[i][j];
+  }
+  if (s_ != 2) return;
+  // j_i = 0: Σ_j density[i][j] ∂ln n_j + heat[i] ∂ln T = 0; ∂p = −ρg (p = nT):
+  // x_i ∂ln n_i + x_k ∂ln n_k = −(1 + g*) ∂ln T; ∂ln(n_i/n) = ∂ln n_i + (1 + g*) ∂ln T = −Λ_i ∂ln T.
+  out.segregation.assign(s_, std::nan(""));
+  out.segregation_gravity = out.segregation;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const std::size_t k = 1 - i;
+    if (fraction_[k] == 0) continue;
+    const double denominator = density[i][i] - density[i][k] * fraction_[i] / fraction_[k];
+    out.segregation[i] = -1 - (density[i][k] / fraction_[k] - heat[i]) / denominator;
+    out.segregation_gravity[i] = -1 - density[i][k] / fraction_[k] / denominator;
+  }
 }
 
 }  // namespace gkt

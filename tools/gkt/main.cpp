@@ -29,7 +29,8 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
   if (stability && !scene.coefficients_given) {
     const auto names = gkt::make_transport_model(scene.model)->coefficient_names();
     if (std::find(names.begin(), names.end(), kStabilityCoefficients.front()) == names.end())
-      throw std::invalid_argument("model: \"" + scene.model + "\" has no stability analysis; use \"smooth-inelastic\"");
+      throw std::invalid_argument("model: \"" + scene.model +
+                                  "\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\"");
     scene.coefficients = kStabilityCoefficients;
   }
   std::vector<std::string> warnings;
@@ -87,7 +88,7 @@ int main(int argc, char** argv) {
       "stability", "Critical wave numbers and system size of the homogeneous cooling state (like table)");
   std::string stability_scene, stability_format = "csv", stability_output;
   std::vector<std::string> stability_overrides;
-  stability->add_option("scene", stability_scene, "Scene file (TOML), model smooth-inelastic")->required();
+  stability->add_option("scene", stability_scene, "Scene file (TOML), model smooth-inelastic or mixture")->required();
   stability->add_option("--set", stability_overrides, "Override a scene key: KEY=VALUE; repeatable");
   stability->add_option("--format", stability_format, "Output format")->check(CLI::IsMember({"csv", "json"}));
   stability->add_option("--output", stability_output, "Output file (written atomically); default: standard output");
