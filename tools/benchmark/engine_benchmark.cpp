@@ -6,6 +6,8 @@
 // actual truncation errors, not estimates.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+
 #include <map>
 
 #include "gkt/enskog_closed_form.hpp"
@@ -15,6 +17,7 @@
 #include "gkt/linearized_operator.hpp"
 #include "gkt/mixture_cooling_state.hpp"
 #include "gkt/mixture_navier_stokes.hpp"
+#include "gkt/mixture_transport_table.hpp"
 #include "gkt/sonine_solution.hpp"
 #include "gkt/tracer_diffusion.hpp"
 #include "gkt/transport_model.hpp"
@@ -171,6 +174,24 @@ void MixtureNavierStokesSet(benchmark::State& state) {
   }
 }
 BENCHMARK(MixtureNavierStokesSet)->ArgsProduct({{1, 2, 4, 8}, {0, 1}})->Unit(benchmark::kMillisecond);
+
+/// The per-state binary table (theory.md §17.8): arg 0 = Sonine order of the table; the timed loop
+/// evaluates the full physical set at a new (x_1, n, T) each call (the build is outside the loop;
+/// its time and the measured interpolation error are reported as counters).
+void BinaryTransportTableEvaluate(benchmark::State& state) {
+  const auto mixture = gkt::make_mixture(3, {{1.0, 1.0, 0.4, ""}, {2.5, 1.5, 0.6, ""}}, 0.8);
+  const auto start = std::chrono::steady_clock::now();
+  const gkt::BinaryTransportTable table(mixture, static_cast<int>(state.range(0)));
+  const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  double x = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(table.evaluate(x, 1.0 + x, 2.0 - x));
+    x = x < 0.9 ? x + 1e-3 : 0.1;
+  }
+  state.counters["build_s"] = build;
+  state.counters["interpolation_error"] = table.interpolation_error();
+}
+BENCHMARK(BinaryTransportTableEvaluate)->Arg(1)->Arg(4)->Unit(benchmark::kNanosecond);
 
 /// 10⁴-point α sweep (α from 0.5 to 1) of all smooth-inelastic coefficients at order 4 through
 /// the model interface (nonlinear HCS a2…a5 and η*, κ*, μ* with error estimates), matrices reused;
