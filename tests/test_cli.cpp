@@ -167,7 +167,7 @@ TEST(CliGolden, EnskogFirstSonine) {
 
 // Binary mixture HCS through [[species]] tables, sweeping a species' mass (regression data,
 // tests/golden/README.md); the physics is checked in tests/test_mixture.cpp. The a2_species error
-// columns are nan: a2,i has no higher approximation to be compared with yet.
+// columns are the difference from the linear scheme with a_2, a_3 (hcs_order + 1).
 TEST(CliGolden, MixtureHcs) {
   const CliRun r = run_gkt("table " + scene_path("mixture_hcs.toml"));
   ASSERT_EQ(r.status, 0) << r.err;
@@ -179,6 +179,12 @@ TEST(CliGolden, MixtureHcs) {
                               " --set hcs=maxwellian --set 'coefficients=[\"cooling_rate\", \"temperature_ratio_1\"]'");
   ASSERT_EQ(same.status, 0) << same.err;
   EXPECT_NE(same.out.find("\n0.26666666666666666,1,"), std::string::npos) << same.out;
+  // hcs_order = 3 adds the a3_species_i columns; a2 moves from its first-Sonine value.
+  const CliRun third =
+      run_gkt("table " + scene_path("mixture_hcs.toml") +
+              " --set hcs_order=3 --set 'mass_2=[2]' --set 'alpha=[0.7]' --set 'packing_fraction=[0]'");
+  ASSERT_EQ(third.status, 0) << third.err;
+  EXPECT_NE(third.out.find("a3_species_1,a3_species_2"), std::string::npos) << third.out;
 }
 
 // Navier–Stokes coefficients of dilute binary and ternary mixtures with their error estimates
@@ -585,7 +591,12 @@ INSTANTIATE_TEST_SUITE_P(
             "--set 'packing_fraction=[0, 0.2]' --set 'coefficients=[\"cooling_rate\", \"mutual_diffusion_1_2\"]'",
             "coefficients: mutual_diffusion_1_2 is implemented for the dilute mixture only (packing_fraction = 0)"},
         BadInput{"mixture_transport_order", kMixture + "fraction = 0.5\n", "--set order=13",
-                 "order: must be an integer in [1, 12]"}),
+                 "order: must be an integer in [1, 12]"},
+        BadInput{"mixture_hcs_order", kMixture + "fraction = 0.5\n", "--set hcs_order=6",
+                 "hcs_order: must be an integer in [2, 5]"},
+        BadInput{"mixture_hcs_order_nonlinear", kMixture + "fraction = 0.5\n",
+                 "--set hcs_order=3 --set hcs=nonlinear --set 'coefficients=[\"a3_species_1\"]'",
+                 "hcs_order: the nonlinear mixture scheme keeps a2 only (hcs_order = 2)"}),
     [](const auto& info) { return info.param.label; });
 
 // Without a subcommand the program is misused: exit 2 and a one-line error.

@@ -32,17 +32,20 @@ enum class MixtureHcsScheme {
 
 /// The mixture HCS.
 struct MixtureCoolingState {
-  std::vector<double> temperature_ratio;  ///< γ_i = T_i/T
-  std::vector<double> a2;                 ///< a2,i (zero in the Maxwellian scheme)
-  double cooling_rate = 0;                ///< the common ζ* = ζ/ν0
-  std::vector<double> chi;                ///< χ_ij at i·s + j
-  int iterations = 0;                     ///< outer iterations (linear scheme) or Gauss–Seidel sweeps
-  bool solved = false;                    ///< equal rates to 1e-12 (and, linear, a fixed point to 1e-12)
+  std::vector<double> temperature_ratio;       ///< γ_i = T_i/T
+  std::vector<double> a2;                      ///< a2,i (zero in the Maxwellian scheme)
+  std::vector<std::vector<double>> cumulants;  ///< a_k,i at [i][k], k = 0 … K (a_0 = 1, a_1 = 0)
+  double cooling_rate = 0;                     ///< the common ζ* = ζ/ν0
+  std::vector<double> chi;                     ///< χ_ij at i·s + j
+  int iterations = 0;                          ///< outer iterations (linear scheme) or Gauss–Seidel sweeps
+  bool solved = false;                         ///< equal rates to 1e-12 (and, linear, a fixed point to 1e-12)
 };
 
-/// Returns the HCS of the mixture (validated first; throws std::invalid_argument on bad input).
+/// Returns the HCS of the mixture (validated first; throws std::invalid_argument on bad input). The
+/// linear scheme carries the cumulants a_2 … a_K of every species, K = sonine_order ∈ [2, 6]
+/// (theory.md §16.3); the nonlinear one a_2 only.
 MixtureCoolingState mixture_cooling_state(const Mixture& mixture,
-                                          MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian);
+                                          MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian, int sonine_order = 2);
 
 /// How the Maxwellian HCS of a dilute mixture responds to the partial densities at fixed T.
 struct MixtureCoolingSensitivity {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -104,6 +105,36 @@ PairSonineMoments pair_sonine_moments(const Mixture& m, std::size_t i, std::size
   return out;
 }
 
+/// Δ^p[k, l] = ⟨(X1'^p − X1^p) S_k(X1) S_l(X2)⟩/J0 for p = 1 … K and k, l = 0 … K (S_1 unused: the
+/// cumulant a_1 vanishes), from E(a, b, c) at the pair's widths (theory.md (16.5) at any K).
+struct PairCumulantMoments {
+  int k_max = 2;
+  std::vector<double> values;  // ((p·(K+1) + k)·(K+1) + l)
+  [[nodiscard]] double operator()(int p, int k, int l) const {
+    return values[(static_cast<std::size_t>(p) * (k_max + 1) + k) * (k_max + 1) + l];
+  }
+};
+
+PairCumulantMoments pair_cumulant_moments(const Mixture& m, std::size_t i, std::size_t j, double theta_i,
+                                          double theta_j, int k_max) {
+  const int d = m.dimension;
+  const CollisionPair pair{d, Rational::from_double(m.species[i].mass), Rational::from_double(m.species[j].mass),
+                           Rational::from_double(theta_i), Rational::from_double(theta_j)};
+  const auto e = scalar_collision_moments<Rational>(pair, Rational::from_double(m.restitution(i, j)), k_max);
+  const auto sk = sonine_table(sonine_twice_m(d, 0), k_max);
+  PairCumulantMoments out{k_max,
+                          std::vector<double>(static_cast<std::size_t>((k_max + 1) * (k_max + 1) * (k_max + 1)))};
+  for (int p = 1; p <= k_max; ++p)
+    for (int k = 0; k <= k_max; ++k)
+      for (int l = 0; l <= k_max; ++l) {
+        Rational sum(0);
+        for (int a = 0; a <= k; ++a)
+          for (int b = 0; b <= l; ++b) sum += sk[k][a] * sk[l][b] * (e(a, b, p) - e(a + p, b, 0));
+        out.values[(static_cast<std::size_t>(p) * (k_max + 1) + k) * (k_max + 1) + l] = sum.to_double();
+      }
+  return out;
+}
+
 }  // namespace
 
 double pair_energy_change(double mu_ji, double alpha, double theta_ratio) {
@@ -131,8 +162,12 @@ void species_cooling_rates(const Mixture& mixture, std::span<const double> tempe
   }
 }
 
-MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsScheme scheme) {
+MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsScheme scheme, int sonine_order) {
   mixture.validate();
+  if (sonine_order < 2 || sonine_order > 6)
+    throw std::invalid_argument("hcs_order: must be an integer in [2, 6], got " + std::to_string(sonine_order));
+  if (sonine_order > 2 && scheme == MixtureHcsScheme::nonlinear)
+    throw std::invalid_argument("hcs_order: the nonlinear mixture scheme keeps a2 only (hcs_order = 2)");
   const std::size_t s = mixture.size();
   const int d = mixture.dimension;
   MixtureCoolingState out;
@@ -143,8 +178,96 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
   };
   out.iterations = solve_equal_rates(mixture, gamma, rates_at);
   out.a2.assign(s, 0.0);
+  out.cumulants.assign(s, std::vector<double>(static_cast<std::size_t>(sonine_order) + 1, 0.0));
+  for (auto& c : out.cumulants) c[0] = 1;
   bool fixed_point = true;
-  if (scheme != MixtureHcsScheme::maxwellian) {
+  if (scheme == MixtureHcsScheme::linear) {
+    // Linear scheme at any K (theory.md §16.3): for every species and p = 2 … K,
+    // p[ζ_i^M ⟨X^p⟩_i(a) + δζ_i(a) M_p] + Λ Σ_j c_ij Δ^p_ij(a) = 0, every term linear in the a_k;
+    // ⟨X^p⟩_i(a) = M_p + Σ_k a_k,i ⟨X^p S_k⟩, M_p = (d/2)_p. Then γ with the a-terms of ζ_i held.
+    const int K = sonine_order;
+    const auto nk = static_cast<std::size_t>(K - 1);  // a_2 … a_K per species
+    const auto n = static_cast<Eigen::Index>(s * nk);
+    const double lam = lambda(d);
+    const auto sk = sonine_table(sonine_twice_m(d, 0), K);
+    std::vector<std::vector<double>> overlap(static_cast<std::size_t>(K) + 1, std::vector<double>(sk.size()));
+    std::vector<double> moment(static_cast<std::size_t>(K) + 1);  // M_p
+    for (int p = 0; p <= K; ++p) {
+      std::vector<Rational> xp(static_cast<std::size_t>(p) + 1, Rational(0));
+      xp[static_cast<std::size_t>(p)] = Rational(1);
+      moment[static_cast<std::size_t>(p)] = maxwell_average(d, xp).to_double();
+      for (int k = 0; k <= K; ++k) {
+        std::vector<Rational> prod(sk[k].size() + static_cast<std::size_t>(p), Rational(0));
+        for (std::size_t a = 0; a < sk[k].size(); ++a) prod[a + static_cast<std::size_t>(p)] = sk[k][a];
+        overlap[static_cast<std::size_t>(p)][static_cast<std::size_t>(k)] = maxwell_average(d, prod).to_double();
+      }
+    }
+    auto index = [&](std::size_t i, int k) {
+      return static_cast<Eigen::Index>(i * nk + static_cast<std::size_t>(k - 2));
+    };
+    Eigen::VectorXd a = Eigen::VectorXd::Zero(n);
+    fixed_point = false;
+    for (int outer = 0; outer < 50 && !fixed_point; ++outer) {
+      std::vector<PairCumulantMoments> pm(s * s);
+      std::vector<double> c(s * s), th(s);
+      for (std::size_t i = 0; i < s; ++i) th[i] = theta(mixture, i, gamma[i]);
+      for (std::size_t i = 0; i < s; ++i)
+        for (std::size_t j = 0; j < s; ++j) {
+          pm[i * s + j] = pair_cumulant_moments(mixture, i, j, th[i], th[j], K);
+          c[i * s + j] = pair_weight(mixture, out.chi, i, j, th[i], th[j]);
+        }
+      Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+      for (std::size_t i = 0; i < s; ++i) {
+        // ζ_i^M and the coefficients of δζ_i in the a's.
+        double zeta_m = 0;
+        Eigen::VectorXd dzeta = Eigen::VectorXd::Zero(n);
+        for (std::size_t j = 0; j < s; ++j) {
+          const PairCumulantMoments& q = pm[i * s + j];
+          const double w = -2.0 / d * lam * c[i * s + j];
+          zeta_m += w * q(1, 0, 0);
+          for (int k = 2; k <= K; ++k) {
+            dzeta(index(i, k)) += w * q(1, k, 0);
+            dzeta(index(j, k)) += w * q(1, 0, k);
+          }
+        }
+        for (int p = 2; p <= K; ++p) {
+          const Eigen::Index row = index(i, p);
+          const auto P = static_cast<std::size_t>(p);
+          rhs(row) -= p * zeta_m * moment[P];
+          for (int k = 2; k <= std::min(p, K); ++k)
+            m(row, index(i, k)) += p * zeta_m * overlap[P][static_cast<std::size_t>(k)];
+          m.row(row) += p * moment[P] * dzeta.transpose();
+          for (std::size_t j = 0; j < s; ++j) {
+            const PairCumulantMoments& q = pm[i * s + j];
+            const double v = lam * c[i * s + j];
+            rhs(row) -= v * q(p, 0, 0);
+            for (int k = 2; k <= K; ++k) {
+              m(row, index(i, k)) += v * q(p, k, 0);
+              m(row, index(j, k)) += v * q(p, 0, k);
+            }
+          }
+        }
+      }
+      const Eigen::VectorXd start = a;
+      a = m.fullPivLu().solve(rhs);
+      correction.assign(s * s, 0.0);
+      for (std::size_t i = 0; i < s; ++i)
+        for (std::size_t j = 0; j < s; ++j)
+          for (int k = 2; k <= K; ++k)
+            correction[i * s + j] += a(index(i, k)) * pm[i * s + j](1, k, 0) + a(index(j, k)) * pm[i * s + j](1, 0, k);
+      const std::vector<double> before = gamma;
+      solve_equal_rates(mixture, gamma, rates_at);
+      double change = (a - start).lpNorm<Eigen::Infinity>();
+      for (std::size_t i = 0; i < s; ++i) change = std::max(change, std::abs(gamma[i] - before[i]));
+      out.iterations = outer + 1;
+      fixed_point = change < 1e-12;
+    }
+    for (std::size_t i = 0; i < s; ++i) {
+      for (int k = 2; k <= K; ++k) out.cumulants[i][static_cast<std::size_t>(k)] = a(index(i, k));
+      out.a2[i] = out.cumulants[i][2];
+    }
+  } else if (scheme == MixtureHcsScheme::nonlinear) {
     // Outer iteration (theory.md §16.3): at the current γ the engine's moments give the equations
     // (16.7) for the a2,i, solved by Newton's method (one exact step when linear); their a2 terms
     // enter ζ_i as a fixed correction while γ is re-solved; repeat until γ and a2 stop moving.
@@ -208,7 +331,10 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
       out.iterations = outer + 1;
       fixed_point = change < 1e-12;
     }
-    for (std::size_t i = 0; i < s; ++i) out.a2[i] = a(static_cast<Eigen::Index>(i));
+    for (std::size_t i = 0; i < s; ++i) {
+      out.a2[i] = a(static_cast<Eigen::Index>(i));
+      out.cumulants[i][2] = out.a2[i];
+    }
   }
   rates_at(gamma, rates);
   out.temperature_ratio = gamma;

@@ -39,14 +39,14 @@ class MixtureModel final : public TransportModel {
            "cooling state (first Sonine or Maxwellian); Navier-Stokes coefficients of the dilute mixture at any order";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    auto n = names(kMaxSpecies);
+    auto n = names(kMaxSpecies, kMaxHcsOrder);
     for (const auto& t : transport_names(kMaxSpecies)) n.push_back(t);
     for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
     return n;
   }
   [[nodiscard]] std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const override {
     const int s = static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double());
-    auto n = names(s);
+    auto n = names(s, hcs_order(fixed));
     for (const auto& t : transport_names(s)) n.push_back(t);
     if (s == 2)
       for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
@@ -57,7 +57,7 @@ class MixtureModel final : public TransportModel {
   /// of the pair at infinite dilution, not of the scene's composition).
   [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const override {
     const int s = static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double());
-    auto n = names(s);
+    auto n = names(s, hcs_order(fixed));
     if (fixed.number("packing_fraction", Rational(1)).sign() == 0)
       for (const auto& t : transport_names(s)) n.push_back(t);
     return n;
@@ -89,7 +89,16 @@ class MixtureModel final : public TransportModel {
         real("reduced_gravity", Rational(-1000000L), true, Rational(1000000L), true, Rational(0),
              "g* = rho g/(n dT/dz) of the segregation criterion thermal_diffusion_factor_i "
              "(dp/dz = -rho g)"),
-        hcs_spec()};
+        hcs_spec(),
+        {"hcs_order",
+         ParameterSpec::Kind::integer,
+         Rational(2),
+         Rational(kMaxHcsOrder),
+         true,
+         true,
+         Rational(2),
+         "highest cumulant a_K of each species in the HCS (linear scheme for K > 2)",
+         {}}};
     for (int i = 1; i <= kMaxSpecies; ++i) {
       p.push_back(real(index_name("mass", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
                        "mass of species i (any unit)"));
@@ -113,21 +122,23 @@ class MixtureModel final : public TransportModel {
     const Mixture mixture = make(point);
     const auto s = static_cast<int>(mixture.size());
     std::vector<CoefficientValue> out;
-    std::optional<MixtureCoolingState> chosen, alternative;  // solved once, if an HCS value is asked for
-    TransportCache transport;                                // built once, if a transport value is asked for
+    const int hcs_k = hcs_order(point);
+    std::optional<MixtureCoolingState> chosen, alternative, higher;  // solved once, if an HCS value is asked for
+    TransportCache transport;                                        // built once, if a transport value is asked for
     transport.gravity = point.number("reduced_gravity", Rational(0)).to_double();
     for (const auto& c : coefficients) {
-      int i = 0, kind = c == "cooling_rate" ? 0 : -1;
+      int i = 0, kind = c == "cooling_rate" ? 0 : -1, cumulant = 0;
       for (int k = 1; k <= s; ++k) {
         if (c == index_name("temperature_ratio", k)) i = k, kind = 1;
-        if (c == index_name("a2_species", k)) i = k, kind = 2;
+        for (int q = 2; q <= hcs_k; ++q)
+          if (c == index_name(cumulant_base(q), k)) i = k, kind = 2, cumulant = q;
         if (c == index_name("tracer_diffusion", k)) i = k, kind = 3;
       }
       if (kind < 0) {
         const auto all = transport_names(s);
         if (std::find(all.begin(), all.end(), c) == all.end())
           throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
-                                      " species; valid: " + detail::join(names(s)) + ", " + detail::join(all));
+                                      " species; valid: " + detail::join(names(s, hcs_k)) + ", " + detail::join(all));
         out.push_back(transport.value(mixture, c, order));
         continue;
       }
@@ -136,16 +147,18 @@ class MixtureModel final : public TransportModel {
         out.push_back(tracer_diffusion(mixture, k, order));
         continue;
       }
-      // The HCS is first Sonine (or Maxwellian) at every order. The Maxwellian and a first-Sonine
-      // scheme are both solved: their difference is the error estimate (theory.md §16.3).
+      // The HCS carries a_2 … a_K (K = hcs_order) whatever the transport order. The errors of ζ* and
+      // T_i/T are the difference from the Maxwellian (or first-Sonine) state, those of the a_k,i the
+      // difference from the linear scheme at K + 1 (theory.md §16.3).
+      const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                      : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                          : MixtureHcsScheme::nonlinear;
       if (!chosen) {
-        const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
-                                        : hcs == "linear"   ? MixtureHcsScheme::linear
-                                                            : MixtureHcsScheme::nonlinear;
-        chosen = mixture_cooling_state(mixture, scheme);
+        chosen = mixture_cooling_state(mixture, scheme, hcs_k);
         alternative = mixture_cooling_state(
             mixture, scheme == MixtureHcsScheme::maxwellian ? MixtureHcsScheme::linear : MixtureHcsScheme::maxwellian);
       }
+      if (kind == 2 && !higher) higher = mixture_cooling_state(mixture, MixtureHcsScheme::linear, hcs_k + 1);
       const MixtureCoolingState& state = *chosen;
       const MixtureCoolingState& other = *alternative;
       auto value = [&](double v, double other_value, bool estimated) {
@@ -161,8 +174,12 @@ class MixtureModel final : public TransportModel {
         out.push_back(value(state.cooling_rate, other.cooling_rate, true));
       else if (kind == 1)
         out.push_back(value(state.temperature_ratio[k], other.temperature_ratio[k], true));
-      else  // a2,i: no higher approximation here to estimate its error against
-        out.push_back(value(state.a2[k], state.a2[k], false));
+      else {
+        const auto q = static_cast<std::size_t>(cumulant);
+        CoefficientValue v = value(state.cumulants[k][q], higher->cumulants[k][q], true);
+        v.converged = v.converged && higher->solved;
+        out.push_back(v);
+      }
     }
     return out;
   }
@@ -292,10 +309,25 @@ class MixtureModel final : public TransportModel {
     return n;
   }
 
-  static std::vector<std::string> names(int s) {
+  static constexpr int kMaxHcsOrder = 5;
+
+  /// Returns "a<q>_species" (built by appending: GCC 12 misreports "a" + std::string as overlapping).
+  static std::string cumulant_base(int q) {
+    std::string base(1, 'a');
+    base.append(std::to_string(q)).append("_species");
+    return base;
+  }
+
+  /// Returns the scene's hcs_order K (the HCS carries a_2 … a_K).
+  static int hcs_order(const ParameterPoint& p) {
+    return static_cast<int>(p.number("hcs_order", Rational(2)).to_double());
+  }
+
+  static std::vector<std::string> names(int s, int hcs_k) {
     std::vector<std::string> n{"cooling_rate"};
     for (int i = 1; i <= s; ++i) n.push_back(index_name("temperature_ratio", i));
-    for (int i = 1; i <= s; ++i) n.push_back(index_name("a2_species", i));
+    for (int q = 2; q <= hcs_k; ++q)
+      for (int i = 1; i <= s; ++i) n.push_back(index_name(cumulant_base(q), i));
     return n;
   }
   static Mixture make(const ParameterPoint& p) {
