@@ -594,9 +594,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "order: must be an integer in [1, 12]"},
         BadInput{"mixture_hcs_order", kMixture + "fraction = 0.5\n", "--set hcs_order=6",
                  "hcs_order: must be an integer in [2, 5]"},
-        BadInput{"mixture_hcs_order_nonlinear", kMixture + "fraction = 0.5\n",
-                 "--set hcs_order=3 --set hcs=nonlinear --set 'coefficients=[\"a3_species_1\"]'",
-                 "hcs_order: the nonlinear mixture scheme keeps a2 only (hcs_order = 2)"}),
+        BadInput{"mixture_hcs_order_type", kMixture + "fraction = 0.5\n", "--set hcs_order=2.5",
+                 "hcs_order: must be an integer in [2, 5]"}),
     [](const auto& info) { return info.param.label; });
 
 // Without a subcommand the program is misused: exit 2 and a one-line error.

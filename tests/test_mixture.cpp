@@ -103,14 +103,20 @@ TEST(Mixture, IdenticalSpeciesGiveVanNoijeErnst) {
 TEST(Mixture, NonlinearSchemeMatchesOneComponentNonlinear) {
   for (int d : {2, 3}) {
     gkt::HomogeneousCoolingState one(d);
-    for (const double alpha : {0.9, 0.5, 0.2}) {
-      const auto state =
-          gkt::mixture_cooling_state(binary(d, 1.0, 1.0, 0.4, alpha, 0.2), gkt::MixtureHcsScheme::nonlinear);
-      ASSERT_TRUE(state.solved) << d << " " << alpha;
-      const auto reference = one.solve(Rational::from_double(alpha), 2, gkt::HcsScheme::nonlinear);
-      for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(state.a2[i], reference.a[2], 1e-12) << d << " " << alpha;
-      EXPECT_NEAR(state.cooling_rate, state.chi[0] * reference.cooling_rate, 1e-12) << d << " " << alpha;
-    }
+    for (const double alpha : {0.9, 0.5, 0.2})
+      for (int k = 2; k <= 4; ++k) {  // (16.8) with the products: the X^p balances of two species
+        if (k > 2 && alpha == 0.9) continue;
+        const auto state =
+            gkt::mixture_cooling_state(binary(d, 1.0, 1.0, 0.4, alpha, 0.2), gkt::MixtureHcsScheme::nonlinear, k);
+        ASSERT_TRUE(state.solved) << d << " " << alpha << " " << k;
+        const auto reference = one.solve(Rational::from_double(alpha), k, gkt::HcsScheme::nonlinear);
+        for (std::size_t i = 0; i < 2; ++i)
+          for (int q = 2; q <= k; ++q)
+            EXPECT_NEAR(state.cumulants[i][static_cast<std::size_t>(q)], reference.a[static_cast<std::size_t>(q)],
+                        1e-12)
+                << d << " " << alpha << " " << k;
+        EXPECT_NEAR(state.cooling_rate, state.chi[0] * reference.cooling_rate, 1e-12) << d << " " << alpha;
+      }
     const auto mix = binary(d, 3.0, 1.5, 0.5, 0.3, 0.0);
     const auto lin = gkt::mixture_cooling_state(mix, gkt::MixtureHcsScheme::linear);
     const auto non = gkt::mixture_cooling_state(mix, gkt::MixtureHcsScheme::nonlinear);

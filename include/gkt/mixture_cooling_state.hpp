@@ -41,9 +41,9 @@ struct MixtureCoolingState {
   bool solved = false;                         ///< equal rates to 1e-12 (and, linear, a fixed point to 1e-12)
 };
 
-/// Returns the HCS of the mixture (validated first; throws std::invalid_argument on bad input). The
-/// linear scheme carries the cumulants a_2 … a_K of every species, K = sonine_order ∈ [2, 6]
-/// (theory.md §16.3); the nonlinear one a_2 only.
+/// Returns the HCS of the mixture (validated first; throws std::invalid_argument on bad input),
+/// carrying the cumulants a_2 … a_K of every species, K = sonine_order ∈ [2, 6] (theory.md §16.3,
+/// (16.8)); ignored by the Maxwellian scheme.
 MixtureCoolingState mixture_cooling_state(const Mixture& mixture,
                                           MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian, int sonine_order = 2);
 

@@ -76,35 +76,6 @@ int solve_equal_rates(const Mixture& mixture, std::vector<double>& gamma,
   return sweeps;
 }
 
-/// ⟨(X1'^p − X1^p) S_2(X1)^a S_2(X2)^b⟩/J0 for p = 1, 2 and (a, b) = (0,0), (1,0), (0,1), (1,1),
-/// from the engine's exact moments E(a, b, c) at the pair's widths (rational approximations of θ).
-struct PairSonineMoments {
-  double energy[4], fourth[4];  // p = 1, 2; index 0: (0,0), 1: S_2(X1), 2: S_2(X2), 3: both
-};
-
-PairSonineMoments pair_sonine_moments(const Mixture& m, std::size_t i, std::size_t j, double theta_i, double theta_j) {
-  const int d = m.dimension;
-  const CollisionPair pair{d, Rational::from_double(m.species[i].mass), Rational::from_double(m.species[j].mass),
-                           Rational::from_double(theta_i), Rational::from_double(theta_j)};
-  const auto e = scalar_collision_moments<Rational>(pair, Rational::from_double(m.restitution(i, j)), 2);
-  const std::vector<Rational> s2 = sonine_table(sonine_twice_m(d, 0), 2)[2];  // S_2 = Σ_n s2[n] X^n
-  PairSonineMoments out{};
-  for (int p = 1; p <= 2; ++p) {
-    Rational plain = e(0, 0, p) - e(p, 0, 0), own(0), partner(0), both(0);
-    for (int n = 0; n <= 2; ++n) {
-      own += s2[n] * (e(n, 0, p) - e(n + p, 0, 0));
-      partner += s2[n] * (e(0, n, p) - e(p, n, 0));
-      for (int l = 0; l <= 2; ++l) both += s2[n] * s2[l] * (e(n, l, p) - e(n + p, l, 0));
-    }
-    double* target = p == 1 ? out.energy : out.fourth;
-    target[0] = plain.to_double();
-    target[1] = own.to_double();
-    target[2] = partner.to_double();
-    target[3] = both.to_double();
-  }
-  return out;
-}
-
 /// Δ^p[k, l] = ⟨(X1'^p − X1^p) S_k(X1) S_l(X2)⟩/J0 for p = 1 … K and k, l = 0 … K (S_1 unused: the
 /// cumulant a_1 vanishes), from E(a, b, c) at the pair's widths (theory.md (16.5) at any K).
 struct PairCumulantMoments {
@@ -132,6 +103,29 @@ PairCumulantMoments pair_cumulant_moments(const Mixture& m, std::size_t i, std::
           for (int b = 0; b <= l; ++b) sum += sk[k][a] * sk[l][b] * (e(a, b, p) - e(a + p, b, 0));
         out.values[(static_cast<std::size_t>(p) * (k_max + 1) + k) * (k_max + 1) + l] = sum.to_double();
       }
+  return out;
+}
+
+/// M_p = ⟨X^p⟩ = (d/2)_p and overlap[p][k] = ⟨X^p S_k(X)⟩ under the Maxwellian, p, k ≤ K.
+struct CumulantOverlaps {
+  std::vector<double> moment;
+  std::vector<std::vector<double>> overlap;
+};
+
+CumulantOverlaps cumulant_overlaps(int d, int k_max) {
+  const auto sk = sonine_table(sonine_twice_m(d, 0), k_max);
+  const auto size = static_cast<std::size_t>(k_max) + 1;
+  CumulantOverlaps out{std::vector<double>(size), std::vector<std::vector<double>>(size, std::vector<double>(size))};
+  for (std::size_t p = 0; p < size; ++p) {
+    std::vector<Rational> xp(p + 1, Rational(0));
+    xp[p] = Rational(1);
+    out.moment[p] = maxwell_average(d, xp).to_double();
+    for (std::size_t k = 0; k < size; ++k) {
+      std::vector<Rational> product(sk[k].size() + p, Rational(0));
+      for (std::size_t a = 0; a < sk[k].size(); ++a) product[a + p] = sk[k][a];
+      out.overlap[p][k] = maxwell_average(d, product).to_double();
+    }
+  }
   return out;
 }
 
@@ -166,8 +160,6 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
   mixture.validate();
   if (sonine_order < 2 || sonine_order > 6)
     throw std::invalid_argument("hcs_order: must be an integer in [2, 6], got " + std::to_string(sonine_order));
-  if (sonine_order > 2 && scheme == MixtureHcsScheme::nonlinear)
-    throw std::invalid_argument("hcs_order: the nonlinear mixture scheme keeps a2 only (hcs_order = 2)");
   const std::size_t s = mixture.size();
   const int d = mixture.dimension;
   MixtureCoolingState out;
@@ -189,19 +181,9 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
     const auto nk = static_cast<std::size_t>(K - 1);  // a_2 … a_K per species
     const auto n = static_cast<Eigen::Index>(s * nk);
     const double lam = lambda(d);
-    const auto sk = sonine_table(sonine_twice_m(d, 0), K);
-    std::vector<std::vector<double>> overlap(static_cast<std::size_t>(K) + 1, std::vector<double>(sk.size()));
-    std::vector<double> moment(static_cast<std::size_t>(K) + 1);  // M_p
-    for (int p = 0; p <= K; ++p) {
-      std::vector<Rational> xp(static_cast<std::size_t>(p) + 1, Rational(0));
-      xp[static_cast<std::size_t>(p)] = Rational(1);
-      moment[static_cast<std::size_t>(p)] = maxwell_average(d, xp).to_double();
-      for (int k = 0; k <= K; ++k) {
-        std::vector<Rational> prod(sk[k].size() + static_cast<std::size_t>(p), Rational(0));
-        for (std::size_t a = 0; a < sk[k].size(); ++a) prod[a + static_cast<std::size_t>(p)] = sk[k][a];
-        overlap[static_cast<std::size_t>(p)][static_cast<std::size_t>(k)] = maxwell_average(d, prod).to_double();
-      }
-    }
+    const CumulantOverlaps ov = cumulant_overlaps(d, K);
+    const std::vector<std::vector<double>>& overlap = ov.overlap;
+    const std::vector<double>& moment = ov.moment;
     auto index = [&](std::size_t i, int k) {
       return static_cast<Eigen::Index>(i * nk + static_cast<std::size_t>(k - 2));
     };
@@ -268,62 +250,78 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
       out.a2[i] = out.cumulants[i][2];
     }
   } else if (scheme == MixtureHcsScheme::nonlinear) {
-    // Outer iteration (theory.md §16.3): at the current γ the engine's moments give the equations
-    // (16.7) for the a2,i, solved by Newton's method (one exact step when linear); their a2 terms
-    // enter ζ_i as a fixed correction while γ is re-solved; repeat until γ and a2 stop moving.
-    const auto n = static_cast<Eigen::Index>(s);
-    const double lam = lambda(d), fourth = d * (d + 2) / 2.0;            // 2⟨X²⟩_M = d(d+2)/2
-    const double q = scheme == MixtureHcsScheme::nonlinear ? 1.0 : 0.0;  // keeps the a_i a_j terms
+    // Nonlinear scheme at any K (theory.md §16.3): the same X^p balances with every product kept,
+    // p ζ_i(a) ⟨X^p⟩_i(a) + Λ B^p_i(a) = 0, B^p_i = Σ_j c_ij Σ_{k,l} A_ik A_jl Δ^p_ij[k,l] (A_i0 = 1,
+    // A_ik = a_k,i), ζ_i = −(2/d) Λ B^1_i; Newton's method with the exact Jacobian at fixed γ, then γ
+    // with the a-terms of ζ_i held, until both stop moving.
+    const int K = sonine_order;
+    const auto nk = static_cast<std::size_t>(K - 1);
+    const auto n = static_cast<Eigen::Index>(s * nk);
+    const double lam = lambda(d);
+    const CumulantOverlaps ov = cumulant_overlaps(d, K);
+    auto index = [&](std::size_t i, int k) {
+      return static_cast<Eigen::Index>(i * nk + static_cast<std::size_t>(k - 2));
+    };
     Eigen::VectorXd a = Eigen::VectorXd::Zero(n);
+    auto coefficient = [&](std::size_t i, int k) { return k == 0 ? 1.0 : k == 1 ? 0.0 : a(index(i, k)); };
     fixed_point = false;
     for (int outer = 0; outer < 50 && !fixed_point; ++outer) {
-      std::vector<PairSonineMoments> pm(s * s);
+      std::vector<PairCumulantMoments> pm(s * s);
       std::vector<double> c(s * s), th(s);
       for (std::size_t i = 0; i < s; ++i) th[i] = theta(mixture, i, gamma[i]);
       for (std::size_t i = 0; i < s; ++i)
         for (std::size_t j = 0; j < s; ++j) {
-          pm[i * s + j] = pair_sonine_moments(mixture, i, j, th[i], th[j]);
+          pm[i * s + j] = pair_cumulant_moments(mixture, i, j, th[i], th[j], K);
           c[i * s + j] = pair_weight(mixture, out.chi, i, j, th[i], th[j]);
         }
-      // G_i = (d(d+2)/2) [ζ_i (1 + a_i)] + Λ Σ_j c_ij (F00 + a_i F10 + a_j F01 + q a_i a_j F11) = 0 with
-      // ζ_i = −(2/d)Λ Σ_j c_ij (E00 + a_i E10 + a_j E01 + q a_i a_j E11); linear (q = 0):
-      // ζ_i (1 + a_i) → ζ_i^M (1 + a_i) + δζ_i, the a2-product of ζ dropped.
-      const Eigen::VectorXd start = a;
-      for (int newton = 0; newton < 50; ++newton) {
-        Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
-        Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(n, n);
-        for (std::size_t i = 0; i < s; ++i) {
-          const auto I = static_cast<Eigen::Index>(i);
-          double zeta_m = 0, zeta_a = 0;
-          Eigen::VectorXd dzeta = Eigen::VectorXd::Zero(n);
-          for (std::size_t j = 0; j < s; ++j) {
-            const auto J = static_cast<Eigen::Index>(j);
-            const PairSonineMoments& m = pm[i * s + j];
-            const double w = -2.0 / d * lam * c[i * s + j];
-            zeta_m += w * m.energy[0];
-            zeta_a += w * (a(I) * m.energy[1] + a(J) * m.energy[2] + q * a(I) * a(J) * m.energy[3]);
-            dzeta(I) += w * (m.energy[1] + q * a(J) * m.energy[3]);
-            dzeta(J) += w * (m.energy[2] + q * a(I) * m.energy[3]);
-            const double v = lam * c[i * s + j];
-            g(I) += v * (m.fourth[0] + a(I) * m.fourth[1] + a(J) * m.fourth[2] + q * a(I) * a(J) * m.fourth[3]);
-            jac(I, I) += v * (m.fourth[1] + q * a(J) * m.fourth[3]);
-            jac(I, J) += v * (m.fourth[2] + q * a(I) * m.fourth[3]);
-          }
-          g(I) += fourth * (zeta_m * (1 + a(I)) + zeta_a * (1 + q * a(I)));
-          jac.row(I) += fourth * (1 + q * a(I)) * dzeta.transpose();
-          jac(I, I) += fourth * (zeta_m + q * zeta_a);
+      auto bilinear = [&](std::size_t i, int p, Eigen::VectorXd& gradient) {  // B^p_i and ∂B^p_i/∂a
+        gradient.setZero();
+        double value = 0;
+        for (std::size_t j = 0; j < s; ++j) {
+          const PairCumulantMoments& q = pm[i * s + j];
+          for (int k = 0; k <= K; ++k)
+            for (int l = 0; l <= K; ++l) {
+              if (k == 1 || l == 1) continue;
+              const double term = c[i * s + j] * q(p, k, l);
+              value += term * coefficient(i, k) * coefficient(j, l);
+              if (k >= 2) gradient(index(i, k)) += term * coefficient(j, l);
+              if (l >= 2) gradient(index(j, l)) += term * coefficient(i, k);
+            }
         }
-        const Eigen::VectorXd step = jac.fullPivLu().solve(-g);
+        return value;
+      };
+      const Eigen::VectorXd start = a;
+      Eigen::VectorXd g1(n), gp(n);
+      for (int newton = 0; newton < 50; ++newton) {
+        Eigen::VectorXd residual(n);
+        Eigen::MatrixXd jacobian(n, n);
+        for (std::size_t i = 0; i < s; ++i) {
+          const double zeta = -2.0 / d * lam * bilinear(i, 1, g1);
+          for (int p = 2; p <= K; ++p) {
+            const auto P = static_cast<std::size_t>(p);
+            double xp = ov.moment[P];
+            Eigen::VectorXd dxp = Eigen::VectorXd::Zero(n);
+            for (int k = 2; k <= p; ++k) {
+              xp += coefficient(i, k) * ov.overlap[P][static_cast<std::size_t>(k)];
+              dxp(index(i, k)) = ov.overlap[P][static_cast<std::size_t>(k)];
+            }
+            const double bp = bilinear(i, p, gp);
+            const Eigen::Index row = index(i, p);
+            residual(row) = p * zeta * xp + lam * bp;
+            jacobian.row(row) = (p * (-2.0 / d * lam) * xp * g1 + p * zeta * dxp + lam * gp).transpose();
+          }
+        }
+        const Eigen::VectorXd step = jacobian.fullPivLu().solve(-residual);
         a += step;
         if (step.lpNorm<Eigen::Infinity>() < 1e-15 * (1 + a.lpNorm<Eigen::Infinity>())) break;
       }
       correction.assign(s * s, 0.0);
       for (std::size_t i = 0; i < s; ++i)
-        for (std::size_t j = 0; j < s; ++j) {
-          const PairSonineMoments& m = pm[i * s + j];
-          const double ai = a(static_cast<Eigen::Index>(i)), aj = a(static_cast<Eigen::Index>(j));
-          correction[i * s + j] = ai * m.energy[1] + aj * m.energy[2] + q * ai * aj * m.energy[3];
-        }
+        for (std::size_t j = 0; j < s; ++j)
+          for (int k = 0; k <= K; ++k)
+            for (int l = 0; l <= K; ++l)
+              if (k != 1 && l != 1 && (k != 0 || l != 0))
+                correction[i * s + j] += coefficient(i, k) * coefficient(j, l) * pm[i * s + j](1, k, l);
       const std::vector<double> before = gamma;
       solve_equal_rates(mixture, gamma, rates_at);
       double change = (a - start).lpNorm<Eigen::Infinity>();
@@ -332,8 +330,8 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
       fixed_point = change < 1e-12;
     }
     for (std::size_t i = 0; i < s; ++i) {
-      out.a2[i] = a(static_cast<Eigen::Index>(i));
-      out.cumulants[i][2] = out.a2[i];
+      for (int k = 2; k <= K; ++k) out.cumulants[i][static_cast<std::size_t>(k)] = a(index(i, k));
+      out.a2[i] = out.cumulants[i][2];
     }
   }
   rates_at(gamma, rates);

@@ -97,7 +97,7 @@ class MixtureModel final : public TransportModel {
          true,
          true,
          Rational(2),
-         "highest cumulant a_K of each species in the HCS (linear scheme for K > 2)",
+         "highest cumulant a_K of each species in the HCS",
          {}}};
     for (int i = 1; i <= kMaxSpecies; ++i) {
       p.push_back(real(index_name("mass", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
