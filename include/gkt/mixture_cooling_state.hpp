@@ -25,9 +25,9 @@ void species_cooling_rates(const Mixture& mixture, std::span<const double> tempe
 
 /// How the species distributions of the HCS are represented.
 enum class MixtureHcsScheme {
-  maxwellian,  ///< f_i Maxwellian at T_i (a2,i = 0)
-  linear,      ///< f_i = f_M,i (1 + a2,i S_2), every collision moment linear in the a2,i
-  nonlinear,   ///< the same f_i with the products a2,i a2,j (and ζ_i a2,i) kept
+  maxwellian,  ///< f_i Maxwellian at T_i (every a_k,i = 0)
+  linear,      ///< f_i = f_M,i (1 + Σ_{k=2}^K a_k,i S_k), every collision moment linear in the a's
+  nonlinear,   ///< the same f_i with the products a_k,i a_l,j (and ζ_i a_k,i) kept
 };
 
 /// The mixture HCS.
