@@ -10,6 +10,7 @@
 
 #include "gkt/collision_moments.hpp"
 #include "gkt/sonine.hpp"
+#include "transport/nearby_rational.hpp"
 
 namespace gkt {
 
@@ -89,8 +90,10 @@ struct PairCumulantMoments {
 PairCumulantMoments pair_cumulant_moments(const Mixture& m, std::size_t i, std::size_t j, double theta_i,
                                           double theta_j, int k_max) {
   const int d = m.dimension;
-  const CollisionPair pair{d, Rational::from_double(m.species[i].mass), Rational::from_double(m.species[j].mass),
-                           Rational::from_double(theta_i), Rational::from_double(theta_j)};
+  // The moments depend on the mass and width ratios only: m_j = θ_j = 1 and short rationals for the
+  // ratios (theory.md §16.3).
+  const CollisionPair pair{d, detail::nearby_rational(m.species[i].mass / m.species[j].mass), Rational(1),
+                           detail::nearby_rational(theta_i / theta_j), Rational(1)};
   const auto e = scalar_collision_moments<Rational>(pair, Rational::from_double(m.restitution(i, j)), k_max);
   const auto sk = sonine_table(sonine_twice_m(d, 0), k_max);
   PairCumulantMoments out{k_max,

@@ -8,6 +8,7 @@
 
 #include "gkt/collision_moments.hpp"
 #include "transport/galerkin_pieces.hpp"
+#include "transport/nearby_rational.hpp"
 
 namespace gkt {
 
@@ -15,27 +16,6 @@ namespace {
 
 /// c_d = π^{(d−1)/2}/Γ(d/2): (θ_iθ_j)^{d/2} J0_ij π^{−d} = c_d √(1/θ_i + 1/θ_j) (theory.md (16.4)).
 double geometric_factor(int d) { return std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0); }
-
-/// Returns the continued-fraction convergent of x > 0 with the largest denominator ≤ max_denominator
-/// if it is within 1e-12 of x (relative), else x itself as an exact dyadic rational.
-Rational nearby_rational(double x, long max_denominator) {
-  long p0 = 0, q0 = 1, p1 = 1, q1 = 0;
-  double rest = x;
-  for (int k = 0; k < 64; ++k) {
-    const double a = std::floor(rest);
-    if (a > 1e15) break;
-    const auto ai = static_cast<long>(a);
-    const long p2 = ai * p1 + p0, q2 = ai * q1 + q0;
-    if (q2 > max_denominator) break;
-    p0 = p1, q0 = q1, p1 = p2, q1 = q2;
-    const double frac = rest - a;
-    if (frac < 1e-300 || std::abs(static_cast<double>(p1) / static_cast<double>(q1) - x) <= 1e-17 * x) break;
-    rest = 1 / frac;
-  }
-  if (q1 == 0 || std::abs(static_cast<double>(p1) / static_cast<double>(q1) - x) > 1e-12 * x)
-    return Rational::from_double(x);
-  return Rational(p1, static_cast<unsigned long>(q1));
-}
 
 Eigen::MatrixXd to_matrix(const std::vector<std::vector<double>>& m) {
   Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(m.size()));
@@ -107,8 +87,8 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
       // m_j = θ_j = 1. The vector mode's cross moments need √(θ_i/θ_j) rational; it and m_i/m_j are
       // continued-fraction convergents with denominators ≤ 2^26 within 1e-12 relative (else the
       // exact double): 3 times faster than 53-bit dyadic rationals (docs/performance.md).
-      const Rational r = nearby_rational(std::sqrt(theta_[i] / theta_[j]), 1L << 26);
-      const Rational mass_ratio = nearby_rational(mass_[i] / mass_[j], 1L << 26);
+      const Rational r = detail::nearby_rational(std::sqrt(theta_[i] / theta_[j]), 1L << 26);
+      const Rational mass_ratio = detail::nearby_rational(mass_[i] / mass_[j], 1L << 26);
       const CollisionPair pair{d, mass_ratio, Rational(1), r * r, Rational(1)};
       const Rational alpha = Rational::from_double(mixture.restitution(i, j));
       const double sigma = 0.5 * (mixture.species[i].diameter + mixture.species[j].diameter) / mixture.mean_diameter();
