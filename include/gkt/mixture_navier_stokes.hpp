@@ -54,16 +54,27 @@ class MixtureNavierStokes {
   [[nodiscard]] const MixtureCoolingSensitivity& cooling_sensitivity() const { return sensitivity_; }
 
  private:
+  /// The vector modes' solutions: heat = 𝒜 (∇ln T), density[j] = ℬ^j, each as the unknowns φ̃ of
+  /// (17.5)–(17.7) (ℬ^j per ∇n_j) or, per_particle, φ = φ̃/x_i of (17.13) (ℬ^j per ∇ln n_j).
+  struct VectorModes {
+    Eigen::VectorXd heat;
+    std::vector<Eigen::VectorXd> density;
+  };
+  /// Solves both vector systems at `order` with the leading blocks of the operator's two parts.
+  [[nodiscard]] VectorModes vector_modes(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
+                                         bool per_particle) const;
   /// Fills out.drift, out.thermal_drift and, for a binary, out.segregation* from the vector modes
   /// solved per particle (theory.md (17.13)).
-  void species_drift(int order, const Eigen::MatrixXd& per_particle, MixtureTransportValues& out) const;
+  void species_drift(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
+                     MixtureTransportValues& out) const;
 
-  Mixture mixture_;
+  int dimension_;
   MixtureCoolingState state_;
   MixtureCoolingSensitivity sensitivity_;
   int max_order_;
   std::size_t s_;
-  double zeta_ = 0;                              // ζ in the units n = σ̄ = m̄ = √(2T/m̄) = 1
+  double nu0_ = 0;   // ν0 = nT/η0 = 4√2 c_d/(d+2) in the units n = σ̄ = m̄ = √(2T/m̄) = 1
+  double zeta_ = 0;  // ζ = ζ* ν0 in those units
   std::vector<double> theta_, mass_, fraction_;  // θ_k = m_k/γ_k, m_k/m̄, x_k
   // Rows (i, p), columns (k, q), index i·n + p. The vector operator is kept in two parts: the
   // species-diagonal one (X_i against f_j, weight x_j) and the cross one (f_i against X_j) without its

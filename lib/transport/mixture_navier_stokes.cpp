@@ -59,7 +59,7 @@ Eigen::MatrixXd leading_blocks(const Eigen::MatrixXd& m, std::size_t s, int full
 }  // namespace
 
 MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
-    : mixture_(mixture), max_order_(max_order), s_(mixture.size()) {
+    : dimension_(mixture.dimension), max_order_(max_order), s_(mixture.size()) {
   mixture.validate();
   if (mixture.packing_fraction != 0)
     throw std::invalid_argument(
@@ -75,7 +75,8 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
     theta_.push_back(mass_[k] / state_.temperature_ratio[k]);
     fraction_.push_back(mixture.species[k].fraction);
   }
-  zeta_ = state_.cooling_rate * 4 * std::sqrt(2.0) * c_d / (d + 2);  // ζ = ζ* ν0, ν0 = 4√2 c_d/(d+2)
+  nu0_ = 4 * std::sqrt(2.0) * c_d / (d + 2);
+  zeta_ = state_.cooling_rate * nu0_;
   const int nv = max_order + 1, nt = max_order;
   const auto S = static_cast<Eigen::Index>(s_);
   vector_self_ = Eigen::MatrixXd::Zero(S * nv, S * nv);
@@ -106,10 +107,68 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
   tensor_flux_ = to_vector(tp.flux);
 }
 
+MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, const Eigen::MatrixXd& self,
+                                                                   const Eigen::MatrixXd& cross,
+                                                                   bool per_particle) const {
+  // Standard scaling (17.4)–(17.7): rows as integrated, unknowns φ̃, cross part weighted by the row's
+  // x_i, ℬ^j per ∇n_j. Per particle (17.13): rows / x_i, unknowns φ = φ̃/x_i, so the cross part carries
+  // the column's x_j, the 𝒜 source loses x_i, the constraint weights x_k and ℬ^j is per ∇ln n_j
+  // (sources × x_j/x_i). The two are the same system for x > 0; only the second stays finite for a
+  // tracer row, only the first for a tracer's ∇n_j.
+  const int n = order + 1;
+  const auto S = static_cast<Eigen::Index>(s_);
+  Eigen::VectorXd weight(S * n);  // x_i on the rows (or columns) of species i
+  for (Eigen::Index i = 0; i < S; ++i) weight.segment(i * n, n).setConstant(fraction_[static_cast<std::size_t>(i)]);
+  const Eigen::MatrixXd op = per_particle ? Eigen::MatrixXd(self + cross * weight.asDiagonal())
+                                          : Eigen::MatrixXd(self + weight.asDiagonal() * cross);
+  const Eigen::MatrixXd dv = vector_d_.topLeftCorner(n, n), mv = vector_m_.topLeftCorner(n, n);
+  Eigen::MatrixXd ka = op, kb = op;
+  for (Eigen::Index i = 0; i < S; ++i) {
+    ka.block(i * n, i * n, n, n) += zeta_ * (dv - 0.5 * mv);
+    kb.block(i * n, i * n, n, n) += zeta_ * dv;
+  }
+  // Total momentum Σ_k m_k ∫V X_k = 0 replaces the p = 0 row of the most abundant species: that row
+  // is otherwise the momentum balance, a combination of the others (theory.md (17.7)).
+  const auto major =
+      static_cast<Eigen::Index>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
+  for (Eigen::MatrixXd* k : {&ka, &kb}) {
+    k->row(major * n).setZero();
+    for (Eigen::Index j = 0; j < S; ++j) {
+      const auto J = static_cast<std::size_t>(j);
+      (*k)(major * n, j * n) = (per_particle ? fraction_[J] : 1.0) * mass_[J] / std::sqrt(theta_[J]);
+    }
+  }
+  VectorModes out;
+  Eigen::VectorXd sa(S * n);
+  for (std::size_t i = 0; i < s_; ++i)  // (17.5): −x_i θ_i^{−1/2} ⟨x S_p (x − d/2 − θ_i)⟩, x − d/2 = 1 − S_1
+    sa.segment(static_cast<Eigen::Index>(i) * n, n) =
+        -(per_particle ? 1.0 : fraction_[i]) / std::sqrt(theta_[i]) * ((1 - theta_[i]) * mv.col(0) - mv.col(1));
+  sa(major * n) = 0;
+  out.heat = ka.partialPivLu().solve(sa);
+  const auto lu = kb.partialPivLu();
+  for (std::size_t j = 0; j < s_; ++j) {
+    Eigen::VectorXd sb(S * n);
+    // (17.6): −θ_i^{−1/2}[δ_ij M(p,0) + x_i (∂_j ln γ_i ⟨x S_p (x − d/2)⟩ − θ_i M(p,0))] + ∂ζ/∂n_j M φ̃^𝒜_i
+    // (per particle: x_j instead of x_i, and x_j ∂ζ/∂n_j).
+    const double dzeta = sensitivity_.cooling_rate[j] * nu0_ * (per_particle ? fraction_[j] : 1.0);
+    for (std::size_t i = 0; i < s_; ++i) {
+      const auto I = static_cast<Eigen::Index>(i) * n;
+      const double g = sensitivity_.temperature_ratio[i * s_ + j], x = per_particle ? fraction_[j] : fraction_[i];
+      sb.segment(I, n) =
+          -1 / std::sqrt(theta_[i]) *
+              ((i == j ? 1.0 : 0.0) * mv.col(0) + x * (g * (mv.col(0) - mv.col(1)) - theta_[i] * mv.col(0))) +
+          dzeta * (mv * out.heat.segment(I, n));
+    }
+    sb(major * n) = 0;
+    out.density.push_back(lu.solve(sb));
+  }
+  return out;
+}
+
 MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   if (order < 1 || order > max_order_)
     throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(max_order_) + "]");
-  const int d = mixture_.dimension;
+  const int d = dimension_;
   const std::size_t s = s_;
   const auto S = static_cast<Eigen::Index>(s);
   const double c_d = geometric_factor(d);
@@ -122,41 +181,15 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   const int n = order + 1;
   const Eigen::MatrixXd self = leading_blocks(vector_self_, s, max_order_ + 1, n);
   const Eigen::MatrixXd cross = leading_blocks(vector_cross_, s, max_order_ + 1, n);
-  Eigen::VectorXd weight(S * n);  // x_i on the rows (or columns) of species i
-  for (Eigen::Index i = 0; i < S; ++i) weight.segment(i * n, n).setConstant(fraction_[static_cast<std::size_t>(i)]);
-  const Eigen::MatrixXd op = self + weight.asDiagonal() * cross;
-  const Eigen::MatrixXd dv = vector_d_.topLeftCorner(n, n), mv = vector_m_.topLeftCorner(n, n);
-  Eigen::MatrixXd ka = op, kb = op, mass_block = Eigen::MatrixXd::Zero(S * n, S * n);
-  for (Eigen::Index i = 0; i < S; ++i) {
-    ka.block(i * n, i * n, n, n) += zeta_ * (dv - 0.5 * mv);
-    kb.block(i * n, i * n, n, n) += zeta_ * dv;
-    mass_block.block(i * n, i * n, n, n) = mv;
-  }
-  // Total momentum Σ_k m_k ∫V X_k = 0 replaces the p = 0 row of the most abundant species: that row
-  // is otherwise the momentum balance, a combination of the others (theory.md (17.7)).
-  const auto major =
-      static_cast<Eigen::Index>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
-  for (Eigen::MatrixXd* k : {&ka, &kb}) {
-    k->row(major * n).setZero();
-    for (Eigen::Index j = 0; j < S; ++j)
-      (*k)(major * n, j * n) = mass_[static_cast<std::size_t>(j)] / std::sqrt(theta_[static_cast<std::size_t>(j)]);
-  }
-  Eigen::VectorXd sa = Eigen::VectorXd::Zero(S * n);
-  for (std::size_t i = 0; i < s; ++i) {
-    const auto I = static_cast<Eigen::Index>(i) * n;
-    // (17.5): −x_i θ_i^{−1/2} ⟨x S_p (x − d/2 − θ_i)⟩, x − d/2 = 1 − S_1
-    sa.segment(I, n) = -fraction_[i] / std::sqrt(theta_[i]) * ((1 - theta_[i]) * mv.col(0) - mv.col(1));
-  }
-  sa(major * n) = 0;
-  const Eigen::VectorXd a = ka.partialPivLu().solve(sa);
-  const auto lu_b = kb.partialPivLu();
+  const VectorModes modes = vector_modes(order, self, cross, false);
+  const Eigen::VectorXd& a = modes.heat;
 
   MixtureTransportValues out;
   out.mutual_diffusion.assign(s * s, 0.0);
   out.thermal_diffusion.assign(s, 0.0);
   out.pressure_diffusion.assign(s, 0.0);
   out.dufour.assign(s, 0.0);
-  const double m00 = mv(0, 0);
+  const double m00 = vector_m_(0, 0);
   const Eigen::VectorXd fv = vector_flux_.head(n);
   double lambda = 0;
   for (std::size_t i = 0; i < s; ++i) {
@@ -166,19 +199,7 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   }
   out.thermal_conductivity = lambda / kappa0;
   for (std::size_t j = 0; j < s; ++j) {
-    Eigen::VectorXd sb(S * n);
-    for (std::size_t i = 0; i < s; ++i) {
-      const auto I = static_cast<Eigen::Index>(i) * n;
-      const double g = sensitivity_.temperature_ratio[i * s + j];
-      // (17.6): −θ_i^{−1/2}[δ_ij M(p,0) + x_i (∂_j ln γ_i ⟨x S_p (x − d/2)⟩ − θ_i M(p,0))]
-      sb.segment(I, n) =
-          -1 / std::sqrt(theta_[i]) *
-          ((i == j ? 1.0 : 0.0) * mv.col(0) + fraction_[i] * (g * (mv.col(0) - mv.col(1)) - theta_[i] * mv.col(0)));
-    }
-    const double dzeta = sensitivity_.cooling_rate[j] * 4 * std::sqrt(2.0) * c_d / (d + 2);
-    sb += dzeta * (mass_block * a);
-    sb(major * n) = 0;
-    const Eigen::VectorXd b = lu_b.solve(sb);
+    const Eigen::VectorXd& b = modes.density[j];
     double heat = 0;
     for (std::size_t i = 0; i < s; ++i) {
       const auto I = static_cast<Eigen::Index>(i) * n;
@@ -191,7 +212,7 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
     for (std::size_t j = 0; j < s; ++j)
       out.pressure_diffusion[i] += mass_[i] * mass_[j] * fraction_[j] * out.mutual_diffusion[i * s + j];
 
-  species_drift(order, self + cross * weight.asDiagonal(), out);
+  species_drift(order, self, cross, out);
 
   // Shear mode: X_k = (f_k/n_k) Σ_q φ̃_kq Y_2(c_k) S_q, source −2 x_i ((d−1)/d) ⟨x² S_p⟩ (17.11).
   const int nt = order;
@@ -211,54 +232,19 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   return out;
 }
 
-void MixtureNavierStokes::species_drift(int order, const Eigen::MatrixXd& per_particle,
+void MixtureNavierStokes::species_drift(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
                                         MixtureTransportValues& out) const {
-  // (17.13): per particle of the row's species — rows divided by x_i, unknowns φ_i = φ̃_i/x_i, so the
-  // operator's cross part carries x_j — every quantity stays finite as a species becomes a tracer.
-  // Heat mode 𝒜 and the ∇ln n_j modes ℬ^j (coefficient of ∇ln n_j, hence the factor x_j).
-  const int d = mixture_.dimension;
+  // (17.13): every quantity stays finite as a species becomes a tracer.
+  const int d = dimension_;
   const int n = order + 1;
-  const auto S = static_cast<Eigen::Index>(s_);
-  const Eigen::MatrixXd dv = vector_d_.topLeftCorner(n, n), mv = vector_m_.topLeftCorner(n, n);
-  const double dzeta_unit = 4 * std::sqrt(2.0) * geometric_factor(d) / (d + 2);
-  Eigen::MatrixXd ka = per_particle, kb = per_particle;
-  for (Eigen::Index i = 0; i < S; ++i) {
-    ka.block(i * n, i * n, n, n) += zeta_ * (dv - 0.5 * mv);
-    kb.block(i * n, i * n, n, n) += zeta_ * dv;
-  }
-  const auto major =
-      static_cast<Eigen::Index>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
-  for (Eigen::MatrixXd* k : {&ka, &kb}) {
-    k->row(major * n).setZero();
-    for (Eigen::Index j = 0; j < S; ++j) {
-      const auto J = static_cast<std::size_t>(j);
-      (*k)(major * n, j * n) = fraction_[J] * mass_[J] / std::sqrt(theta_[J]);
-    }
-  }
-  Eigen::VectorXd sa(S * n);
-  for (std::size_t i = 0; i < s_; ++i)
-    sa.segment(static_cast<Eigen::Index>(i) * n, n) =
-        -1 / std::sqrt(theta_[i]) * ((1 - theta_[i]) * mv.col(0) - mv.col(1));
-  sa(major * n) = 0;
-  const Eigen::VectorXd a = ka.partialPivLu().solve(sa);
-  const auto lu = kb.partialPivLu();
+  const VectorModes modes = vector_modes(order, self, cross, true);
   // Specific fluxes ∫V·X_i/x_i = θ_i^{−1/2} M(0,0) φ_i0: heat[i] (∇ln T), density[i][j] (∇ln n_j).
   std::vector<double> heat(s_);
   std::vector<std::vector<double>> density(s_, std::vector<double>(s_));
-  for (std::size_t i = 0; i < s_; ++i) heat[i] = a(static_cast<Eigen::Index>(i) * n) / std::sqrt(theta_[i]);
-  for (std::size_t j = 0; j < s_; ++j) {
-    Eigen::VectorXd sb(S * n);
-    for (std::size_t i = 0; i < s_; ++i) {
-      const double g = sensitivity_.temperature_ratio[i * s_ + j];
-      sb.segment(static_cast<Eigen::Index>(i) * n, n) =
-          -1 / std::sqrt(theta_[i]) *
-          ((i == j ? 1.0 : 0.0) * mv.col(0) + fraction_[j] * (g * (mv.col(0) - mv.col(1)) - theta_[i] * mv.col(0)));
-    }
-    const double dzeta = sensitivity_.cooling_rate[j] * dzeta_unit * fraction_[j];
-    for (Eigen::Index i = 0; i < S; ++i) sb.segment(i * n, n) += dzeta * (mv * a.segment(i * n, n));
-    sb(major * n) = 0;
-    const Eigen::VectorXd b = lu.solve(sb);
-    for (std::size_t i = 0; i < s_; ++i) density[i][j] = b(static_cast<Eigen::Index>(i) * n) / std::sqrt(theta_[i]);
+  for (std::size_t i = 0; i < s_; ++i) {
+    const auto I = static_cast<Eigen::Index>(i) * n;
+    heat[i] = modes.heat(I) / std::sqrt(theta_[i]);
+    for (std::size_t j = 0; j < s_; ++j) density[i][j] = modes.density[j](I) / std::sqrt(theta_[i]);
   }
   // w_i = (1/d) M(0,0) × the specific fluxes, in units of D0 (d/(4√2 c_d) in the units of (16.11)).
   const double to_drift = vector_m_(0, 0) / d * 4 * std::sqrt(2.0) * geometric_factor(d) / d;
