@@ -176,89 +176,16 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
   out.cumulants.assign(s, std::vector<double>(static_cast<std::size_t>(sonine_order) + 1, 0.0));
   for (auto& c : out.cumulants) c[0] = 1;
   bool fixed_point = true;
-  if (scheme == MixtureHcsScheme::linear) {
-    // Linear scheme at any K (theory.md §16.3): for every species and p = 2 … K,
-    // p[ζ_i^M ⟨X^p⟩_i(a) + δζ_i(a) M_p] + Λ Σ_j c_ij Δ^p_ij(a) = 0, every term linear in the a_k;
-    // ⟨X^p⟩_i(a) = M_p + Σ_k a_k,i ⟨X^p S_k⟩, M_p = (d/2)_p. Then γ with the a-terms of ζ_i held.
+  if (scheme != MixtureHcsScheme::maxwellian) {
+    // Cumulants a_2 … a_K of every species (theory.md §16.3, (16.8)): for every species and p = 2 … K,
+    // p ζ_i(a) ⟨X^p⟩_i(a) + Λ B^p_i(a) = 0, B^p_i = Σ_j c_ij Σ_{k,l} A_ik A_jl Δ^p_ij[k,l] (A_i0 = 1,
+    // A_ik = a_k,i), ζ_i = −(2/d) Λ B^1_i, ⟨X^p⟩_i(a) = M_p + Σ_k a_k,i ⟨X^p S_k⟩. The nonlinear scheme
+    // keeps every product; the linear one drops the a_k,i a_l,j terms of B and the product
+    // (ζ_i − ζ_i^M)(⟨X^p⟩_i − M_p), so that Newton's method is exact in one step. Newton at fixed γ,
+    // then γ with the a-terms of ζ_i held, until both stop moving.
+    const bool products = scheme == MixtureHcsScheme::nonlinear;
     const int K = sonine_order;
     const auto nk = static_cast<std::size_t>(K - 1);  // a_2 … a_K per species
-    const auto n = static_cast<Eigen::Index>(s * nk);
-    const double lam = lambda(d);
-    const CumulantOverlaps ov = cumulant_overlaps(d, K);
-    const std::vector<std::vector<double>>& overlap = ov.overlap;
-    const std::vector<double>& moment = ov.moment;
-    auto index = [&](std::size_t i, int k) {
-      return static_cast<Eigen::Index>(i * nk + static_cast<std::size_t>(k - 2));
-    };
-    Eigen::VectorXd a = Eigen::VectorXd::Zero(n);
-    fixed_point = false;
-    for (int outer = 0; outer < 50 && !fixed_point; ++outer) {
-      std::vector<PairCumulantMoments> pm(s * s);
-      std::vector<double> c(s * s), th(s);
-      for (std::size_t i = 0; i < s; ++i) th[i] = theta(mixture, i, gamma[i]);
-      for (std::size_t i = 0; i < s; ++i)
-        for (std::size_t j = 0; j < s; ++j) {
-          pm[i * s + j] = pair_cumulant_moments(mixture, i, j, th[i], th[j], K);
-          c[i * s + j] = pair_weight(mixture, out.chi, i, j, th[i], th[j]);
-        }
-      Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-      for (std::size_t i = 0; i < s; ++i) {
-        // ζ_i^M and the coefficients of δζ_i in the a's.
-        double zeta_m = 0;
-        Eigen::VectorXd dzeta = Eigen::VectorXd::Zero(n);
-        for (std::size_t j = 0; j < s; ++j) {
-          const PairCumulantMoments& q = pm[i * s + j];
-          const double w = -2.0 / d * lam * c[i * s + j];
-          zeta_m += w * q(1, 0, 0);
-          for (int k = 2; k <= K; ++k) {
-            dzeta(index(i, k)) += w * q(1, k, 0);
-            dzeta(index(j, k)) += w * q(1, 0, k);
-          }
-        }
-        for (int p = 2; p <= K; ++p) {
-          const Eigen::Index row = index(i, p);
-          const auto P = static_cast<std::size_t>(p);
-          rhs(row) -= p * zeta_m * moment[P];
-          for (int k = 2; k <= std::min(p, K); ++k)
-            m(row, index(i, k)) += p * zeta_m * overlap[P][static_cast<std::size_t>(k)];
-          m.row(row) += p * moment[P] * dzeta.transpose();
-          for (std::size_t j = 0; j < s; ++j) {
-            const PairCumulantMoments& q = pm[i * s + j];
-            const double v = lam * c[i * s + j];
-            rhs(row) -= v * q(p, 0, 0);
-            for (int k = 2; k <= K; ++k) {
-              m(row, index(i, k)) += v * q(p, k, 0);
-              m(row, index(j, k)) += v * q(p, 0, k);
-            }
-          }
-        }
-      }
-      const Eigen::VectorXd start = a;
-      a = m.fullPivLu().solve(rhs);
-      correction.assign(s * s, 0.0);
-      for (std::size_t i = 0; i < s; ++i)
-        for (std::size_t j = 0; j < s; ++j)
-          for (int k = 2; k <= K; ++k)
-            correction[i * s + j] += a(index(i, k)) * pm[i * s + j](1, k, 0) + a(index(j, k)) * pm[i * s + j](1, 0, k);
-      const std::vector<double> before = gamma;
-      solve_equal_rates(mixture, gamma, rates_at);
-      double change = (a - start).lpNorm<Eigen::Infinity>();
-      for (std::size_t i = 0; i < s; ++i) change = std::max(change, std::abs(gamma[i] - before[i]));
-      out.iterations = outer + 1;
-      fixed_point = change < 1e-12;
-    }
-    for (std::size_t i = 0; i < s; ++i) {
-      for (int k = 2; k <= K; ++k) out.cumulants[i][static_cast<std::size_t>(k)] = a(index(i, k));
-      out.a2[i] = out.cumulants[i][2];
-    }
-  } else if (scheme == MixtureHcsScheme::nonlinear) {
-    // Nonlinear scheme at any K (theory.md §16.3): the same X^p balances with every product kept,
-    // p ζ_i(a) ⟨X^p⟩_i(a) + Λ B^p_i(a) = 0, B^p_i = Σ_j c_ij Σ_{k,l} A_ik A_jl Δ^p_ij[k,l] (A_i0 = 1,
-    // A_ik = a_k,i), ζ_i = −(2/d) Λ B^1_i; Newton's method with the exact Jacobian at fixed γ, then γ
-    // with the a-terms of ζ_i held, until both stop moving.
-    const int K = sonine_order;
-    const auto nk = static_cast<std::size_t>(K - 1);
     const auto n = static_cast<Eigen::Index>(s * nk);
     const double lam = lambda(d);
     const CumulantOverlaps ov = cumulant_overlaps(d, K);
@@ -267,6 +194,7 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
     };
     Eigen::VectorXd a = Eigen::VectorXd::Zero(n);
     auto coefficient = [&](std::size_t i, int k) { return k == 0 ? 1.0 : k == 1 ? 0.0 : a(index(i, k)); };
+    auto kept = [&](int k, int l) { return k != 1 && l != 1 && (products || k == 0 || l == 0); };
     fixed_point = false;
     for (int outer = 0; outer < 50 && !fixed_point; ++outer) {
       std::vector<PairCumulantMoments> pm(s * s);
@@ -284,7 +212,7 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
           const PairCumulantMoments& q = pm[i * s + j];
           for (int k = 0; k <= K; ++k)
             for (int l = 0; l <= K; ++l) {
-              if (k == 1 || l == 1) continue;
+              if (!kept(k, l)) continue;
               const double term = c[i * s + j] * q(p, k, l);
               value += term * coefficient(i, k) * coefficient(j, l);
               if (k >= 2) gradient(index(i, k)) += term * coefficient(j, l);
@@ -300,6 +228,9 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
         Eigen::MatrixXd jacobian(n, n);
         for (std::size_t i = 0; i < s; ++i) {
           const double zeta = -2.0 / d * lam * bilinear(i, 1, g1);
+          double zeta_m = 0;  // ζ_i^M: the a-free part
+          for (std::size_t j = 0; j < s; ++j) zeta_m += -2.0 / d * lam * c[i * s + j] * pm[i * s + j](1, 0, 0);
+          const Eigen::VectorXd dzeta = -2.0 / d * lam * g1;
           for (int p = 2; p <= K; ++p) {
             const auto P = static_cast<std::size_t>(p);
             double xp = ov.moment[P];
@@ -310,8 +241,10 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
             }
             const double bp = bilinear(i, p, gp);
             const Eigen::Index row = index(i, p);
-            residual(row) = p * zeta * xp + lam * bp;
-            jacobian.row(row) = (p * (-2.0 / d * lam) * xp * g1 + p * zeta * dxp + lam * gp).transpose();
+            // ζ⟨X^p⟩ whole, or ζ^M ⟨X^p⟩ + (ζ − ζ^M) M_p without the product.
+            const double zeta_x = products ? zeta : zeta_m, x_zeta = products ? xp : ov.moment[P];
+            residual(row) = p * (zeta_x * xp + (zeta - zeta_x) * x_zeta) + lam * bp;
+            jacobian.row(row) = (p * (x_zeta * dzeta + zeta_x * dxp) + lam * gp).transpose();
           }
         }
         const Eigen::VectorXd step = jacobian.fullPivLu().solve(-residual);
@@ -323,7 +256,7 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
         for (std::size_t j = 0; j < s; ++j)
           for (int k = 0; k <= K; ++k)
             for (int l = 0; l <= K; ++l)
-              if (k != 1 && l != 1 && (k != 0 || l != 0))
+              if (kept(k, l) && (k != 0 || l != 0))
                 correction[i * s + j] += coefficient(i, k) * coefficient(j, l) * pm[i * s + j](1, k, l);
       const std::vector<double> before = gamma;
       solve_equal_rates(mixture, gamma, rates_at);
