@@ -285,7 +285,8 @@ class MixtureModel final : public TransportModel {
       return detail::choose_order(order, kMaxOrder, [&](int n) {
         detail::OrderValue v;
         v.exact = false;
-        const double a = pick(at(m, n)), b = pick(at(m, n + 1)), c = pick(at(m, n + 2));
+        // Highest order first: the operator is then built once to n + 2, not to n and again larger.
+        const double c = pick(at(m, n + 2)), b = pick(at(m, n + 1)), a = pick(at(m, n));
         v.defined = std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
         if (v.defined)
           v.estimate =
