@@ -9,13 +9,11 @@
 #include "gkt/collision_moments.hpp"
 #include "transport/galerkin_pieces.hpp"
 #include "transport/nearby_rational.hpp"
+#include "transport/reference_gas.hpp"
 
 namespace gkt {
 
 namespace {
-
-/// c_d = π^{(d−1)/2}/Γ(d/2): (θ_iθ_j)^{d/2} J0_ij π^{−d} = c_d √(1/θ_i + 1/θ_j) (theory.md (16.4)).
-double geometric_factor(int d) { return std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0); }
 
 Eigen::MatrixXd to_matrix(const std::vector<std::vector<double>>& m) {
   Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(m.size()));
@@ -68,14 +66,14 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
   state_ = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
   sensitivity_ = mixture_cooling_sensitivity(mixture, state_);
   const int d = mixture.dimension;
-  const double c_d = geometric_factor(d);
+  const double c_d = detail::geometric_factor(d);
   // Units n = 1, m̄ = 1, σ̄ = 1, velocity √(2T/m̄) = 1 (so T = 1/2): θ_k = m_k/γ_k.
   for (std::size_t k = 0; k < s_; ++k) {
     mass_.push_back(mixture.species[k].mass / mixture.mean_mass());
     theta_.push_back(mass_[k] / state_.temperature_ratio[k]);
     fraction_.push_back(mixture.species[k].fraction);
   }
-  nu0_ = 4 * std::sqrt(2.0) * c_d / (d + 2);
+  nu0_ = detail::unit_reference_gas(d).collision_frequency;
   zeta_ = state_.cooling_rate * nu0_;
   const int nv = max_order + 1, nt = max_order;
   const auto S = static_cast<Eigen::Index>(s_);
@@ -171,10 +169,8 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   const int d = dimension_;
   const std::size_t s = s_;
   const auto S = static_cast<Eigen::Index>(s);
-  const double c_d = geometric_factor(d);
-  const double eta0 = (d + 2) / (8 * std::sqrt(2.0) * c_d);  // η0 = ((d+2)Γ(d/2)/(8π^{(d−1)/2}))√(m̄T)/σ̄^{d−1}
-  const double kappa0 = d * (d + 2) / (2.0 * (d - 1)) * eta0;
-  const double d0 = d / (4 * std::sqrt(2.0) * c_d);  // D0 = (dΓ(d/2)/(4π^{(d−1)/2}))√(T/m̄)/(nσ̄^{d−1})
+  const detail::ReferenceGas ref = detail::unit_reference_gas(d);  // η0, κ0, D0 of (m̄, σ̄) in these units
+  const double eta0 = ref.viscosity, kappa0 = ref.conductivity, d0 = ref.self_diffusion;
   const double temperature = 0.5;
 
   // Vector modes (theory.md (17.5)–(17.6)): unknowns φ̃_kq, X_k = (f_k/n_k) Σ_q φ̃_kq c_k S_q(θ_k V²).
@@ -246,8 +242,8 @@ void MixtureNavierStokes::species_drift(int order, const Eigen::MatrixXd& self, 
     heat[i] = modes.heat(I) / std::sqrt(theta_[i]);
     for (std::size_t j = 0; j < s_; ++j) density[i][j] = modes.density[j](I) / std::sqrt(theta_[i]);
   }
-  // w_i = (1/d) M(0,0) × the specific fluxes, in units of D0 (d/(4√2 c_d) in the units of (16.11)).
-  const double to_drift = vector_m_(0, 0) / d * 4 * std::sqrt(2.0) * geometric_factor(d) / d;
+  // w_i = (1/d) M(0,0) × the specific fluxes, in units of D0.
+  const double to_drift = vector_m_(0, 0) / d / detail::unit_reference_gas(d).self_diffusion;
   out.drift.assign(s_ * s_, 0.0);
   out.thermal_drift.assign(s_, 0.0);
   for (std::size_t i = 0; i < s_; ++i) {

@@ -7,8 +7,12 @@
 #include <string>
 
 #include "gkt/mixture_navier_stokes.hpp"
+#include "transport/reference_gas.hpp"
 
 namespace gkt {
+
+using detail::reference_gas;
+using detail::ReferenceGas;
 
 std::array<double, BinaryTransportTable::kReduced> BinaryTransportTable::solve(const Mixture& mixture, int order) {
   const MixtureNavierStokes ns(mixture, order);
@@ -82,14 +86,11 @@ BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double tempe
   const int d = dimension_;
   const double x[2] = {x1, 1 - x1};
   const double mbar = x[0] * mass_[0] + x[1] * mass_[1], sbar = x[0] * diameter_[0] + x[1] * diameter_[1];
-  // Reference gas (m̄, σ̄) at n, T (docs/conventions.md): η0, κ0, D0 and ν0 = nT/η0.
-  const double c = std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
-  const double area = std::pow(sbar, d - 1);
-  const double eta0 = (d + 2) / (8 * c) * std::sqrt(mbar * temperature) / area;
-  const double kappa0 = d * (d + 2) / (2.0 * (d - 1)) * eta0 / mbar;
-  const double d0 = d / (4 * c) * std::sqrt(temperature / mbar) / (n * area);
+  // Reference gas (m̄, σ̄) at n, T (docs/conventions.md).
+  const ReferenceGas ref = reference_gas(d, mbar, sbar, n, temperature);
+  const double eta0 = ref.viscosity, kappa0 = ref.conductivity, d0 = ref.self_diffusion;
   BinaryTransport out;
-  out.cooling_rate = r[0] * n * temperature / eta0;
+  out.cooling_rate = r[0] * ref.collision_frequency;
   out.temperature_ratio = {r[1], r[2]};
   out.shear_viscosity = r[3] * eta0;
   out.thermal_conductivity = r[4] * kappa0;
