@@ -108,6 +108,17 @@ HcsStability mixture_hcs_stability(const MixtureStabilityInput& in) {
     for (const auto& r : roots)
       if (r.real() > 0 && std::abs(r.imag()) <= 1e-9 * std::abs(r)) largest = std::max(largest, r.real());
   }
+  // The interpolated polynomial locates the root but amplifies rounding (~10³); polish it by the
+  // secant method on det M itself, a simple root at k∥c*².
+  if (largest > 0) {
+    auto det = [&](double z) { return mixture_longitudinal_matrix(in, std::sqrt(z)).determinant().real(); };
+    double z0 = largest, z1 = largest * (1 + 1e-6), f0 = det(z0), f1 = det(z1);
+    for (int k = 0; k < 30 && f1 != f0 && std::abs(z1 - z0) > 1e-16 * z1; ++k) {
+      const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
+      z0 = z1, f0 = f1, z1 = z2, f1 = det(z2);
+    }
+    if (std::abs(z1 / largest - 1) < 1e-6) largest = z1;  // keep the interpolated root if the secant wanders
+  }
   out.heat_wavenumber = std::sqrt(largest);
   out.critical_length = critical_length(std::max(out.shear_wavenumber, out.heat_wavenumber));
   return out;
