@@ -14,6 +14,36 @@
 
 namespace gkt::test {
 
+/// Returns σ̂ with density ∝ (σ̂·ĝ)_+ on the half sphere (d = 3) or half circle (d = 2):
+/// σ̂ = cosθ ĝ + sinθ ê⊥ with density ∝ cosθ, ê⊥ uniform in azimuth.
+inline std::array<double, 3> collision_direction(gsl_rng* rng, int d, const std::array<double, 3>& ghat) {
+  std::array<double, 3> sigma{0, 0, 0};
+  if (d == 3) {
+    const double cos_t = std::sqrt(gsl_rng_uniform(rng)), sin_t = std::sqrt(1 - cos_t * cos_t);
+    std::array<double, 3> e{0, 0, 0};
+    do {  // a unit vector orthogonal to ĝ, uniform in azimuth
+      for (int k = 0; k < 3; ++k) e[k] = gsl_ran_gaussian(rng, 1.0);
+      const double proj = e[0] * ghat[0] + e[1] * ghat[1] + e[2] * ghat[2];
+      for (int k = 0; k < 3; ++k) e[k] -= proj * ghat[k];
+    } while (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] < 1e-12);
+    const double en = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    for (int k = 0; k < 3; ++k) sigma[k] = cos_t * ghat[k] + sin_t * e[k] / en;
+  } else {
+    const double sin_t = 2 * gsl_rng_uniform(rng) - 1, cos_t = std::sqrt(1 - sin_t * sin_t);
+    sigma = {cos_t * ghat[0] - sin_t * ghat[1], cos_t * ghat[1] + sin_t * ghat[0], 0};
+  }
+  return sigma;
+}
+
+/// Returns the mean of batch values and its standard error (batches taken as independent).
+inline void batch_mean(const std::vector<double>& x, double& mean, double& error) {
+  mean = 0;
+  for (double y : x) mean += y / static_cast<double>(x.size());
+  double var = 0;
+  for (double y : x) var += (y - mean) * (y - mean) / static_cast<double>(x.size() - 1);
+  error = std::sqrt(var / static_cast<double>(x.size()));
+}
+
 /// Sample means of the reduced moments ⟨c^4⟩, ⟨c^6⟩ (c = v/√(2T/m)) with batch-mean errors.
 struct HcsMoments {
   double c4 = 0, c4_error = 0, c6 = 0, c6_error = 0;
@@ -67,22 +97,8 @@ inline HcsMoments run_hcs_dsmc(int d, double alpha, int particles, double relax,
       }
       gn = std::sqrt(gn);
       if (gsl_rng_uniform(rng) * gmax >= gn) continue;
-      // σ̂ = cosθ ĝ + sinθ ê⊥ with density ∝ cosθ (θ ∈ [0, π/2]) on the half sphere/circle.
-      std::array<double, 3> ghat{g[0] / gn, g[1] / gn, g[2] / gn}, sigma{0, 0, 0};
-      if (d == 3) {
-        const double cos_t = std::sqrt(gsl_rng_uniform(rng)), sin_t = std::sqrt(1 - cos_t * cos_t);
-        std::array<double, 3> e{0, 0, 0};
-        do {  // a unit vector orthogonal to ĝ, uniform in azimuth
-          for (int k = 0; k < 3; ++k) e[k] = gsl_ran_gaussian(rng, 1.0);
-          const double proj = e[0] * ghat[0] + e[1] * ghat[1] + e[2] * ghat[2];
-          for (int k = 0; k < 3; ++k) e[k] -= proj * ghat[k];
-        } while (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] < 1e-12);
-        const double en = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-        for (int k = 0; k < 3; ++k) sigma[k] = cos_t * ghat[k] + sin_t * e[k] / en;
-      } else {
-        const double sin_t = 2 * gsl_rng_uniform(rng) - 1, cos_t = std::sqrt(1 - sin_t * sin_t);
-        sigma = {cos_t * ghat[0] - sin_t * ghat[1], cos_t * ghat[1] + sin_t * ghat[0], 0};
-      }
+      const std::array<double, 3> ghat{g[0] / gn, g[1] / gn, g[2] / gn};
+      const std::array<double, 3> sigma = collision_direction(rng, d, ghat);
       double sg = 0;
       for (int k = 0; k < d; ++k) sg += sigma[k] * g[k];
       for (int k = 0; k < d; ++k) {
@@ -112,16 +128,9 @@ inline HcsMoments run_hcs_dsmc(int d, double alpha, int particles, double relax,
     c6s.push_back(c6);
   }
   gsl_rng_free(rng);
-  auto mean_error = [](const std::vector<double>& x, double& mean, double& error) {
-    mean = 0;
-    for (double y : x) mean += y / x.size();
-    double var = 0;
-    for (double y : x) var += (y - mean) * (y - mean) / (x.size() - 1);
-    error = std::sqrt(var / x.size());
-  };
   HcsMoments m;
-  mean_error(c4s, m.c4, m.c4_error);
-  mean_error(c6s, m.c6, m.c6_error);
+  batch_mean(c4s, m.c4, m.c4_error);
+  batch_mean(c6s, m.c6, m.c6_error);
   return m;
 }
 

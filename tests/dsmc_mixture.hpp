@@ -13,6 +13,8 @@
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 
+#include "dsmc.hpp"
+
 namespace gkt::test {
 
 /// Batch means with their standard errors: T_i/T and a2,i = ⟨c⁴⟩_i/(d(d+2)/4) − 1 per species.
@@ -82,21 +84,8 @@ inline MixtureHcsSample run_mixture_hcs_dsmc(int d, const std::vector<int>& coun
       gn = std::sqrt(gn);
       const double weight = std::pow(0.5 * (diameter[a] + diameter[b]), d - 1) / sigma_max;
       if (gsl_rng_uniform(rng) * gmax >= weight * gn) continue;
-      std::array<double, 3> ghat{g[0] / gn, g[1] / gn, g[2] / gn}, sigma{0, 0, 0};
-      if (d == 3) {
-        const double cos_t = std::sqrt(gsl_rng_uniform(rng)), sin_t = std::sqrt(1 - cos_t * cos_t);
-        std::array<double, 3> e{0, 0, 0};
-        do {
-          for (int k = 0; k < 3; ++k) e[k] = gsl_ran_gaussian(rng, 1.0);
-          const double proj = e[0] * ghat[0] + e[1] * ghat[1] + e[2] * ghat[2];
-          for (int k = 0; k < 3; ++k) e[k] -= proj * ghat[k];
-        } while (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] < 1e-12);
-        const double en = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-        for (int k = 0; k < 3; ++k) sigma[k] = cos_t * ghat[k] + sin_t * e[k] / en;
-      } else {
-        const double sin_t = 2 * gsl_rng_uniform(rng) - 1, cos_t = std::sqrt(1 - sin_t * sin_t);
-        sigma = {cos_t * ghat[0] - sin_t * ghat[1], cos_t * ghat[1] + sin_t * ghat[0], 0};
-      }
+      const std::array<double, 3> ghat{g[0] / gn, g[1] / gn, g[2] / gn};
+      const std::array<double, 3> sigma = collision_direction(rng, d, ghat);
       double sg = 0;
       for (int k = 0; k < d; ++k) sg += sigma[k] * g[k];
       // v1' = v1 − μ_ji(1+α)(σ̂·g)σ̂, v2' = v2 + μ_ij(1+α)(σ̂·g)σ̂ (seed 003; theory.md (2.1)).
@@ -132,21 +121,14 @@ inline MixtureHcsSample run_mixture_hcs_dsmc(int d, const std::vector<int>& coun
     }
   }
   gsl_rng_free(rng);
-  auto mean_error = [](const std::vector<double>& x, double& mean, double& error) {
-    mean = 0;
-    for (double y : x) mean += y / static_cast<double>(x.size());
-    double var = 0;
-    for (double y : x) var += (y - mean) * (y - mean) / static_cast<double>(x.size() - 1);
-    error = std::sqrt(var / static_cast<double>(x.size()));
-  };
   MixtureHcsSample out;
   out.temperature_ratio.resize(s);
   out.temperature_ratio_error.resize(s);
   out.a2.resize(s);
   out.a2_error.resize(s);
   for (std::size_t a = 0; a < s; ++a) {
-    mean_error(ratio[a], out.temperature_ratio[a], out.temperature_ratio_error[a]);
-    mean_error(a2[a], out.a2[a], out.a2_error[a]);
+    batch_mean(ratio[a], out.temperature_ratio[a], out.temperature_ratio_error[a]);
+    batch_mean(a2[a], out.a2[a], out.a2_error[a]);
   }
   return out;
 }
