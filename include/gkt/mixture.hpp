@@ -37,6 +37,9 @@ struct Mixture {
   /// Returns χ_ij at i·s + j: Boublík–Grundke–Henderson–Lee–Mansoori in 3D, Jenkins–Mancini in
   /// 2D (theory.md (16.1)); each reduces to the one-component closure for identical species.
   [[nodiscard]] std::vector<double> contact_values() const;
+  /// Returns n ∂χ_ij/∂n_l at fixed T and fixed n_k (k ≠ l), at (i·s + j)·s + l: the derivative of
+  /// the same closures through φ = Σ_k n_k v_d σ_k^d and their second diameter moment (theory.md (18.1)).
+  [[nodiscard]] std::vector<double> contact_value_derivatives() const;
 };
 
 /// Returns a mixture with one α for every pair.

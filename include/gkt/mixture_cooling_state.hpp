@@ -47,16 +47,16 @@ struct MixtureCoolingState {
 MixtureCoolingState mixture_cooling_state(const Mixture& mixture,
                                           MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian, int sonine_order = 2);
 
-/// How the Maxwellian HCS of a dilute mixture responds to the partial densities at fixed T.
+/// How the Maxwellian HCS of a mixture responds to the partial densities at fixed T.
 struct MixtureCoolingSensitivity {
   std::vector<double> temperature_ratio;  ///< n ∂ln γ_i/∂n_j at i·s + j
   std::vector<double> cooling_rate;       ///< n (∂ζ/∂n_j)/ν0, ν0 of (16.4) held at the state
 };
 
-/// Returns the derivatives of the Maxwellian HCS `state` of the dilute `mixture` with respect to
+/// Returns the derivatives of the Maxwellian HCS `state` of the `mixture` with respect to
 /// the partial densities n_j at fixed T and fixed n_k (k ≠ j), by implicit differentiation of
-/// ζ_1 = … = ζ_s, Σ_k n_k γ_k = n (theory.md (16.11)); exact up to rounding. Throws
-/// std::invalid_argument for φ > 0 (the χ_ij derivatives are not implemented).
+/// ζ_1 = … = ζ_s, Σ_k n_k γ_k = n (theory.md (16.11)), with the contact values' own density
+/// dependence in the dense gas (theory.md (18.1)); exact up to rounding.
 MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureCoolingState& state);
 
 }  // namespace gkt

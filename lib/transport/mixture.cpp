@@ -90,6 +90,39 @@ std::vector<double> Mixture::contact_values() const {
   return chi;
 }
 
+std::vector<double> Mixture::contact_value_derivatives() const {
+  const std::size_t s = size();
+  const double phi = packing_fraction, g = 1 - phi;
+  double m1 = 0, m2 = 0, m3 = 0;
+  for (const auto& sp : species) {
+    m1 += sp.fraction * sp.diameter;
+    m2 += sp.fraction * sp.diameter * sp.diameter;
+    m3 += sp.fraction * sp.diameter * sp.diameter * sp.diameter;
+  }
+  // χ_ij = F(φ, y) with a = σ_iσ_j/σ_ij: 3D y = φ M2/M3 (φ ∝ Σ n_k σ_k³, y ∝ Σ n_k σ_k²), 2D y = φ M1/M2
+  // (φ ∝ Σ n_k σ_k², y ∝ Σ n_k σ_k); n ∂χ/∂n_l = F_φ n ∂φ/∂n_l + F_y n ∂y/∂n_l.
+  std::vector<double> out(s * s * s);
+  const double top = dimension == 3 ? m3 : m2, y = phi * (dimension == 3 ? m2 / m3 : m1 / m2);
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t j = 0; j < s; ++j) {
+      const double si = species[i].diameter, sj = species[j].diameter, a = si * sj / (0.5 * (si + sj));
+      double f_phi = 0, f_y = 0;
+      if (dimension == 3) {
+        f_phi = 1 / (g * g) + 3 * a * y / (g * g * g) + 1.5 * a * a * y * y / (g * g * g * g);
+        f_y = 1.5 * a / (g * g) + a * a * y / (g * g * g);
+      } else {
+        f_phi = 1 / (g * g) + (9.0 / 8.0) * a * y / (g * g * g);
+        f_y = (9.0 / 16.0) * a / (g * g);
+      }
+      for (std::size_t l = 0; l < s; ++l) {
+        const double sl = species[l].diameter, sl_top = dimension == 3 ? sl * sl * sl : sl * sl;
+        const double sl_y = dimension == 3 ? sl * sl : sl;
+        out[(i * s + j) * s + l] = phi / top * (f_phi * sl_top + f_y * sl_y);
+      }
+    }
+  return out;
+}
+
 Mixture make_mixture(int dimension, std::vector<Species> species, double alpha, double packing_fraction) {
   Mixture m{dimension, std::move(species), {}, packing_fraction};
   m.alpha.assign(m.size() * m.size(), alpha);

@@ -281,11 +281,11 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
 }
 
 MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureCoolingState& state) {
-  if (mixture.packing_fraction != 0)
-    throw std::invalid_argument("packing_fraction: the mixture's HCS derivatives are implemented for 0 only");
   // Fixed units n = 1, m̄ = 1, σ̄ = 1, T = 1/2 (velocity unit √(2T/m̄)), θ_k = m_k/γ_k. Then
-  // ζ_i = −(2c_d/d) Σ_l n_l σ_il^{d−1} w_il E_il(θ_i/θ_l), w_il = √(γ_i/m_i + γ_l/m_l), E_il of (16.3):
-  // (16.4) before the reduction by ν0 = 4√2 c_d/(d+2); `zeta` below omits the factor 2c_d/d.
+  // ζ_i = −(2c_d/d) Σ_l n_l χ_il σ_il^{d−1} w_il E_il(θ_i/θ_l), w_il = √(γ_i/m_i + γ_l/m_l), E_il of
+  // (16.3): (16.4) before the reduction by ν0 = 4√2 c_d/(d+2); `zeta` below omits the factor 2c_d/d.
+  // In the dense gas χ_il depends on every n_j (theory.md (18.1)).
+  const std::vector<double> chi = mixture.contact_values(), dchi = mixture.contact_value_derivatives();
   const std::size_t s = mixture.size();
   const int d = mixture.dimension;
   const double mbar = mixture.mean_mass(), sbar = mixture.mean_diameter();
@@ -308,13 +308,16 @@ MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, co
       const double w = std::sqrt(g[i] / m[i] + g[l] / m[l]);
       const double r = m[i] * g[l] / (m[l] * g[i]);  // θ_i/θ_l
       const double e = pair_energy_change(mu, a, r), de = mu * mu * (1 + a) * (1 + a);
-      zeta(I) += f * x[l] * w * e;
-      dn(I, L) += f * w * e;
+      const double c = chi[i * s + l], fc = f * c;
+      zeta(I) += fc * x[l] * w * e;
+      dn(I, L) += fc * w * e;
+      for (std::size_t j = 0; j < s; ++j)
+        dn(I, static_cast<Eigen::Index>(j)) += f * x[l] * w * e * dchi[(i * s + l) * s + j];
       if (l == i) {
-        dF(I, I) += f * x[l] * e / (m[i] * w);
+        dF(I, I) += fc * x[l] * e / (m[i] * w);
       } else {
-        dF(I, I) += f * x[l] * (e / (2 * m[i] * w) - w * de * r / g[i]);
-        dF(I, L) += f * x[l] * (e / (2 * m[l] * w) + w * de * r / g[l]);
+        dF(I, I) += fc * x[l] * (e / (2 * m[i] * w) - w * de * r / g[i]);
+        dF(I, L) += fc * x[l] * (e / (2 * m[l] * w) + w * de * r / g[l]);
       }
     }
   // Rows 0 … s−2: d(ζ_i − ζ_{s−1}) = 0; row s−1: d(Σ_k n_k γ_k − n) = 0 (∂/∂n_j of it: γ_j − 1).
