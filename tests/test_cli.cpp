@@ -208,6 +208,17 @@ TEST(CliGolden, MixtureTransport) {
   EXPECT_NE(same.out.find(",1.70666666666666"), std::string::npos) << same.out;
 }
 
+// Navier–Stokes coefficients of a dense (Enskog) binary with p*, bulk viscosity and ζ_U (regression
+// data, tests/golden/README.md; the physics in tests/test_mixture_enskog.cpp).
+TEST(CliGolden, MixtureEnskog) {
+  const CliRun r =
+      run_gkt("table " + scene_path("mixture_enskog.toml") +
+              " --set packing_fraction=0.2 --set 'alpha=[0.9, 0.6]' --set 'mass_2=[0.5, 4]' --set order=2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_csv_close(r.out, read_file(golden_path("mixture_enskog.csv")));
+  EXPECT_NE(r.out.find(",bulk_viscosity,cooling_rate_first_order,pressure,"), std::string::npos) << r.out;
+}
+
 // Segregation criterion of an intruder and the HCS stability of a dilute binary (regression data,
 // tests/golden/README.md; the physics in tests/test_mixture_navier_stokes.cpp). Elastic rows: Λ is
 // linear in g* with slope −1 − D12-term/D11-term, so rows g* = 0 and −5 differ; γ = 1 exactly.
@@ -586,10 +597,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"mixture_no_third_species", kMixture + "fraction = 0.5\n",
                  "--set 'coefficients=[\"temperature_ratio_3\"]'",
                  "coefficients: unknown coefficient 'temperature_ratio_3'"},
-        BadInput{
-            "mixture_transport_dense", kMixture + "fraction = 0.5\n",
-            "--set 'packing_fraction=[0, 0.2]' --set 'coefficients=[\"cooling_rate\", \"mutual_diffusion_1_2\"]'",
-            "coefficients: mutual_diffusion_1_2 is implemented for the dilute mixture only (packing_fraction = 0)"},
+        BadInput{"mixture_stability_dense", kMixture + "fraction = 0.5\n",
+                 "--set 'packing_fraction=[0, 0.2]' --set 'coefficients=[\"cooling_rate\", \"critical_length\"]'",
+                 "coefficients: critical_length is implemented for the dilute mixture only (packing_fraction = 0)"},
         BadInput{"mixture_transport_order", kMixture + "fraction = 0.5\n", "--set order=13",
                  "order: must be an integer in [1, 12]"},
         BadInput{"mixture_hcs_order", kMixture + "fraction = 0.5\n", "--set hcs_order=6",

@@ -222,11 +222,6 @@ TEST(MixtureNavierStokes, ExtremeRatiosStayFinite) {
 }
 
 // Dense mixtures are refused with a one-line error naming the field.
-TEST(MixtureNavierStokes, DenseIsRefused) {
-  EXPECT_THROW(gkt::MixtureNavierStokes(gkt::make_mixture(3, {{1, 1, 0.5, ""}, {2, 1, 0.5, ""}}, 0.9, 0.2), 2),
-               std::invalid_argument);
-}
-
 // The thermal diffusion factor Λ_i of a binary (17.13): zero for identical species (nothing
 // segregates) at any α and gravity; at finite x_1 the per-particle solve equals Λ rebuilt from the
 // ordinary D_ij, D^T_i (two scalings of the system, the second singular at x_1 = 0); and x_1 → 0 is

@@ -1,7 +1,7 @@
 // The "mixture" transport model (docs/conventions.md): s = 2 … 4 smooth inelastic species,
 // dilute or dense: the homogeneous cooling state (temperature ratios, cooling rate, the species
-// cumulants a2,i; theory.md §16) and, for the dilute gas, the Navier–Stokes coefficients at any
-// Sonine order (theory.md §17).
+// cumulants a2,i; theory.md §16) and the Navier–Stokes coefficients at any Sonine order (theory.md
+// §17 dilute, §18 dense).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -36,7 +36,7 @@ class MixtureModel final : public TransportModel {
   [[nodiscard]] std::string name() const override { return "mixture"; }
   [[nodiscard]] std::string description() const override {
     return "granular mixture of s = 2..4 smooth inelastic hard spheres/disks (dilute or Enskog): homogeneous "
-           "cooling state (first Sonine or Maxwellian); Navier-Stokes coefficients of the dilute mixture at any order";
+           "cooling state (first Sonine or Maxwellian); Navier-Stokes coefficients at any order";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto n = names(kMaxSpecies, kMaxHcsOrder);
@@ -52,14 +52,17 @@ class MixtureModel final : public TransportModel {
       for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
     return n;
   }
-  /// The HCS always; the Navier–Stokes coefficients when the scene is dilute (a fixed φ = 0: they
-  /// are not implemented for the dense gas yet); tracer_diffusion_i only when asked for (a property
-  /// of the pair at infinite dilution, not of the scene's composition).
+  /// The HCS always; the Navier–Stokes coefficients when the scene fixes φ: with the stability
+  /// columns at φ = 0, with p*, bulk viscosity and ζ_U instead at φ > 0 (theory.md §18) — a sweep
+  /// over φ lists the HCS only unless it names its coefficients;
+  /// tracer_diffusion_i only when asked for (a property of the pair at infinite dilution, not of
+  /// the scene's composition).
   [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const override {
     const int s = static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double());
     auto n = names(s, hcs_order(fixed));
-    if (fixed.number("packing_fraction", Rational(1)).sign() == 0)
-      for (const auto& t : transport_names(s)) n.push_back(t);
+    const Rational phi = fixed.number("packing_fraction", Rational(-1));
+    for (const auto& t : transport_names(s))
+      if (phi.sign() == 0 ? !dense_only(t) : phi.sign() > 0 && !dilute_only(t)) n.push_back(t);
     return n;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -245,7 +248,7 @@ class MixtureModel final : public TransportModel {
         operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)));
       AtOrder a{operators->coefficients(n), {NAN, NAN, NAN}};
       const MixtureTransportValues& v = a.values;
-      if (v.shear_viscosity > 0 && v.thermal_conductivity > 0) {
+      if (m.packing_fraction == 0 && v.shear_viscosity > 0 && v.thermal_conductivity > 0) {
         std::vector<double> x;
         for (const auto& sp : m.species) x.push_back(sp.fraction);
         a.stability = mixture_hcs_stability({m.dimension, x, operators->cooling_state().cooling_rate,
@@ -258,7 +261,7 @@ class MixtureModel final : public TransportModel {
     /// Returns the coefficient `name` at the requested order or tolerance, its error from the next
     /// two orders (theory.md §6), undefined (nan) if a value is not finite.
     CoefficientValue value(const Mixture& m, const std::string& name, const OrderRequest& order) {
-      if (m.packing_fraction > 0)
+      if (m.packing_fraction > 0 && dilute_only(name))
         throw std::invalid_argument("coefficients: " + name +
                                     " is implemented for the dilute mixture only (packing_fraction = 0)");
       const auto s = m.size();
@@ -269,6 +272,9 @@ class MixtureModel final : public TransportModel {
         if (name == "critical_length") return at_order.stability.critical_length;
         if (name == "shear_viscosity") return v.shear_viscosity;
         if (name == "thermal_conductivity") return v.thermal_conductivity;
+        if (name == "bulk_viscosity") return v.bulk_viscosity;
+        if (name == "cooling_rate_first_order") return v.cooling_rate_first_order;
+        if (name == "pressure") return v.pressure;
         for (std::size_t i = 0; i < s; ++i) {
           const int a = static_cast<int>(i) + 1;
           if (name == index_name("thermal_diffusion", a)) return v.thermal_diffusion[i];
@@ -307,7 +313,14 @@ class MixtureModel final : public TransportModel {
       for (int i = 1; i <= s; ++i) n.push_back(index_name("thermal_diffusion_factor", i));
     for (const char* c : {"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"})
       n.emplace_back(c);
+    for (const char* c : {"bulk_viscosity", "cooling_rate_first_order", "pressure"}) n.emplace_back(c);
     return n;
+  }
+  /// The HCS stability of §17.7 is derived for the dilute mixture only.
+  static bool dilute_only(const std::string& name) { return name.rfind("critical_", 0) == 0; }
+  /// Zero in the dilute gas (p* = 1): listed by default only for a dense scene.
+  static bool dense_only(const std::string& name) {
+    return name == "bulk_viscosity" || name == "cooling_rate_first_order" || name == "pressure";
   }
 
   static constexpr int kMaxHcsOrder = 5;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "gkt/collision_moments.hpp"
+#include "gkt/mixture_collisional_transfer.hpp"
 #include "transport/galerkin_pieces.hpp"
 #include "transport/nearby_rational.hpp"
 #include "transport/reference_gas.hpp"
@@ -59,27 +60,33 @@ Eigen::MatrixXd leading_blocks(const Eigen::MatrixXd& m, std::size_t s, int full
 MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
     : dimension_(mixture.dimension), max_order_(max_order), s_(mixture.size()) {
   mixture.validate();
-  if (mixture.packing_fraction != 0)
-    throw std::invalid_argument(
-        "packing_fraction: the mixture's Navier-Stokes coefficients are implemented for the dilute gas (0) only");
   if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
   state_ = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
   sensitivity_ = mixture_cooling_sensitivity(mixture, state_);
   const int d = mixture.dimension;
   const double c_d = detail::geometric_factor(d);
-  // Units n = 1, m̄ = 1, σ̄ = 1, velocity √(2T/m̄) = 1 (so T = 1/2): θ_k = m_k/γ_k.
+  // Units n = 1, m̄ = 1, σ̄ = 1, velocity √(2T/m̄) = 1 (so T = 1/2): θ_k = m_k/γ_k. Lengths along a
+  // gradient are in mean free paths 1/(n σ̄^{d−1}), so a collisional transfer over σ_ij carries
+  // n σ̄^d σ_ij/σ̄ (theory.md (18.3)).
+  double diameter_moment = 0;
   for (std::size_t k = 0; k < s_; ++k) {
     mass_.push_back(mixture.species[k].mass / mixture.mean_mass());
     theta_.push_back(mass_[k] / state_.temperature_ratio[k]);
     fraction_.push_back(mixture.species[k].fraction);
+    diameter_moment += fraction_[k] * std::pow(mixture.species[k].diameter / mixture.mean_diameter(), d);
   }
   nu0_ = detail::unit_reference_gas(d).collision_frequency;
   zeta_ = state_.cooling_rate * nu0_;
-  const int nv = max_order + 1, nt = max_order;
+  dense_ = mixture.packing_fraction > 0;
+  const double volume = std::pow(std::numbers::pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1));
+  const double n_star = mixture.packing_fraction / (volume * diameter_moment);  // n σ̄^d
+  const std::vector<double> chi = mixture.contact_values();
+  const int nv = max_order + 1, nt = max_order, ns = max_order + 2;
   const auto S = static_cast<Eigen::Index>(s_);
   vector_self_ = Eigen::MatrixXd::Zero(S * nv, S * nv);
   vector_cross_ = vector_self_;
   tensor_operator_ = Eigen::MatrixXd::Zero(S * nt, S * nt);
+  if (dense_) scalar_operator_ = Eigen::MatrixXd::Zero(S * ns, S * ns);
   for (std::size_t i = 0; i < s_; ++i)
     for (std::size_t j = 0; j < s_; ++j) {
       // The moments depend on the mass ratio and the width ratio only: the pair is built with
@@ -91,10 +98,19 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
       const CollisionPair pair{d, mass_ratio, Rational(1), r * r, Rational(1)};
       const Rational alpha = Rational::from_double(mixture.restitution(i, j));
       const double sigma = 0.5 * (mixture.species[i].diameter + mixture.species[j].diameter) / mixture.mean_diameter();
-      const double rate = std::pow(sigma, d - 1) * c_d * std::sqrt(1 / theta_[i] + 1 / theta_[j]);
+      const double rate =
+          std::pow(sigma, d - 1) * c_d * std::sqrt(1 / theta_[i] + 1 / theta_[j]) * chi[pair_index(i, j)];
+      rate_.push_back(rate);
+      length_.push_back(n_star * sigma);
+      alpha_.push_back(mixture.restitution(i, j));
       add_pair(vector_self_, vector_cross_, pair, alpha, 1, nv - 1, i, j, rate * fraction_[j], rate);
       add_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
                rate * fraction_[i]);
+      if (dense_) {
+        add_pair(scalar_operator_, scalar_operator_, pair, alpha, 0, ns - 1, i, j, rate * fraction_[j],
+                 rate * fraction_[i]);
+        transfer_.push_back(pair_transfer_moments(d, mass_ratio, r, alpha, ns - 1, mass_[i], theta_[j]));
+      }
     }
   const auto vp = detail::rounded(detail::vector_pieces(d, nv - 1, 0));
   const auto tp = detail::rounded(detail::tensor_pieces(d, nt - 1, 0));
@@ -103,6 +119,27 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
   tensor_d_ = to_matrix(tp.d);
   vector_flux_ = to_vector(vp.flux);
   tensor_flux_ = to_vector(tp.flux);
+  if (!dense_) return;
+  scalar_d_ = to_matrix(detail::rounded(detail::scalar_pieces(d, ns - 1, 0)).d);
+  const std::vector<double> dchi = mixture.contact_value_derivatives();
+  for (std::size_t k = 0; k < dchi.size(); ++k) dchi_.push_back(dchi[k] / chi[k / s_]);
+  // p = nT + B_2 Σ_ij μ_ji (1+α_ij) σ_ij^d χ_ij n_i n_j T_i, B_2 = π^{(d−1)/2} Γ(3/2)/Γ(d/2 + 1) (18.2);
+  // its derivative at fixed T also moves χ_ij and γ_i.
+  const double b2 = std::pow(std::numbers::pi, (d - 1) / 2.0) * std::tgamma(1.5) / std::tgamma(d / 2.0 + 1);
+  const std::vector<double>& gamma = state_.temperature_ratio;
+  pressure_derivative_.assign(s_, 1.0);
+  for (std::size_t i = 0; i < s_; ++i)
+    for (std::size_t j = 0; j < s_; ++j) {
+      const std::size_t P = pair_index(i, j);
+      const double sigma = length_[P] / n_star;
+      const double w =
+          n_star * b2 * mass_[j] / (mass_[i] + mass_[j]) * (1 + alpha_[P]) * std::pow(sigma, d) * chi[P] * gamma[i];
+      pressure_ += w * fraction_[i] * fraction_[j];
+      for (std::size_t l = 0; l < s_; ++l)
+        pressure_derivative_[l] +=
+            w * ((i == l ? fraction_[j] : 0.0) + (j == l ? fraction_[i] : 0.0) +
+                 fraction_[i] * fraction_[j] * (dchi_[P * s_ + l] + sensitivity_.temperature_ratio[i * s_ + l]));
+    }
 }
 
 MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, const Eigen::MatrixXd& self,
@@ -137,29 +174,129 @@ MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, co
     }
   }
   VectorModes out;
+  const TransferSources transfer = transfer_sources(order, per_particle);
   Eigen::VectorXd sa(S * n);
-  for (std::size_t i = 0; i < s_; ++i)  // (17.5): −x_i θ_i^{−1/2} ⟨x S_p (x − d/2 − θ_i)⟩, x − d/2 = 1 − S_1
-    sa.segment(static_cast<Eigen::Index>(i) * n, n) =
-        -(per_particle ? 1.0 : fraction_[i]) / std::sqrt(theta_[i]) * ((1 - theta_[i]) * mv.col(0) - mv.col(1));
+  for (std::size_t i = 0; i < s_; ++i)  // (17.5), (18.4): −x_i θ_i^{−1/2} ⟨x S_p (x − d/2 − θ_i p*)⟩, x − d/2 = 1 − S_1
+    sa.segment(static_cast<Eigen::Index>(i) * n, n) = -(per_particle ? 1.0 : fraction_[i]) / std::sqrt(theta_[i]) *
+                                                      ((1 - theta_[i] * pressure_) * mv.col(0) - mv.col(1));
+  if (dense_) sa += transfer.heat;
   sa(major * n) = 0;
   out.heat = ka.partialPivLu().solve(sa);
   const auto lu = kb.partialPivLu();
   for (std::size_t j = 0; j < s_; ++j) {
     Eigen::VectorXd sb(S * n);
-    // (17.6): −θ_i^{−1/2}[δ_ij M(p,0) + x_i (∂_j ln γ_i ⟨x S_p (x − d/2)⟩ − θ_i M(p,0))] + ∂ζ/∂n_j M φ̃^𝒜_i
-    // (per particle: x_j instead of x_i, and x_j ∂ζ/∂n_j).
+    // (17.6), (18.4): −θ_i^{−1/2}[δ_ij M(p,0) + x_i (∂_j ln γ_i ⟨x S_p (x − d/2)⟩ − θ_i ∂_j p/T M(p,0))]
+    // + ∂ζ/∂n_j M φ̃^𝒜_i (per particle: x_j instead of x_i, and x_j ∂ζ/∂n_j).
     const double dzeta = sensitivity_.cooling_rate[j] * nu0_ * (per_particle ? fraction_[j] : 1.0);
+    const double dp = dense_ ? pressure_derivative_[j] : 1.0;
     for (std::size_t i = 0; i < s_; ++i) {
       const auto I = static_cast<Eigen::Index>(i) * n;
       const double g = sensitivity_.temperature_ratio[i * s_ + j], x = per_particle ? fraction_[j] : fraction_[i];
       sb.segment(I, n) =
           -1 / std::sqrt(theta_[i]) *
-              ((i == j ? 1.0 : 0.0) * mv.col(0) + x * (g * (mv.col(0) - mv.col(1)) - theta_[i] * mv.col(0))) +
+              ((i == j ? 1.0 : 0.0) * mv.col(0) + x * (g * (mv.col(0) - mv.col(1)) - theta_[i] * dp * mv.col(0))) +
           dzeta * (mv * out.heat.segment(I, n));
     }
+    if (dense_) sb += transfer.density[j];
     sb(major * n) = 0;
     out.density.push_back(lu.solve(sb));
   }
+  return out;
+}
+
+MixtureNavierStokes::TransferSources MixtureNavierStokes::transfer_sources(int order, bool per_particle) const {
+  // (18.4): the K_i of the Enskog operator's gradient expansion projected on c_i S_p(X_i), per pair
+  // L_ij R_ij x_i x_j ⟨⟨σ̂·Δ[c1 S_p]·(∂ ln f_j + ½ ∂ ln χ_ij)⟩⟩; per particle the rows are divided by x_i
+  // and the density modes are per ∇ln n_l (× x_l).
+  TransferSources out;
+  if (!dense_) return out;
+  const int n = order + 1;
+  const auto S = static_cast<Eigen::Index>(s_);
+  out.heat = Eigen::VectorXd::Zero(S * n);
+  out.density.assign(s_, out.heat);
+  for (std::size_t i = 0; i < s_; ++i)
+    for (std::size_t j = 0; j < s_; ++j) {
+      const std::size_t P = pair_index(i, j);
+      const PairTransferMoments& t = transfer_[P];
+      const double f = length_[P] * rate_[P] * (per_particle ? 1.0 : fraction_[i]);
+      const auto I = static_cast<Eigen::Index>(i) * n;
+      for (int p = 0; p < n; ++p) {
+        const auto row = I + p;
+        const auto P_ = static_cast<std::size_t>(p);
+        out.heat(row) += f * fraction_[j] * t.source_temperature[P_];
+        for (std::size_t l = 0; l < s_; ++l) {
+          const double g = sensitivity_.temperature_ratio[j * s_ + l];
+          const double v =
+              (j == l ? t.source_density[P_] : 0.0) +
+              fraction_[j] * (g * t.source_temperature[P_] + 0.5 * dchi_[P * s_ + l] * t.source_density[P_]);
+          out.density[l](row) += f * (per_particle ? fraction_[l] : 1.0) * v;
+        }
+      }
+    }
+  return out;
+}
+
+MixtureNavierStokes::ScalarMode MixtureNavierStokes::scalar_mode(int order) const {
+  // Unknowns δ_iq (q = 1 … N+1, 𝒟_i = f̂_i Σ_q δ_iq S_q(X_i)) and ζ_U; rows S_p(X_i) of
+  // (ℒ + ζ D⁰) 𝒟 = x_i (X − d/2)[2(p* − 1)/d + ζ_U + Σ_l x_l ∂_l ln γ_i] f̂_i + (1/d) Σ_j K^scalar (18.6);
+  // the S_1 row of the most abundant species is the total-energy constraint Σ_i γ_i δ_i1 = 0, and the
+  // last row is ζ_U = ζ11[δ] + ζ10 (18.7).
+  const int d = dimension_, nq = order + 1, full = max_order_ + 2;
+  const auto S = static_cast<Eigen::Index>(s_), N = S * nq;
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(N + 1, N + 1);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(N + 1);
+  for (Eigen::Index i = 0; i < S; ++i) {
+    const auto I = static_cast<std::size_t>(i);
+    for (Eigen::Index k = 0; k < S; ++k)
+      m.block(i * nq, k * nq, nq, nq) = scalar_operator_.block(i * full + 1, k * full + 1, nq, nq);
+    m.block(i * nq, i * nq, nq, nq) += zeta_ * scalar_d_.block(1, 1, nq, nq);
+    double gamma_sum = 0;
+    for (std::size_t l = 0; l < s_; ++l) gamma_sum += fraction_[l] * sensitivity_.temperature_ratio[I * s_ + l];
+    // ⟨S_p (X − d/2)⟩ = −d/2 δ_p1 (S_1 = d/2 − X).
+    m(i * nq, N) = fraction_[I] * d / 2.0;
+    rhs(i * nq) = -fraction_[I] * d / 2.0 * (2 * (pressure_ - 1) / d + gamma_sum);
+    for (std::size_t j = 0; j < s_; ++j) {
+      const std::size_t P = pair_index(I, j);
+      const double f = length_[P] * rate_[P] * fraction_[I] * fraction_[j] * 2 * std::sqrt(theta_[j]) / d;
+      for (int p = 0; p < nq; ++p) rhs(i * nq + p) += f * transfer_[P].source_scalar[static_cast<std::size_t>(p) + 1];
+    }
+  }
+  const auto major =
+      static_cast<Eigen::Index>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
+  m.row(major * nq).setZero();
+  rhs(major * nq) = 0;
+  for (Eigen::Index k = 0; k < S; ++k) m(major * nq, k * nq) = state_.temperature_ratio[static_cast<std::size_t>(k)];
+  // ζ = (1/d) Σ_ij (1 − α²) m_i μ_ji R_ij ⟨⟨(σ̂·g)² [x_i 𝒟_j + x_j 𝒟_i]⟩⟩ + the f0 ∂f0 part (18.7).
+  m(N, N) = 1;
+  for (std::size_t i = 0; i < s_; ++i)
+    for (std::size_t j = 0; j < s_; ++j) {
+      const std::size_t P = pair_index(i, j);
+      const PairTransferMoments& t = transfer_[P];
+      const double w = (1 - alpha_[P] * alpha_[P]) * mass_[i] * mass_[j] / (mass_[i] + mass_[j]) * rate_[P] / d;
+      for (int q = 0; q < nq; ++q) {
+        const auto Q = static_cast<std::size_t>(q) + 1;
+        m(N, static_cast<Eigen::Index>(j) * nq + q) -= w * fraction_[i] * t.cooling_partner[Q];
+        m(N, static_cast<Eigen::Index>(i) * nq + q) -= w * fraction_[j] * t.cooling_self[Q];
+      }
+      rhs(N) += w * length_[P] * fraction_[i] * fraction_[j] * t.cooling_gradient / d;
+    }
+  const Eigen::VectorXd x = m.partialPivLu().solve(rhs);
+  // Bulk viscosity from the scalar part: κ_D = −(1/(2d)) Σ_ij m_i μ_ji (1+α) L R ⟨⟨(σ̂·g)[x_i 𝒟_j + x_j 𝒟_i]⟩⟩.
+  double bulk = 0;
+  for (std::size_t i = 0; i < s_; ++i)
+    for (std::size_t j = 0; j < s_; ++j) {
+      const std::size_t P = pair_index(i, j);
+      const PairTransferMoments& t = transfer_[P];
+      const double w = mass_[i] * mass_[j] / (mass_[i] + mass_[j]) * (1 + alpha_[P]) * length_[P] * rate_[P];
+      for (int q = 0; q < nq; ++q) {
+        const auto Q = static_cast<std::size_t>(q) + 1;
+        bulk -= w / (2 * d) *
+                (fraction_[i] * t.pressure_partner[Q] * x(static_cast<Eigen::Index>(j) * nq + q) +
+                 fraction_[j] * t.pressure_self[Q] * x(static_cast<Eigen::Index>(i) * nq + q));
+      }
+    }
+  ScalarMode out{x(N), bulk, {}};
+  for (Eigen::Index i = 0; i < S; ++i) out.temperature.push_back(x(i * nq));
   return out;
 }
 
@@ -193,6 +330,36 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
     out.thermal_diffusion[i] = -mass_[i] / d / std::sqrt(theta_[i]) * m00 * a(I) / d0;  // (17.9)
     lambda -= mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(a.segment(I, n)) / (2 * d * temperature);
   }
+  // Collisional heat flux (18.9): −(1/(2d)) Σ_ij L R [x_i ⟨⟨(σ̂·c2)ΔE_1 X_j⟩⟩ + x_j ⟨⟨(σ̂·c1)ΔE_1 X_i⟩⟩] from
+  // f0 f^(1), and −(1/(4d)) Σ_ij L² R x_i x_j ⟨⟨ΔE_1 (∂ ln f_j − ∂ ln f_i)⟩⟩ from f0 ∂f0.
+  auto collisional_heat = [&](const Eigen::VectorXd& v) {
+    double q = 0;
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) {
+        const std::size_t P = pair_index(i, j);
+        const PairTransferMoments& t = transfer_[P];
+        for (int k = 0; k < n; ++k) {
+          const auto K = static_cast<std::size_t>(k);
+          q -= length_[P] * rate_[P] / (2 * d) *
+               (fraction_[i] * t.heat_flux_partner[K] * v(static_cast<Eigen::Index>(j) * n + k) +
+                fraction_[j] * t.heat_flux_self[K] * v(static_cast<Eigen::Index>(i) * n + k));
+        }
+      }
+    return q;
+  };
+  auto gradient_heat = [&](std::size_t i, std::size_t j) {
+    const std::size_t P = pair_index(i, j);
+    return -length_[P] * length_[P] * rate_[P] / (4 * d);
+  };
+  if (dense_) {
+    double q = collisional_heat(a);
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) {
+        const PairTransferMoments& t = transfer_[pair_index(i, j)];
+        q += gradient_heat(i, j) * fraction_[i] * fraction_[j] * (t.energy_partner - t.energy_self);
+      }
+    lambda -= q / temperature;
+  }
   out.thermal_conductivity = lambda / kappa0;
   for (std::size_t j = 0; j < s; ++j) {
     const Eigen::VectorXd& b = modes.density[j];
@@ -201,6 +368,19 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
       const auto I = static_cast<Eigen::Index>(i) * n;
       out.mutual_diffusion[i * s + j] = -m00 / (mass_[j] * d * std::sqrt(theta_[i])) * b(I) / d0;  // (17.9)
       heat += 0.5 * mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(b.segment(I, n)) / d;
+    }
+    if (dense_) {
+      heat += collisional_heat(b);
+      for (std::size_t i = 0; i < s; ++i)
+        for (std::size_t k = 0; k < s; ++k) {
+          const PairTransferMoments& t = transfer_[pair_index(i, k)];
+          const double gi = sensitivity_.temperature_ratio[i * s + j], gk = sensitivity_.temperature_ratio[k * s + j];
+          const double v =
+              (k == j ? fraction_[i] : 0.0) * t.energy - (i == j ? fraction_[k] : 0.0) * t.energy +
+              fraction_[i] * fraction_[k] *
+                  (gk * (t.energy_partner - 0.5 * d * t.energy) - gi * (t.energy_self - 0.5 * d * t.energy));
+          heat += gradient_heat(i, k) * v;
+        }
     }
     out.dufour[j] = -fraction_[j] * heat / (temperature * kappa0);  // (17.10)
   }
@@ -220,10 +400,46 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
     kc.block(I, I, nt, nt) += zeta_ * tensor_d_.topLeftCorner(nt, nt);
     sc.segment(I, nt) = -2 * fraction_[i] * (d - 1.0) / d * ft;
   }
+  if (dense_)  // (18.5): L R x_i x_j 2√θ_j ⟨⟨Δ[Y(c1) S_p] : σ̂c2⟩⟩
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) {
+        const std::size_t P = pair_index(i, j);
+        const double f = length_[P] * rate_[P] * fraction_[i] * fraction_[j] * 2 * std::sqrt(theta_[j]);
+        for (int p = 0; p < nt; ++p)
+          sc(static_cast<Eigen::Index>(i) * nt + p) += f * transfer_[P].source_shear[static_cast<std::size_t>(p)];
+      }
   const Eigen::VectorXd c = kc.partialPivLu().solve(sc);
   double eta = 0;
   for (std::size_t i = 0; i < s; ++i)
     eta -= mass_[i] / theta_[i] * ft.dot(c.segment(static_cast<Eigen::Index>(i) * nt, nt)) / (d * (d + 2.0));
+  if (dense_) {
+    // (18.8): the f0 f^(1) part −(1/(2(d−1)(d+2))) Σ_ij m_i μ_ji (1+α) L R [x_i ⟨⟨(σ̂·g)σ̂σ̂:Y(c2) 𝒞_j⟩⟩ + …] and
+    // the f0 ∂f0 part −(1/(4d(d+2))) Σ_ij m_i μ_ji (1+α) L² R x_i x_j ⟨⟨(σ̂·g)σ̂·(2θ_j v2 − 2θ_i v1)⟩⟩, whose
+    // (d+2)/d multiple is the bulk viscosity's f0 ∂f0 part.
+    double gradient = 0;
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) {
+        const std::size_t P = pair_index(i, j);
+        const PairTransferMoments& t = transfer_[P];
+        const double w = mass_[i] * mass_[j] / (mass_[i] + mass_[j]) * (1 + alpha_[P]) * length_[P] * rate_[P];
+        for (int q = 0; q < nt; ++q) {
+          const auto Q = static_cast<std::size_t>(q);
+          eta -= w / (2 * (d - 1.0) * (d + 2)) *
+                 (fraction_[i] * t.shear_flux_partner[Q] * c(static_cast<Eigen::Index>(j) * nt + q) +
+                  fraction_[j] * t.shear_flux_self[Q] * c(static_cast<Eigen::Index>(i) * nt + q));
+        }
+        gradient -= w * length_[P] * fraction_[i] * fraction_[j] * t.shear_gradient / (4.0 * d * (d + 2));
+      }
+    eta += gradient;
+    const ScalarMode scalar = scalar_mode(order);
+    out.bulk_viscosity = ((d + 2.0) / d * gradient + scalar.bulk_viscosity) / eta0;
+    out.cooling_rate_first_order = scalar.cooling_rate;
+    out.pressure = pressure_;
+    // n_i T_i^(1) = (m_i/d) ∫V² 𝒟_i = −(γ_i/2) δ_i1 (T = 1/2), so T_i^(1)/T = −γ_i δ_i1/x_i per unit ∇·u.
+    for (std::size_t i = 0; i < s; ++i)
+      out.temperature_first_order.push_back(
+          fraction_[i] > 0 ? -state_.temperature_ratio[i] * scalar.temperature[i] / fraction_[i] * nu0_ : std::nan(""));
+  }
   out.shear_viscosity = eta / eta0;
   return out;
 }
@@ -251,16 +467,20 @@ void MixtureNavierStokes::species_drift(int order, const Eigen::MatrixXd& self, 
     for (std::size_t j = 0; j < s_; ++j) out.drift[i * s_ + j] = to_drift * density[i][j];
   }
   if (s_ != 2) return;
-  // j_i = 0: Σ_j density[i][j] ∂ln n_j + heat[i] ∂ln T = 0; ∂p = −ρg (p = nT):
-  // x_i ∂ln n_i + x_k ∂ln n_k = −(1 + g*) ∂ln T; ∂ln(n_i/n) = ∂ln n_i + (1 + g*) ∂ln T = −Λ_i ∂ln T.
+  // j_i = 0: Σ_j density[i][j] ∂ln n_j + heat[i] ∂ln T = 0; ∂p = −ρg with P_l = ∂p/∂n_l/T (1 dilute):
+  // x_i P_i ∂ln n_i + x_k P_k ∂ln n_k = −(p* + g*) ∂ln T, g* = ρg/(n ∂T) (theory.md (17.15), (18.10)).
+  // Then ∂ln n_i = A (p* + g*) − B and ∂ln(n_i/n) = ∂ln n_i (1 − x_i (1 − P_i/P_k)) + (p* + g*)/P_k = −Λ_i.
   out.segregation.assign(s_, std::nan(""));
   out.segregation_gravity = out.segregation;
   for (std::size_t i = 0; i < 2; ++i) {
     const std::size_t k = 1 - i;
     if (fraction_[k] == 0) continue;
-    const double denominator = density[i][i] - density[i][k] * fraction_[i] / fraction_[k];
-    out.segregation[i] = -1 - (density[i][k] / fraction_[k] - heat[i]) / denominator;
-    out.segregation_gravity[i] = -1 - density[i][k] / fraction_[k] / denominator;
+    const double pi = dense_ ? pressure_derivative_[i] : 1.0, pk = dense_ ? pressure_derivative_[k] : 1.0;
+    const double denominator = density[i][i] - density[i][k] * fraction_[i] * pi / (fraction_[k] * pk);
+    const double a = density[i][k] / (fraction_[k] * pk) / denominator, b = heat[i] / denominator;
+    const double c = 1 - fraction_[i] * (1 - pi / pk);
+    out.segregation[i] = -(a * pressure_ - b) * c - pressure_ / pk;
+    out.segregation_gravity[i] = -a * c - 1 / pk;
   }
 }
 

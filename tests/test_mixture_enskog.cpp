@@ -1,0 +1,259 @@
+// Navier–Stokes coefficients of a dense (revised Enskog) granular mixture (theory.md §18): the
+// contact values' density derivatives against finite differences, identical species against the
+// one-component Enskog solver (itself tested against Garzó & Dufty and Chapman & Cowling), the
+// conservation rows that the solver drops (they must hold whichever species' row is dropped), the
+// bulk viscosity against the closed forms of Garzó, Dufty & Hrenya plus the partial-temperature
+// term, and continuity at φ → 0.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "gkt/mixture.hpp"
+#include "gkt/mixture_navier_stokes.hpp"
+#include "gkt/navier_stokes.hpp"
+#include "gkt/pair_correlation.hpp"
+
+using gkt::Rational;
+
+namespace {
+
+double relative(double a, double b) { return std::abs(a - b) / std::max(1.0, std::abs(b)); }
+
+/// The mixture with the partial densities n_k (fractions renormalised, the last one closing the sum
+/// to 1 exactly) at the packing fraction that these densities give relative to `base` at n = 1.
+gkt::Mixture at_densities(const gkt::Mixture& base, const std::vector<double>& n) {
+  gkt::Mixture m = base;
+  const int d = base.dimension;
+  double total = 0, volume = 0, volume0 = 0;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    total += n[k];
+    volume += n[k] * std::pow(base.species[k].diameter, d);
+    volume0 += base.species[k].fraction * std::pow(base.species[k].diameter, d);
+  }
+  double sum = 0;
+  for (std::size_t k = 0; k + 1 < n.size(); ++k) {
+    m.species[k].fraction = n[k] / total;
+    sum += m.species[k].fraction;
+  }
+  m.species.back().fraction = 1 - sum;
+  m.packing_fraction = base.packing_fraction * volume / volume0;
+  return m;
+}
+
+gkt::Mixture ternary(int d, double phi) {
+  gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.3, ""}, {4, 1.6, 0.5, ""}, {0.4, 0.7, 0.2, ""}}, 0.7, phi);
+  m.alpha = {0.9, 0.7, 0.6, 0.7, 0.5, 0.8, 0.6, 0.8, 0.95};
+  return m;
+}
+
+}  // namespace
+
+// n ∂χ_ij/∂n_l of the BGHLM (3D) and Jenkins–Mancini (2D) closures against central differences
+// of contact_values() in the partial densities (h = 1e-5: truncation ~1e-10).
+TEST(MixtureEnskog, ContactValueDerivativesEqualFiniteDifferences) {
+  for (int d : {2, 3}) {
+    const gkt::Mixture base = ternary(d, 0.35);
+    const auto exact = base.contact_value_derivatives();
+    for (std::size_t l = 0; l < 3; ++l) {
+      const double h = 1e-5;
+      std::vector<double> up{0.3, 0.5, 0.2}, down = up;
+      up[l] += h;
+      down[l] -= h;
+      const auto cu = at_densities(base, up).contact_values(), cd = at_densities(base, down).contact_values();
+      for (std::size_t ij = 0; ij < 9; ++ij)
+        EXPECT_NEAR(exact[ij * 3 + l], (cu[ij] - cd[ij]) / (2 * h), 1e-8) << d << " " << ij << " " << l;
+    }
+  }
+}
+
+// Dense HCS: n ∂ln γ_i/∂n_j and n ∂ζ/∂n_j/ν0 by implicit differentiation (now with the contact
+// values moving) against central differences of the HCS itself.
+TEST(MixtureEnskog, CoolingStateSensitivityEqualsFiniteDifferences) {
+  for (int d : {2, 3}) {
+    const gkt::Mixture base = ternary(d, 0.3);
+    const auto sens = gkt::mixture_cooling_sensitivity(base, gkt::mixture_cooling_state(base));
+    // ζ in units fixed at the base state: ζ* ν0 ∝ ζ* n σ̄^{d−1}/√m̄.
+    auto at = [&](const std::vector<double>& n, std::vector<double>& gamma) {
+      const gkt::Mixture m = at_densities(base, n);
+      const auto s = gkt::mixture_cooling_state(m);
+      gamma = s.temperature_ratio;
+      return s.cooling_rate * (n[0] + n[1] + n[2]) * std::pow(m.mean_diameter(), d - 1) / std::sqrt(m.mean_mass());
+    };
+    const double unit = std::pow(base.mean_diameter(), d - 1) / std::sqrt(base.mean_mass());
+    for (std::size_t j = 0; j < 3; ++j) {
+      const double h = 1e-5;
+      std::vector<double> up{0.3, 0.5, 0.2}, down = up, gu, gd;
+      up[j] += h;
+      down[j] -= h;
+      EXPECT_NEAR(sens.cooling_rate[j], (at(up, gu) - at(down, gd)) / (2 * h) / unit, 1e-8) << d << " " << j;
+      for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_NEAR(sens.temperature_ratio[i * 3 + j], (std::log(gu[i]) - std::log(gd[i])) / (2 * h), 1e-8);
+    }
+  }
+}
+
+// Identical species at φ > 0: η*, λ*, Σ_j D''_j* (= μ*), bulk viscosity, ζ_U and p* equal the
+// one-component Enskog solver about the Maxwellian HCS (a separate assembly from the one-species
+// collisional-transfer tables of theory.md §15) at every order; D^T_i and the first-order partial
+// temperatures vanish.
+TEST(MixtureEnskog, IdenticalSpeciesGiveOneComponentEnskog) {
+  for (int d : {2, 3}) {
+    gkt::NavierStokesSolver one(d);
+    const auto& closure = gkt::pair_correlation("carnahan-starling");
+    for (double phi : {0.1, 0.4})
+      for (double alpha : {1.0, 0.8, 0.5, 0.2}) {
+        const gkt::MixtureNavierStokes ns(gkt::make_mixture(d, {{1, 1, 0.3, ""}, {1, 1, 0.7, ""}}, alpha, phi), 3);
+        const Rational exact_phi = Rational::from_double(phi);
+        const gkt::EnskogState dense{phi, closure.contact_value(d, exact_phi).to_double(),
+                                     closure.packing_derivative(d, exact_phi).to_double()};
+        for (int order = 1; order <= 3; ++order) {
+          const auto v = ns.coefficients(order);
+          const auto o =
+              one.solve(Rational::from_double(alpha), order, {1.0, 0.0, 0.0}, gkt::SonineScheme::standard, dense);
+          const std::string at = std::to_string(d) + " " + std::to_string(phi) + " " + std::to_string(alpha);
+          EXPECT_LT(relative(v.shear_viscosity, o.shear_viscosity), 1e-12) << at << " " << order;
+          EXPECT_LT(relative(v.thermal_conductivity, o.thermal_conductivity), 1e-12) << at;
+          EXPECT_LT(relative(v.dufour[0] + v.dufour[1], o.density_heat_coefficient), 1e-12) << at;
+          EXPECT_LT(relative(v.bulk_viscosity, o.bulk_viscosity), 1e-12) << at;
+          EXPECT_LT(relative(v.cooling_rate_first_order, o.cooling_rate_first_order), 1e-12) << at;
+          EXPECT_LT(relative(v.pressure, dense.pressure(d, alpha)), 1e-13) << at;
+          EXPECT_LT(std::abs(v.thermal_diffusion[0]) + std::abs(v.thermal_diffusion[1]), 1e-13) << at;
+          EXPECT_LT(std::abs(v.temperature_first_order[0]) + std::abs(v.temperature_first_order[1]), 1e-12) << at;
+        }
+      }
+  }
+}
+
+// The solver replaces one row of each conservation law by a constraint: the momentum row of the
+// vector modes (total momentum zero) and the total-energy row of the ∇·u mode (Σ_i n_i T_i^(1) = 0),
+// always that of the first most abundant species. With equal fractions, listing the species in the
+// other order drops the other species' row; the coefficients agree only if the dropped rows hold,
+// i.e. only if the collisional-transfer sources carry exactly −∇p^c (momentum) and the work and
+// cooling terms close the energy balance (ζ_U). Binary and ternary, d = 2, 3, restitution matrix.
+TEST(MixtureEnskog, DroppedConservationRowsHold) {
+  for (int d : {2, 3})
+    for (double alpha : {1.0, 0.7}) {
+      gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.5, ""}, {3, 1.6, 0.5, ""}}, alpha, 0.25);
+      m.alpha = {alpha, 0.9 * alpha, 0.9 * alpha, 0.8 * alpha};
+      gkt::Mixture r = gkt::make_mixture(d, {{3, 1.6, 0.5, ""}, {1, 1, 0.5, ""}}, alpha, 0.25);
+      r.alpha = {0.8 * alpha, 0.9 * alpha, 0.9 * alpha, alpha};
+      const auto a = gkt::MixtureNavierStokes(m, 2).coefficients(2), b = gkt::MixtureNavierStokes(r, 2).coefficients(2);
+      EXPECT_LT(relative(a.shear_viscosity, b.shear_viscosity), 1e-12) << d << " " << alpha;
+      EXPECT_LT(relative(a.thermal_conductivity, b.thermal_conductivity), 1e-12);
+      EXPECT_LT(relative(a.bulk_viscosity, b.bulk_viscosity), 1e-12);
+      EXPECT_LT(relative(a.cooling_rate_first_order, b.cooling_rate_first_order), 1e-12);
+      EXPECT_GT(std::abs(a.temperature_first_order[0]), 1e-3);  // the energy row is not trivially satisfied
+      for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_LT(relative(a.thermal_diffusion[i], b.thermal_diffusion[1 - i]), 1e-12);
+        EXPECT_LT(relative(a.dufour[i], b.dufour[1 - i]), 1e-12);
+        EXPECT_LT(relative(a.temperature_first_order[i], b.temperature_first_order[1 - i]), 1e-11);
+        for (std::size_t j = 0; j < 2; ++j)
+          EXPECT_LT(relative(a.mutual_diffusion[i * 2 + j], b.mutual_diffusion[(1 - i) * 2 + 1 - j]), 1e-12);
+      }
+    }
+}
+
+// Bulk viscosity of an unequal binary against closed forms: Garzó, Dufty & Hrenya's collisional
+// κ^c = (B_3(d+1)/(2d²)) Σ_ij m_j μ_ij (1+α_ij) χ_ij σ_ij^{d+1} n_i n_j ⟨g_ij⟩ (PRE 76, 031303
+// (2007); seed 003, with B_k = π^{(d−1)/2} Γ((k+1)/2)/Γ((k+d)/2) — the seed's OCR has Γ((d+1)/2)), plus
+// the pressure of the first-order partial temperatures, −B_2 Σ_ij μ_ji (1+α_ij) σ_ij^d χ_ij n_i n_j T ϖ_i
+// (per ∇·u/ν0), which GDH 2007 leave out. Exact relations; tolerance 1e-12.
+TEST(MixtureEnskog, BulkViscosityEqualsClosedForms) {
+  for (int d : {2, 3})
+    for (double phi : {0.15, 0.35}) {
+      gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.35, ""}, {2.5, 1.5, 0.65, ""}}, 0.8, phi);
+      m.alpha = {0.9, 0.75, 0.75, 0.6};
+      const gkt::MixtureNavierStokes ns(m, 3);
+      const auto v = ns.coefficients(3);
+      const auto& gamma = ns.cooling_state().temperature_ratio;
+      const auto chi = m.contact_values();
+      const double pi = std::numbers::pi, T = 1;
+      auto b = [&](int k) {
+        return std::pow(pi, (d - 1) / 2.0) * std::tgamma((k + 1) / 2.0) / std::tgamma((k + d) / 2.0);
+      };
+      double volume = 0;
+      for (const auto& sp : m.species) volume += sp.fraction * std::pow(sp.diameter, d);
+      const double n = phi / (std::pow(pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1)) * volume);
+      const double c_d = std::pow(pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
+      const double eta0 = (d + 2) / (8 * c_d) * std::sqrt(m.mean_mass() * T) / std::pow(m.mean_diameter(), d - 1);
+      double kappa = 0, partial = 0;
+      for (std::size_t i = 0; i < 2; ++i)
+        for (std::size_t j = 0; j < 2; ++j) {
+          const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ij = mi / (mi + mj), mu_ji = mj / (mi + mj);
+          const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter), a = m.restitution(i, j);
+          const double ni = n * m.species[i].fraction, nj = n * m.species[j].fraction;
+          const double g = std::tgamma((d + 1) / 2.0) / std::tgamma(d / 2.0) *
+                           std::sqrt(2 * gamma[i] * T / mi + 2 * gamma[j] * T / mj);
+          kappa += b(3) * (d + 1) / (2.0 * d * d) * mj * mu_ij * (1 + a) * chi[i * 2 + j] * std::pow(sigma, d + 1) *
+                   ni * nj * g;
+          partial -= b(2) * mu_ji * (1 + a) * std::pow(sigma, d) * chi[i * 2 + j] * ni * nj * T *
+                     v.temperature_first_order[i] / (n * T / eta0);
+        }
+      EXPECT_GT(std::abs(partial), 1e-3 * kappa) << d << " " << phi;  // the partial temperatures do contribute
+      EXPECT_LT(relative(v.bulk_viscosity, (kappa + partial) / eta0), 1e-12) << d << " " << phi;
+    }
+}
+
+// φ → 0 is continuous: φ = 1e-9 equals the dilute (Boltzmann) coefficients to 1e-7; the dense-only
+// quantities go to their dilute values (bulk viscosity and ζ_U to 0, p* to 1).
+TEST(MixtureEnskog, DiluteLimitIsContinuous) {
+  for (int d : {2, 3}) {
+    gkt::Mixture m = ternary(d, 0);
+    const auto dilute = gkt::MixtureNavierStokes(m, 2).coefficients(2);
+    m.packing_fraction = 1e-9;
+    const auto dense = gkt::MixtureNavierStokes(m, 2).coefficients(2);
+    EXPECT_LT(relative(dense.shear_viscosity, dilute.shear_viscosity), 1e-7) << d;
+    EXPECT_LT(relative(dense.thermal_conductivity, dilute.thermal_conductivity), 1e-7);
+    for (std::size_t k = 0; k < 9; ++k)
+      EXPECT_LT(relative(dense.mutual_diffusion[k], dilute.mutual_diffusion[k]), 1e-7);
+    for (std::size_t k = 0; k < 3; ++k) {
+      EXPECT_LT(relative(dense.thermal_diffusion[k], dilute.thermal_diffusion[k]), 1e-7);
+      EXPECT_LT(relative(dense.dufour[k], dilute.dufour[k]), 1e-7);
+    }
+    EXPECT_LT(std::abs(dense.bulk_viscosity) + std::abs(dense.cooling_rate_first_order), 1e-7);
+    EXPECT_LT(std::abs(dense.pressure - 1), 1e-8);
+  }
+}
+
+// Hard cases at φ = 0.4 (3D) / 0.6 (2D): mass ratios 10^±3 with diameter ratios 0.1 and 10
+// (α = 0.5) give finite coefficients, positive η*, λ*, bulk viscosity, and orders 2 → 3 move η* by
+// less than 2 %.
+TEST(MixtureEnskog, ExtremeRatiosStayFinite) {
+  for (int d : {2, 3})
+    for (double mass : {1e-3, 1e3})
+      for (double size : {0.1, 10.0}) {
+        const gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.5, ""}, {mass, size, 0.5, ""}}, 0.5, d == 3 ? 0.4 : 0.6);
+        const gkt::MixtureNavierStokes ns(m, 3);
+        const auto v2 = ns.coefficients(2), v3 = ns.coefficients(3);
+        EXPECT_GT(v3.shear_viscosity, 0) << d << " " << mass << " " << size;
+        EXPECT_GT(v3.thermal_conductivity, 0);
+        EXPECT_GT(v3.bulk_viscosity, 0);
+        EXPECT_TRUE(std::isfinite(v3.cooling_rate_first_order));
+        for (double x : v3.mutual_diffusion) EXPECT_TRUE(std::isfinite(x));
+        EXPECT_LT(relative(v2.shear_viscosity, v3.shear_viscosity), 0.02) << d << " " << mass << " " << size;
+      }
+}
+
+// Dense segregation criterion (theory.md (18.10)): identical species do not segregate (Λ = 0 for
+// any g*), and an intruder's Λ is the limit x_1 → 0 (x_1 = 0 and 1e-8 agree to 1e-6).
+TEST(MixtureEnskog, ThermalDiffusionFactor) {
+  for (int d : {2, 3})
+    for (double alpha : {1.0, 0.7}) {
+      const auto same =
+          gkt::MixtureNavierStokes(gkt::make_mixture(d, {{1, 1, 0.3, ""}, {1, 1, 0.7, ""}}, alpha, 0.3), 2)
+              .coefficients(2);
+      for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_LT(std::abs(same.segregation[i]), 1e-12) << d << " " << alpha;
+        EXPECT_LT(std::abs(same.segregation_gravity[i]), 1e-12);
+      }
+      auto intruder = [&](double x1) {
+        return gkt::MixtureNavierStokes(gkt::make_mixture(d, {{4, 2, x1, ""}, {1, 1, 1 - x1, ""}}, alpha, 0.3), 2)
+            .coefficients(2);
+      };
+      const auto zero = intruder(0), small = intruder(1e-8);
+      EXPECT_GT(std::abs(zero.segregation[0]), 0.05) << d << " " << alpha;
+      EXPECT_LT(relative(small.segregation[0], zero.segregation[0]), 1e-6) << d << " " << alpha;
+      EXPECT_LT(relative(small.segregation_gravity[0], zero.segregation_gravity[0]), 1e-6);
+    }
+}
