@@ -40,6 +40,9 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   if (mixture.size() != 2) throw std::invalid_argument("species: the transport table is for binaries (2 species)");
   if (nodes < 3) throw std::invalid_argument("nodes: must be an integer >= 3, got " + std::to_string(nodes));
   if (order < 1 || order > 12) throw std::invalid_argument("order: must be an integer in [1, 12]");
+  // The reduced dilute set depends on x_1 alone; a dense one would also depend on φ, which n changes.
+  if (mixture.packing_fraction != 0)
+    throw std::invalid_argument("packing_fraction: the transport table is for the dilute binary (0)");
   for (std::size_t i = 0; i < 2; ++i) {
     mass_[i] = mixture.species[i].mass;
     diameter_[i] = mixture.species[i].diameter;
