@@ -9,16 +9,18 @@
 #include <cmath>
 #include <numbers>
 
+#include "gkt/hcs_stability.hpp"
 #include "gkt/mixture.hpp"
 #include "gkt/mixture_navier_stokes.hpp"
 #include "gkt/navier_stokes.hpp"
 #include "gkt/pair_correlation.hpp"
+#include "mixture_test_helpers.hpp"
 
 using gkt::Rational;
+using gkt::test::growing_modes;
+using gkt::test::relative;
 
 namespace {
-
-double relative(double a, double b) { return std::abs(a - b) / std::max(1.0, std::abs(b)); }
 
 /// The mixture with the partial densities n_k (fractions renormalised, the last one closing the sum
 /// to 1 exactly) at the packing fraction that these densities give relative to `base` at n = 1.
@@ -256,4 +258,98 @@ TEST(MixtureEnskog, ThermalDiffusionFactor) {
       EXPECT_LT(relative(small.segregation[0], zero.segregation[0]), 1e-6) << d << " " << alpha;
       EXPECT_LT(relative(small.segregation_gravity[0], zero.segregation_gravity[0]), 1e-6);
     }
+}
+
+// Reciprocity of the elastic dense mixture. The elastic Enskog operator is symmetric in
+// ⟨X, Y⟩ = Σ_i ∫X_i Y_i/f_i, so ⟨ℬ^l, S^𝒜⟩ = ⟨𝒜, S^l⟩. For equal-temperature Maxwellians the adjoint of
+// the ∇T transfer source is −q^c(f^(1))/T (the collisional heat flux) and that of the ∇n_l source is
+// −2B_2 Σ_ij σ_ij^d χ_ij [δ_jl + ½ n_j ∂_l ln χ_ij] × (number flux of species i), since
+// ∫dv2 dσ̂ Θ(σ̂·g)(σ̂·g) σ̂ f_j(v2) = B_2 n_j V1 and the same with (2θ_j V2² − d) vanishes. With
+// ⟨⟨ΔE_1⟩⟩ = 0 (equal temperatures) this gives, at every Galerkin order,
+//     T D''_l/n_l − (d/2)(m_l/ρ) Σ_i D_il = ρ D^T_l/(m_l n_l) + 2B_2 Σ_ij (ρ D^T_i/m_i) σ_ij^d χ_ij [δ_jl + ½ n_j ∂_l
+//     ln χ_ij],
+// the dense form of (17.12). Nothing in the assembly imposes it: it ties the K sources, the
+// collisional heat flux (unequal masses), p and ∂p/∂n_l together. Unequal masses and diameters.
+TEST(MixtureEnskog, ElasticReciprocity) {
+  const double pi = std::numbers::pi, T = 1;
+  for (int d : {2, 3})
+    for (double phi : {0.2, 0.35})
+      for (double s2 : {1.0, 1.7}) {
+        const gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.4, ""}, {3.5, s2, 0.6, ""}}, 1.0, phi);
+        const gkt::MixtureNavierStokes ns(m, 3);
+        double volume = 0;
+        for (const auto& sp : m.species) volume += sp.fraction * std::pow(sp.diameter, d);
+        const double n = phi / (std::pow(pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1)) * volume);
+        const double c_d = std::pow(pi, (d - 1) / 2.0) / std::tgamma(d / 2.0), mbar = m.mean_mass();
+        const double eta0 = (d + 2) / (8 * c_d) * std::sqrt(mbar * T) / std::pow(m.mean_diameter(), d - 1);
+        const double kappa0 = d * (d + 2) / (2.0 * (d - 1)) * eta0 / mbar;
+        const double d0 = d / (4 * c_d) * std::sqrt(T / mbar) / (n * std::pow(m.mean_diameter(), d - 1));
+        const double rho = n * mbar, b2 = std::pow(pi, (d - 1) / 2.0) * std::tgamma(1.5) / std::tgamma(d / 2.0 + 1);
+        const auto chi = m.contact_values(), dchi = m.contact_value_derivatives();
+        for (int order : {1, 3}) {
+          const auto v = ns.coefficients(order);
+          for (std::size_t l = 0; l < 2; ++l) {
+            const double ml = m.species[l].mass, nl = n * m.species[l].fraction;
+            double lhs = v.dufour[l] * kappa0 / nl, rhs = rho * v.thermal_diffusion[l] * d0 / (ml * nl);
+            for (std::size_t i = 0; i < 2; ++i) {
+              lhs -= d / 2.0 * ml / rho * v.mutual_diffusion[i * 2 + l] * n * d0;
+              for (std::size_t j = 0; j < 2; ++j) {
+                const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter);
+                rhs +=
+                    2 * b2 * rho * v.thermal_diffusion[i] * d0 / m.species[i].mass * std::pow(sigma, d) *
+                    chi[i * 2 + j] *
+                    ((j == l ? 1.0 : 0.0) + 0.5 * m.species[j].fraction * dchi[(i * 2 + j) * 2 + l] / chi[i * 2 + j]);
+              }
+            }
+            EXPECT_LT(std::abs(lhs - rhs), 1e-12 * std::abs(lhs)) << d << " " << phi << " " << s2 << " " << order;
+          }
+        }
+      }
+}
+
+// HCS stability of the dense mixture (theory.md (18.13)): identical species reproduce the
+// one-component dense analysis (14.4)–(14.5) with the one-component Enskog coefficients; for an
+// unequal binary and a ternary one growing mode disappears between 0.99 k∥c* and 1.01 k∥c*, where
+// M has an eigenvalue below 1e-8.
+TEST(MixtureEnskog, HcsStability) {
+  const auto& closure = gkt::pair_correlation("carnahan-starling");
+  for (int d : {2, 3}) {
+    gkt::NavierStokesSolver one(d);
+    const double phi = 0.25;
+    const Rational exact_phi = Rational::from_double(phi);
+    const double chi = closure.contact_value(d, exact_phi).to_double();
+    const double phi_dchi = closure.packing_derivative(d, exact_phi).to_double();
+    for (double alpha : {0.9, 0.6}) {
+      const gkt::Mixture same = gkt::make_mixture(d, {{1, 1, 0.4, ""}, {1, 1, 0.6, ""}}, alpha, phi);
+      const gkt::MixtureNavierStokes ns(same, 2);
+      const auto v = ns.coefficients(2);
+      const gkt::EnskogState dense{phi, chi, phi_dchi};
+      const auto o = one.solve(Rational::from_double(alpha), 2, {1.0, 0.0, 0.0}, gkt::SonineScheme::standard, dense);
+      const double factor = d == 3 ? 2.0 : 1.0;
+      const gkt::StabilityDensity density{dense.pressure(d, alpha), factor * (1 + alpha) * phi * (chi + phi_dchi),
+                                          phi_dchi / chi, o.bulk_viscosity, o.cooling_rate_first_order};
+      const double zeta = chi * (d + 2) * (1 - alpha * alpha) / (4.0 * d);
+      const auto expected =
+          gkt::hcs_stability(d, zeta, o.shear_viscosity, o.thermal_conductivity, o.density_heat_coefficient, density);
+      const auto got = gkt::mixture_hcs_stability(gkt::mixture_stability_input(same, ns, v));
+      ASSERT_GT(expected.heat_wavenumber, 0.05) << d << " " << alpha;
+      EXPECT_LT(relative(got.shear_wavenumber, expected.shear_wavenumber), 1e-12) << d << " " << alpha;
+      EXPECT_LT(relative(got.heat_wavenumber, expected.heat_wavenumber), 1e-9) << d << " " << alpha;
+    }
+    gkt::Mixture binary = gkt::make_mixture(d, {{1, 1, 0.4, ""}, {3, 1.5, 0.6, ""}}, 0.7, phi);
+    gkt::Mixture three = gkt::make_mixture(d, {{1, 1, 0.5, ""}, {1.5, 0.8, 0.3, ""}, {4, 2, 0.2, ""}}, 0.7, phi);
+    for (const gkt::Mixture& m : {binary, three}) {
+      const gkt::MixtureNavierStokes ns(m, 2);
+      const auto in = gkt::mixture_stability_input(m, ns, ns.coefficients(2));
+      const auto st = gkt::mixture_hcs_stability(in);
+      ASSERT_GT(st.heat_wavenumber, 0.05) << d << " " << m.size();
+      EXPECT_EQ(growing_modes(gkt::mixture_longitudinal_matrix(in, 0.99 * st.heat_wavenumber)),
+                growing_modes(gkt::mixture_longitudinal_matrix(in, 1.01 * st.heat_wavenumber)) + 1)
+          << d << " " << m.size();
+      double smallest = INFINITY;
+      for (const auto& e : gkt::mixture_longitudinal_matrix(in, st.heat_wavenumber).eigenvalues())
+        smallest = std::min(smallest, std::abs(e));
+      EXPECT_LT(smallest, 1e-8) << d << " " << m.size();
+    }
+  }
 }

@@ -11,6 +11,9 @@
 
 #include <Eigen/Dense>
 
+#include "gkt/mixture.hpp"
+#include "gkt/mixture_navier_stokes.hpp"
+
 namespace gkt {
 
 /// What the dense (Enskog) gas adds to the linearised equations (theory.md (14.4)); the default is
@@ -49,8 +52,8 @@ std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimen
                                                                        double density_heat_coefficient, double k,
                                                                        const StabilityDensity& dense = {});
 
-/// What the longitudinal modes of a dilute mixture need (reduced as in docs/conventions.md
-/// "Mixtures"; theory.md §17.7).
+/// What the longitudinal modes of a mixture need (reduced as in docs/conventions.md "Mixtures";
+/// theory.md §17.7, dense §18.9).
 struct MixtureStabilityInput {
   int dimension = 3;
   std::vector<double> fraction;            ///< x_i
@@ -61,14 +64,24 @@ struct MixtureStabilityInput {
   std::vector<double> dufour;              ///< D''_j*
   std::vector<double> drift;               ///< w_i = D0 Σ_j drift[i·s + j] ∇ln n_j + … (s × s)
   std::vector<double> thermal_drift;       ///< … + D0 thermal_drift[i] ∇ln T
+  // The dense (Enskog) mixture (theory.md (18.13)); the defaults are the dilute gas.
+  double pressure = 1;                      ///< p* = p/(nT)
+  std::vector<double> pressure_derivative;  ///< P_j = (∂p/∂n_j)/T (empty: all 1)
+  double bulk_viscosity = 0;                ///< κ/η0
+  double cooling_rate_first_order = 0;      ///< ζ_U
 };
 
+/// Returns the stability input of `mixture` from its Navier–Stokes solver and the coefficients of one
+/// order (dilute or dense).
+MixtureStabilityInput mixture_stability_input(const Mixture& mixture, const MixtureNavierStokes& solver,
+                                              const MixtureTransportValues& values);
+
 /// Returns the (s+2)×(s+2) matrix of the longitudinal modes (ρ_1 … ρ_s, θ, w∥), ρ_i = δn_i/n_i:
-/// ∂_τ X = M X at k* (theory.md (17.14)).
+/// ∂_τ X = M X at k* (theory.md (17.14), dense (18.13)).
 Eigen::MatrixXcd mixture_longitudinal_matrix(const MixtureStabilityInput& in, double k);
 
-/// Returns the critical values of a dilute mixture's HCS: k⊥c* = √(ζ*/η*) and k∥c*, the largest k*
-/// at which det M(k*) of (17.14) vanishes (a real eigenvalue crosses zero; 0 if none).
+/// Returns the critical values of a mixture's HCS: k⊥c* = √(ζ*/η*) and k∥c*, the largest k* at
+/// which det M(k*) of (17.14)/(18.13) vanishes (a real eigenvalue crosses zero; 0 if none).
 HcsStability mixture_hcs_stability(const MixtureStabilityInput& in);
 
 }  // namespace gkt

@@ -33,11 +33,12 @@ struct MixtureTransportValues {
   /// diffusion factor of species i, ∂ln(n_i/n) = −Λ_i ∂ln T in a steady state with j_i = 0 and
   /// ∂p = −ρg, g* = ρg/(n ∂T) (theory.md (17.13)); nan if the other species is absent.
   std::vector<double> segregation, segregation_gravity;
-  double shear_viscosity = 0;           ///< η*
-  double thermal_conductivity = 0;      ///< λ*
-  double bulk_viscosity = 0;            ///< κ/η0 (zero in the dilute gas)
-  double cooling_rate_first_order = 0;  ///< ζ_U of ζ = ζ0 + ζ_U ∇·u (dimensionless; zero in the dilute gas)
-  double pressure = 1;                  ///< p* = p/(nT)
+  double shear_viscosity = 0;               ///< η*
+  double thermal_conductivity = 0;          ///< λ*
+  double bulk_viscosity = 0;                ///< κ/η0 (zero in the dilute gas)
+  double cooling_rate_first_order = 0;      ///< ζ_U of ζ = ζ0 + ζ_U ∇·u (dimensionless; zero in the dilute gas)
+  double pressure = 1;                      ///< p* = p/(nT)
+  std::vector<double> pressure_derivative;  ///< P_j = (∂p/∂n_j)/T at fixed T and n_k (1 in the dilute gas; (18.2))
   /// ϖ_i of the first-order partial temperatures T_i = γ_i T + T ϖ_i ∇·u/ν0 (theory.md (18.7); empty in
   /// the dilute gas, nan for an absent species).
   std::vector<double> temperature_first_order;

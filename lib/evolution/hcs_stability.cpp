@@ -50,6 +50,25 @@ HcsStability hcs_stability(int dimension, double cooling_rate, double shear_visc
   return s;
 }
 
+MixtureStabilityInput mixture_stability_input(const Mixture& mixture, const MixtureNavierStokes& solver,
+                                              const MixtureTransportValues& v) {
+  MixtureStabilityInput in;
+  in.dimension = mixture.dimension;
+  for (const auto& sp : mixture.species) in.fraction.push_back(sp.fraction);
+  in.cooling_rate = solver.cooling_state().cooling_rate;
+  in.cooling_derivative = solver.cooling_sensitivity().cooling_rate;
+  in.shear_viscosity = v.shear_viscosity;
+  in.thermal_conductivity = v.thermal_conductivity;
+  in.dufour = v.dufour;
+  in.drift = v.drift;
+  in.thermal_drift = v.thermal_drift;
+  in.pressure = v.pressure;
+  in.pressure_derivative = v.pressure_derivative;
+  in.bulk_viscosity = v.bulk_viscosity;
+  in.cooling_rate_first_order = v.cooling_rate_first_order;
+  return in;
+}
+
 Eigen::MatrixXcd mixture_longitudinal_matrix(const MixtureStabilityInput& in, double k) {
   const auto s = static_cast<Eigen::Index>(in.fraction.size());
   const double d = in.dimension, z = in.cooling_rate, k2 = k * k;
@@ -69,12 +88,14 @@ Eigen::MatrixXcd mixture_longitudinal_matrix(const MixtureStabilityInput& in, do
     m(a, w) = -i * k;
     m(t, t) -= k2 * nu_d0 * in.fraction[A] * in.thermal_drift[A];
     m(t, a) -= in.fraction[A] * in.cooling_derivative[A] + to_heat * in.dufour[A] * k2;
-    m(w, a) = -i * k / 2.0 * in.fraction[A];
+    // δp/(nT) = Σ_a x_a P_a ρ_a + p* θ (theory.md (18.13)); P_a = 1 in the dilute gas.
+    const double pa = in.pressure_derivative.empty() ? 1.0 : in.pressure_derivative[A];
+    m(w, a) = -i * k / 2.0 * in.fraction[A] * pa;
   }
   m(t, t) -= z / 2 + to_heat * in.thermal_conductivity * k2;
-  m(t, w) = -2 / d * i * k;
-  m(w, t) = -i * k / 2.0;
-  m(w, w) = z / 2 - (d - 1) / d * in.shear_viscosity * k2;
+  m(t, w) = -(2 / d * in.pressure + in.cooling_rate_first_order) * i * k;
+  m(w, t) = -i * k / 2.0 * in.pressure;
+  m(w, w) = z / 2 - ((d - 1) / d * in.shear_viscosity + in.bulk_viscosity / 2) * k2;
   return m;
 }
 

@@ -52,9 +52,9 @@ class MixtureModel final : public TransportModel {
       for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
     return n;
   }
-  /// The HCS always; the Navier–Stokes coefficients when the scene fixes φ: with the stability
-  /// columns at φ = 0, with p*, bulk viscosity and ζ_U instead at φ > 0 (theory.md §18) — a sweep
-  /// over φ lists the HCS only unless it names its coefficients;
+  /// The HCS always; the Navier–Stokes coefficients and the HCS stability when the scene fixes φ,
+  /// with p*, bulk viscosity and ζ_U too at φ > 0 (theory.md §18) — a sweep over φ lists the HCS
+  /// only unless it names its coefficients;
   /// tracer_diffusion_i only when asked for (a property of the pair at infinite dilution, not of
   /// the scene's composition).
   [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const override {
@@ -62,7 +62,7 @@ class MixtureModel final : public TransportModel {
     auto n = names(s, hcs_order(fixed));
     const Rational phi = fixed.number("packing_fraction", Rational(-1));
     for (const auto& t : transport_names(s))
-      if (phi.sign() == 0 ? !dense_only(t) : phi.sign() > 0 && !dilute_only(t)) n.push_back(t);
+      if (phi.sign() > 0 || (phi.sign() == 0 && !dense_only(t))) n.push_back(t);
     return n;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -248,22 +248,14 @@ class MixtureModel final : public TransportModel {
         operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)));
       AtOrder a{operators->coefficients(n), {NAN, NAN, NAN}};
       const MixtureTransportValues& v = a.values;
-      if (m.packing_fraction == 0 && v.shear_viscosity > 0 && v.thermal_conductivity > 0) {
-        std::vector<double> x;
-        for (const auto& sp : m.species) x.push_back(sp.fraction);
-        a.stability = mixture_hcs_stability({m.dimension, x, operators->cooling_state().cooling_rate,
-                                             operators->cooling_sensitivity().cooling_rate, v.shear_viscosity,
-                                             v.thermal_conductivity, v.dufour, v.drift, v.thermal_drift});
-      }
+      if (v.shear_viscosity > 0 && v.thermal_conductivity > 0)
+        a.stability = mixture_hcs_stability(mixture_stability_input(m, *operators, v));
       return by_order.emplace(n, std::move(a)).first->second;
     }
 
     /// Returns the coefficient `name` at the requested order or tolerance, its error from the next
     /// two orders (theory.md §6), undefined (nan) if a value is not finite.
     CoefficientValue value(const Mixture& m, const std::string& name, const OrderRequest& order) {
-      if (m.packing_fraction > 0 && dilute_only(name))
-        throw std::invalid_argument("coefficients: " + name +
-                                    " is implemented for the dilute mixture only (packing_fraction = 0)");
       const auto s = m.size();
       auto pick = [&](const AtOrder& at_order) {
         const MixtureTransportValues& v = at_order.values;
@@ -316,8 +308,6 @@ class MixtureModel final : public TransportModel {
     for (const char* c : {"bulk_viscosity", "cooling_rate_first_order", "pressure"}) n.emplace_back(c);
     return n;
   }
-  /// The HCS stability of §17.7 is derived for the dilute mixture only.
-  static bool dilute_only(const std::string& name) { return name.rfind("critical_", 0) == 0; }
   /// Zero in the dilute gas (p* = 1): listed by default only for a dense scene.
   static bool dense_only(const std::string& name) {
     return name == "bulk_viscosity" || name == "cooling_rate_first_order" || name == "pressure";

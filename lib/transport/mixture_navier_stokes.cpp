@@ -318,6 +318,7 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   const Eigen::VectorXd& a = modes.heat;
 
   MixtureTransportValues out;
+  out.pressure_derivative = dense_ ? pressure_derivative_ : std::vector<double>(s, 1.0);
   out.mutual_diffusion.assign(s * s, 0.0);
   out.thermal_diffusion.assign(s, 0.0);
   out.pressure_diffusion.assign(s, 0.0);
