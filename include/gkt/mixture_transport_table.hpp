@@ -1,10 +1,12 @@
-// The Navier–Stokes set of a dilute granular binary for hydrodynamic solvers: built once per pair
-// of species and restitution matrix, then evaluated at any state (x_1, n, T) in physical units
-// without allocation (docs/theory.md §17.8).
+// The Navier–Stokes set of a granular binary for hydrodynamic solvers: built once per pair of
+// species and restitution matrix, then evaluated at any state (x_1, n, T) in physical units
+// without allocation (docs/theory.md §17.8, dense §18.10).
 //
-// At fixed species and α the reduced coefficients depend on the composition x_1 only; they are
-// solved at Chebyshev–Lobatto points of x_1 ∈ [0, 1] (both ends tracer limits) and interpolated
-// barycentrically; n and T enter through the reference values η0, κ0, D0, ν0 of the gas (m̄, σ̄).
+// At fixed species and α the reduced coefficients depend on the composition x_1 and, in the dense
+// gas, on the packing fraction φ only; they are solved at Chebyshev–Lobatto points of x_1 ∈ [0, 1]
+// (both ends tracer limits) and, for a dense table, of φ ∈ [0, φ_max], and interpolated
+// barycentrically (tensor product); n and T enter through φ = n v_d Σ x_i σ_i^d and the reference
+// values η0, κ0, D0, ν0 of the gas (m̄, σ̄).
 #pragma once
 
 #include <array>
@@ -25,34 +27,53 @@ struct BinaryTransport {
   std::array<double, 2> thermal_diffusion{};   ///< D^T_i (j_i ∋ −ρ D^T_i ∇ln T)
   std::array<double, 2> pressure_diffusion{};  ///< D^p_i (j_i ∋ −ρ D^p_i ∇ln p at fixed x, T)
   std::array<double, 2> dufour{};              ///< D''_j (q ∋ −T² D''_j ∇ln n_j)
+  double pressure = 0;                         ///< p (energy/volume; nT when dilute)
+  double bulk_viscosity = 0;                   ///< κ (P ∋ −κ I ∇·u; 0 when dilute)
+  double cooling_rate_first_order = 0;         ///< ζ_U (ζ = ζ0 + ζ_U ∇·u; dimensionless)
 };
 
-/// Interpolation table of a dilute binary's transport coefficients in the mole fraction x_1.
+/// Interpolation table of a binary's transport coefficients in the mole fraction x_1 (and φ).
 class BinaryTransportTable {
  public:
-  /// Solves the mixture (species masses and diameters as given, fractions ignored; α of `mixture`;
-  /// φ must be 0) at `nodes` Chebyshev–Lobatto points x_1 ∈ [0, 1] at Sonine order `order`, and
-  /// measures the interpolation error at the midpoints between nodes. Throws std::invalid_argument
-  /// on bad input (nodes < 3, order outside [1, 12]).
-  BinaryTransportTable(const Mixture& mixture, int order, int nodes = 24);
+  /// Solves the mixture (species masses and diameters as given, fractions and φ ignored; α of
+  /// `mixture`) at Sonine order `order` on `nodes` Chebyshev–Lobatto points x_1 ∈ [0, 1] — and, if
+  /// max_packing_fraction > 0, on packing_nodes points φ ∈ [0, max_packing_fraction] — and measures
+  /// the interpolation error between the nodes. Throws std::invalid_argument on bad input (nodes or
+  /// packing_nodes outside [3, 64], order outside [1, 12], max_packing_fraction outside [0, φ limit)).
+  BinaryTransportTable(const Mixture& mixture, int order, int nodes = 24, double max_packing_fraction = 0,
+                       int packing_nodes = 12);
 
-  /// Returns the coefficients at x_1 ∈ [0, 1], density n > 0 and temperature T > 0 (no allocation).
+  /// Returns the coefficients at x_1 ∈ [0, 1], density n > 0 and temperature T > 0 (no allocation);
+  /// every value is nan if φ = n v_d Σ x_i σ_i^d exceeds the table's φ_max (0 for a dilute table,
+  /// which treats any n as dilute).
   [[nodiscard]] BinaryTransport evaluate(double fraction_1, double number_density, double temperature) const;
 
   /// Returns the largest |interpolated − solved| of the reduced coefficients at the midpoints
-  /// between nodes, relative to max(1, |value|): the interpolation error measured at build time.
+  /// between nodes (dense: at every pair of midpoints in x_1 and φ), relative to max(1, |value|):
+  /// the interpolation error measured at build time.
   [[nodiscard]] double interpolation_error() const { return interpolation_error_; }
 
  private:
-  static constexpr int kReduced = 15;  // ζ*, γ_1, γ_2, η*, λ*, D_ij* (4), D^T_i* (2), D^p_i* (2), D''_j* (2)
+  // ζ*, γ_1, γ_2, η*, λ*, D_ij* (4), D^T_i* (2), D^p_i* (2), D''_j* (2), p*, κ*, ζ_U
+  static constexpr int kReduced = 18;
+  static constexpr int kMaxNodes = 64;  // per axis: evaluate() keeps its factors on the stack
+  using Reduced = std::array<double, kReduced>;
+  /// Chebyshev–Lobatto points of [0, top] and their barycentric weights.
+  struct Axis {
+    std::vector<double> nodes, weights;
+    Axis(int count, double top);
+    /// Fills w with the barycentric factors at t, normalised to sum 1 (one-hot at a node).
+    void factors(double t, std::array<double, kMaxNodes>& w) const;
+  };
   int dimension_;
   std::array<double, 2> mass_{}, diameter_{};
-  std::vector<double> nodes_, weights_;               // x_1 at the nodes, barycentric weights
-  std::vector<std::array<double, kReduced>> values_;  // reduced set at each node
+  double max_packing_ = 0;
+  Axis fraction_axis_, packing_axis_;
+  std::vector<Reduced> values_;  // at packing node a, fraction node b: a · nodes + b
   double interpolation_error_ = 0;
 
-  [[nodiscard]] std::array<double, kReduced> reduced_at(double fraction_1) const;
-  static std::array<double, kReduced> solve(const Mixture& mixture, int order);
+  [[nodiscard]] Reduced reduced_at(double fraction_1, double packing) const;
+  static Reduced solve(const Mixture& mixture, int order);
 };
 
 }  // namespace gkt
