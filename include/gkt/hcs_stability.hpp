@@ -53,7 +53,7 @@ std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimen
                                                                        const StabilityDensity& dense = {});
 
 /// What the longitudinal modes of a mixture need (reduced as in docs/conventions.md "Mixtures";
-/// theory.md §17.7, dense §18.9).
+/// theory.md §17.7, dense §18.8).
 struct MixtureStabilityInput {
   int dimension = 3;
   std::vector<double> fraction;            ///< x_i

@@ -23,7 +23,10 @@ namespace gkt {
 struct MixtureTransportValues {
   /// D_ij* at i·s + j: j_i = −Σ_j (m_i m_j n_j/ρ) D_ij ∇ln n_j − ρ D^T_i ∇ln T (theory.md (17.1)).
   std::vector<double> mutual_diffusion;
-  std::vector<double> thermal_diffusion;   ///< D^T_i*
+  std::vector<double> thermal_diffusion;  ///< D^T_i*
+  /// L_ij* = L_ij T/(m̄ n D0) at i·s + j: j_i ∋ −Σ_j L_ij F_j for external forces F_j on the particles
+  /// of species j ([garzo2007mixture]; theory.md (18.14)).
+  std::vector<double> mobility;
   std::vector<double> pressure_diffusion;  ///< D^p_i* = Σ_j m_i m_j n_j D_ij/ρ² (j_i ∋ −ρ D^p_i ∇ln p; (17.8))
   std::vector<double> dufour;              ///< D''_j*: q = −λ∇T − T² Σ_j D''_j ∇ln n_j
   /// Per-particle drift of species i relative to u, w_i = j_i/(m_i n_i) = D0 Σ_j drift[i·s + j] ∇ln n_j +
@@ -69,6 +72,7 @@ class MixtureNavierStokes {
   struct VectorModes {
     Eigen::VectorXd heat;
     std::vector<Eigen::VectorXd> density;
+    std::vector<Eigen::VectorXd> force;  ///< per external force F_j (standard scaling only; (18.14))
   };
   /// Solves both vector systems at `order` with the leading blocks of the operator's two parts.
   [[nodiscard]] VectorModes vector_modes(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,

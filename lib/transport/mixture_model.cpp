@@ -62,7 +62,7 @@ class MixtureModel final : public TransportModel {
     auto n = names(s, hcs_order(fixed));
     const Rational phi = fixed.number("packing_fraction", Rational(-1));
     for (const auto& t : transport_names(s))
-      if (phi.sign() > 0 || (phi.sign() == 0 && !dense_only(t))) n.push_back(t);
+      if (!on_request(t) && (phi.sign() > 0 || (phi.sign() == 0 && !dense_only(t)))) n.push_back(t);
     return n;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -274,9 +274,11 @@ class MixtureModel final : public TransportModel {
           if (name == index_name("dufour", a)) return v.dufour[i];
           if (name == index_name("thermal_diffusion_factor", a))
             return v.segregation.empty() ? NAN : v.segregation[i] + gravity * v.segregation_gravity[i];
-          for (std::size_t j = 0; j < s; ++j)
+          for (std::size_t j = 0; j < s; ++j) {
             if (name == index_name("mutual_diffusion", a, static_cast<int>(j) + 1))
               return v.mutual_diffusion[i * s + j];
+            if (name == index_name("mobility", a, static_cast<int>(j) + 1)) return v.mobility[i * s + j];
+          }
         }
         throw std::logic_error("mixture: no transport value named " + name);
       };
@@ -306,8 +308,12 @@ class MixtureModel final : public TransportModel {
     for (const char* c : {"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"})
       n.emplace_back(c);
     for (const char* c : {"bulk_viscosity", "cooling_rate_first_order", "pressure"}) n.emplace_back(c);
+    for (int i = 1; i <= s; ++i)
+      for (int j = 1; j <= s; ++j) n.push_back(index_name("mobility", i, j));
     return n;
   }
+  /// The external-force coefficients L_ij: listed only when the scene names them.
+  static bool on_request(const std::string& name) { return name.rfind("mobility_", 0) == 0; }
   /// Zero in the dilute gas (p* = 1): listed by default only for a dense scene.
   static bool dense_only(const std::string& name) {
     return name == "bulk_viscosity" || name == "cooling_rate_first_order" || name == "pressure";

@@ -201,6 +201,23 @@ MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, co
     sb(major * n) = 0;
     out.density.push_back(lu.solve(sb));
   }
+  if (per_particle) return out;
+  // External forces (18.14): −(F_i/m_i)·∂_V f_i and the force in ∂_t^(1)u give the source
+  // 2θ_i V f_i (δ_ij/m_i − n_j/ρ) per F_j, rows 2√θ_i x_i M(p,0)(δ_ij/m_i − x_j); the mode carries 1/T
+  // more than ℬ, so −ζT∂_T adds ζM.
+  Eigen::MatrixXd kf = kb;
+  for (Eigen::Index i = 0; i < S; ++i)
+    if (i != major) kf.block(i * n, i * n, n, n) += zeta_ * mv;
+  kf.block(major * n + 1, major * n, n - 1, n) += zeta_ * mv.bottomRows(n - 1);
+  const auto lf = kf.partialPivLu();
+  for (std::size_t j = 0; j < s_; ++j) {
+    Eigen::VectorXd sf(S * n);
+    for (std::size_t i = 0; i < s_; ++i)
+      sf.segment(static_cast<Eigen::Index>(i) * n, n) =
+          2 * std::sqrt(theta_[i]) * fraction_[i] * ((i == j ? 1 / mass_[i] : 0.0) - fraction_[j]) * mv.col(0);
+    sf(major * n) = 0;
+    out.force.push_back(lf.solve(sf));
+  }
   return out;
 }
 
@@ -388,6 +405,12 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j)
       out.pressure_diffusion[i] += mass_[i] * mass_[j] * fraction_[j] * out.mutual_diffusion[i * s + j];
+  // L_ij = −(m_i/d) θ_i^{−1/2} M(0,0) φ̃^{F_j}_i0, reduced by m̄ n D0/T (18.14).
+  out.mobility.assign(s * s, 0.0);
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t j = 0; j < s; ++j)
+      out.mobility[i * s + j] = -mass_[i] / d / std::sqrt(theta_[i]) * m00 *
+                                modes.force[j](static_cast<Eigen::Index>(i) * n) * temperature / d0;
 
   species_drift(order, self, cross, out);
 
