@@ -418,3 +418,48 @@ TEST(MixtureEnskog, ForceMobility) {
         }
       }
 }
+
+// Garzó, Dufty & Hrenya's first-Sonine shear viscosity of the dense mixture (PRE 76, 031303 (2007);
+// seed 003): η = Σ_i η_i^k + η^c, η^c = (2B_2/(d+2)) Σ_ij μ_ij (1+α_ij) χ_ij n_i σ_ij^d η_j^k +
+// (d/(d+2)) κ^c, with κ^c their bulk viscosity (B_k as in BulkViscosityEqualsClosedForms). At order 1
+// (the basis Y_2 S_0 of GDH) the solver's η* equals it to 1e-13 for an unequal binary with unequal
+// temperatures — a check of the mass-asymmetric collisional momentum flux against the paper.
+TEST(MixtureEnskog, ShearViscosityEqualsGdhFirstSonine) {
+  const double pi = std::numbers::pi, T = 1;
+  for (int d : {2, 3})
+    for (double alpha : {1.0, 0.7})
+      for (double phi : {0.1, 0.3}) {
+        gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.35, ""}, {2.5, 1.5, 0.65, ""}}, alpha, phi);
+        m.alpha = {alpha, 0.9 * alpha, 0.9 * alpha, 0.8 * alpha};
+        const gkt::MixtureNavierStokes ns(m, 1);
+        const auto v = ns.coefficients(1);
+        const auto& gamma = ns.cooling_state().temperature_ratio;
+        const auto chi = m.contact_values();
+        auto b = [&](int k) {
+          return std::pow(pi, (d - 1) / 2.0) * std::tgamma((k + 1) / 2.0) / std::tgamma((k + d) / 2.0);
+        };
+        double volume = 0;
+        for (const auto& sp : m.species) volume += sp.fraction * std::pow(sp.diameter, d);
+        const double n = phi / (std::pow(pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1)) * volume);
+        const double c_d = std::pow(pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
+        const double eta0 = (d + 2) / (8 * c_d) * std::sqrt(m.mean_mass() * T) / std::pow(m.mean_diameter(), d - 1);
+        double eta = 0;
+        for (std::size_t i = 0; i < 2; ++i) {
+          eta += v.shear_viscosity_kinetic[i];
+          for (std::size_t j = 0; j < 2; ++j) {
+            const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ij = mi / (mi + mj),
+                         a = m.restitution(i, j);
+            const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter);
+            const double ni = n * m.species[i].fraction, nj = n * m.species[j].fraction;
+            const double g = std::tgamma((d + 1) / 2.0) / std::tgamma(d / 2.0) *
+                             std::sqrt(2 * gamma[i] * T / mi + 2 * gamma[j] * T / mj);
+            const double kappa = b(3) * (d + 1) / (2.0 * d * d) * mj * mu_ij * (1 + a) * chi[i * 2 + j] *
+                                 std::pow(sigma, d + 1) * ni * nj * g;
+            eta += 2 * b(2) / (d + 2) * mu_ij * (1 + a) * chi[i * 2 + j] * ni * std::pow(sigma, d) *
+                       v.shear_viscosity_kinetic[j] +
+                   d / (d + 2.0) * kappa / eta0;
+          }
+        }
+        EXPECT_LT(relative(v.shear_viscosity, eta), 1e-13) << d << " " << alpha << " " << phi;
+      }
+}

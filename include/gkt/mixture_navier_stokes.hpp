@@ -36,7 +36,9 @@ struct MixtureTransportValues {
   /// diffusion factor of species i, ∂ln(n_i/n) = −Λ_i ∂ln T in a steady state with j_i = 0 and
   /// ∂p = −ρg, g* = ρg/(n ∂T) (theory.md (17.13)); nan if the other species is absent.
   std::vector<double> segregation, segregation_gravity;
-  double shear_viscosity = 0;               ///< η*
+  double shear_viscosity = 0;  ///< η*
+  /// η_i^k* of [garzo2007mixture]: species i's kinetic part of η* (their sum is η* of the dilute gas)
+  std::vector<double> shear_viscosity_kinetic;
   double thermal_conductivity = 0;          ///< λ*
   double bulk_viscosity = 0;                ///< κ/η0 (zero in the dilute gas)
   double cooling_rate_first_order = 0;      ///< ζ_U of ζ = ζ0 + ζ_U ∇·u (dimensionless; zero in the dilute gas)

@@ -434,8 +434,12 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
       }
   const Eigen::VectorXd c = kc.partialPivLu().solve(sc);
   double eta = 0;
-  for (std::size_t i = 0; i < s; ++i)
-    eta -= mass_[i] / theta_[i] * ft.dot(c.segment(static_cast<Eigen::Index>(i) * nt, nt)) / (d * (d + 2.0));
+  for (std::size_t i = 0; i < s; ++i) {
+    const double partial =
+        -mass_[i] / theta_[i] * ft.dot(c.segment(static_cast<Eigen::Index>(i) * nt, nt)) / (d * (d + 2.0));
+    out.shear_viscosity_kinetic.push_back(partial / eta0);
+    eta += partial;
+  }
   if (dense_) {
     // (18.8): the f0 f^(1) part −(1/(2(d−1)(d+2))) Σ_ij m_i μ_ji (1+α) L R [x_i ⟨⟨(σ̂·g)σ̂σ̂:Y(c2) 𝒞_j⟩⟩ + …] and
     // the f0 ∂f0 part −(1/(4d(d+2))) Σ_ij m_i μ_ji (1+α) L² R x_i x_j ⟨⟨(σ̂·g)σ̂·(2θ_j v2 − 2θ_i v1)⟩⟩, whose
