@@ -463,3 +463,32 @@ TEST(MixtureEnskog, ShearViscosityEqualsGdhFirstSonine) {
         EXPECT_LT(relative(v.shear_viscosity, eta), 1e-13) << d << " " << alpha << " " << phi;
       }
 }
+
+// The tracer limit of the dense mixture is continuous: x_1 = 0 and 1e-9 give the same η*, λ*, κ*,
+// ζ_U, p*, D_ij*, D^T_i*, D''_i* and drifts to 1e-6 (d = 2, 3; heavy and light, wide and narrow tracers).
+TEST(MixtureEnskog, TracerLimitIsContinuous) {
+  for (int d : {2, 3})
+    for (const auto& [mass, size] : std::vector<std::pair<double, double>>{{4, 2}, {0.2, 0.6}}) {
+      auto at = [&](double x1) {
+        gkt::Mixture m = gkt::make_mixture(d, {{mass, size, x1, ""}, {1, 1, 1 - x1, ""}}, 0.7, 0.3);
+        m.alpha = {0.6, 0.8, 0.8, 0.7};
+        return gkt::MixtureNavierStokes(m, 2).coefficients(2);
+      };
+      const auto zero = at(0), small = at(1e-9);
+      const std::string label = std::to_string(d) + " " + std::to_string(mass);
+      EXPECT_LT(relative(small.shear_viscosity, zero.shear_viscosity), 1e-6) << label;
+      EXPECT_LT(relative(small.thermal_conductivity, zero.thermal_conductivity), 1e-6) << label;
+      EXPECT_LT(relative(small.bulk_viscosity, zero.bulk_viscosity), 1e-6) << label;
+      EXPECT_LT(relative(small.cooling_rate_first_order, zero.cooling_rate_first_order), 1e-6) << label;
+      EXPECT_LT(relative(small.pressure, zero.pressure), 1e-6) << label;
+      for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_LT(relative(small.mutual_diffusion[k], zero.mutual_diffusion[k]), 1e-6) << label << " " << k;
+        EXPECT_LT(relative(small.drift[k], zero.drift[k]), 1e-6) << label << " " << k;
+      }
+      for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_LT(relative(small.thermal_diffusion[i], zero.thermal_diffusion[i]), 1e-6) << label;
+        EXPECT_LT(relative(small.dufour[i], zero.dufour[i]), 1e-6) << label;
+        EXPECT_LT(relative(small.thermal_drift[i], zero.thermal_drift[i]), 1e-6) << label;
+      }
+    }
+}
