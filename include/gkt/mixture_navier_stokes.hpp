@@ -105,8 +105,9 @@ class MixtureNavierStokes {
   MixtureCoolingSensitivity sensitivity_;
   int max_order_;
   std::size_t s_;
-  double nu0_ = 0;   // ν0 = nT/η0 = 4√2 c_d/(d+2) in the units n = σ̄ = m̄ = √(2T/m̄) = 1
-  double zeta_ = 0;  // ζ = ζ* ν0 in those units
+  std::size_t major_ = 0;  // the first most abundant species: its rows carry the conservation constraints
+  double nu0_ = 0;         // ν0 = nT/η0 = 4√2 c_d/(d+2) in the units n = σ̄ = m̄ = √(2T/m̄) = 1
+  double zeta_ = 0;        // ζ = ζ* ν0 in those units
   std::vector<double> theta_, mass_, fraction_;  // θ_k = m_k/γ_k, m_k/m̄, x_k
   // Rows (i, p), columns (k, q), index i·n + p. The vector operator is kept in two parts: the
   // species-diagonal one (X_i against f_j, weight x_j) and the cross one (f_i against X_j) without its
@@ -117,7 +118,7 @@ class MixtureNavierStokes {
   // Dense gas (theory.md §18), per ordered pair i·s + j: rate_ = σ_ij^{d−1} χ_ij c_d w_ij (the operator's
   // collision rate), length_ = n σ̄^d σ_ij/σ̄ (the transfer length in the solver's units), the pair's
   // restitution and transfer averages; dchi_ = n ∂ln χ_ij/∂n_l at (i·s + j)·s + l; p* and
-  // pressure_derivative_[l] = ∂p/∂n_l/T.
+  // pressure_derivative_[l] = ∂p/∂n_l/T (1 when dilute).
   bool dense_ = false;
   std::vector<double> rate_, length_, alpha_;
   std::vector<PairTransferMoments> transfer_;

@@ -66,7 +66,7 @@ class BinaryTransportTable {
     void factors(double t, std::array<double, kMaxNodes>& w) const;
   };
   int dimension_;
-  std::array<double, 2> mass_{}, diameter_{};
+  std::array<double, 2> mass_{}, diameter_{}, species_volume_{};  // species_volume_: v_d σ_i^d
   double max_packing_ = 0;
   Axis fraction_axis_, packing_axis_;
   std::vector<Reduced> values_;  // at packing node a, fraction node b: a · nodes + b

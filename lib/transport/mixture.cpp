@@ -1,5 +1,6 @@
 #include "gkt/mixture.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -15,6 +16,18 @@ std::string number(double x) {  // shortest round-trip form
   return {buffer, result.ptr};
 }
 std::string species_field(const char* field, std::size_t i) { return std::string(field) + "_" + std::to_string(i + 1); }
+/// Returns the diameter moments M_l = Σ x_i σ_i^l, l = 0 … 3, of the contact-value closures (16.1).
+std::array<double, 4> diameter_moments(const std::vector<Species>& species) {
+  std::array<double, 4> m{};
+  for (const auto& sp : species) {
+    double power = sp.fraction;
+    for (double& moment : m) {
+      moment += power;
+      power *= sp.diameter;
+    }
+  }
+  return m;
+}
 }  // namespace
 
 void Mixture::validate() const {
@@ -68,13 +81,7 @@ double Mixture::mean_diameter() const {
 std::vector<double> Mixture::contact_values() const {
   const std::size_t s = size();
   const double phi = packing_fraction, g = 1 - phi;
-  // Moments M_l = Σ x_i σ_i^l of the diameters.
-  double m1 = 0, m2 = 0, m3 = 0;
-  for (const auto& sp : species) {
-    m1 += sp.fraction * sp.diameter;
-    m2 += sp.fraction * sp.diameter * sp.diameter;
-    m3 += sp.fraction * sp.diameter * sp.diameter * sp.diameter;
-  }
+  const auto [m0, m1, m2, m3] = diameter_moments(species);
   std::vector<double> chi(s * s);
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j) {
@@ -93,12 +100,7 @@ std::vector<double> Mixture::contact_values() const {
 std::vector<double> Mixture::contact_value_derivatives() const {
   const std::size_t s = size();
   const double phi = packing_fraction, g = 1 - phi;
-  double m1 = 0, m2 = 0, m3 = 0;
-  for (const auto& sp : species) {
-    m1 += sp.fraction * sp.diameter;
-    m2 += sp.fraction * sp.diameter * sp.diameter;
-    m3 += sp.fraction * sp.diameter * sp.diameter * sp.diameter;
-  }
+  const auto [m0, m1, m2, m3] = diameter_moments(species);
   // χ_ij = F(φ, y) with a = σ_iσ_j/σ_ij: 3D y = φ M2/M3 (φ ∝ Σ n_k σ_k³, y ∝ Σ n_k σ_k²), 2D y = φ M1/M2
   // (φ ∝ Σ n_k σ_k², y ∝ Σ n_k σ_k); n ∂χ/∂n_l = F_φ n ∂φ/∂n_l + F_y n ∂y/∂n_l.
   std::vector<double> out(s * s * s);

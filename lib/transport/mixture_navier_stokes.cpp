@@ -78,8 +78,7 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
   nu0_ = detail::unit_reference_gas(d).collision_frequency;
   zeta_ = state_.cooling_rate * nu0_;
   dense_ = mixture.packing_fraction > 0;
-  const double volume = std::pow(std::numbers::pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1));
-  const double n_star = mixture.packing_fraction / (volume * diameter_moment);  // n σ̄^d
+  const double n_star = mixture.packing_fraction / (detail::unit_sphere_volume(d) * diameter_moment);  // n σ̄^d
   const std::vector<double> chi = mixture.contact_values();
   const int nv = max_order + 1, nt = max_order, ns = max_order + 2;
   const auto S = static_cast<Eigen::Index>(s_);
@@ -119,6 +118,9 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
   tensor_d_ = to_matrix(tp.d);
   vector_flux_ = to_vector(vp.flux);
   tensor_flux_ = to_vector(tp.flux);
+  // The most abundant species' rows carry the conservation constraints (17.7), (18.6).
+  major_ = static_cast<std::size_t>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
+  pressure_derivative_.assign(s_, 1.0);  // p = nT when dilute
   if (!dense_) return;
   scalar_d_ = to_matrix(detail::rounded(detail::scalar_pieces(d, ns - 1, 0)).d);
   const std::vector<double> dchi = mixture.contact_value_derivatives();
@@ -127,7 +129,6 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
   // its derivative at fixed T also moves χ_ij and γ_i.
   const double b2 = std::pow(std::numbers::pi, (d - 1) / 2.0) * std::tgamma(1.5) / std::tgamma(d / 2.0 + 1);
   const std::vector<double>& gamma = state_.temperature_ratio;
-  pressure_derivative_.assign(s_, 1.0);
   for (std::size_t i = 0; i < s_; ++i)
     for (std::size_t j = 0; j < s_; ++j) {
       const std::size_t P = pair_index(i, j);
@@ -157,16 +158,19 @@ MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, co
   const Eigen::MatrixXd op = per_particle ? Eigen::MatrixXd(self + cross * weight.asDiagonal())
                                           : Eigen::MatrixXd(self + weight.asDiagonal() * cross);
   const Eigen::MatrixXd dv = vector_d_.topLeftCorner(n, n), mv = vector_m_.topLeftCorner(n, n);
-  Eigen::MatrixXd ka = op, kb = op;
+  // 𝒜: ζ(D − ½M); ℬ: ζD; external forces (standard scaling only; the mode carries 1/T more than ℬ,
+  // so −ζT∂_T adds ζM, (18.14)): ζ(D + M).
+  Eigen::MatrixXd ka = op, kb = op, kf = per_particle ? Eigen::MatrixXd() : op;
   for (Eigen::Index i = 0; i < S; ++i) {
     ka.block(i * n, i * n, n, n) += zeta_ * (dv - 0.5 * mv);
     kb.block(i * n, i * n, n, n) += zeta_ * dv;
+    if (!per_particle) kf.block(i * n, i * n, n, n) += zeta_ * (dv + mv);
   }
   // Total momentum Σ_k m_k ∫V X_k = 0 replaces the p = 0 row of the most abundant species: that row
   // is otherwise the momentum balance, a combination of the others (theory.md (17.7)).
-  const auto major =
-      static_cast<Eigen::Index>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
-  for (Eigen::MatrixXd* k : {&ka, &kb}) {
+  const auto major = static_cast<Eigen::Index>(major_);
+  for (Eigen::MatrixXd* k : {&ka, &kb, &kf}) {
+    if (k->size() == 0) continue;
     k->row(major * n).setZero();
     for (Eigen::Index j = 0; j < S; ++j) {
       const auto J = static_cast<std::size_t>(j);
@@ -188,7 +192,7 @@ MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, co
     // (17.6), (18.4): −θ_i^{−1/2}[δ_ij M(p,0) + x_i (∂_j ln γ_i ⟨x S_p (x − d/2)⟩ − θ_i ∂_j p/T M(p,0))]
     // + ∂ζ/∂n_j M φ̃^𝒜_i (per particle: x_j instead of x_i, and x_j ∂ζ/∂n_j).
     const double dzeta = sensitivity_.cooling_rate[j] * nu0_ * (per_particle ? fraction_[j] : 1.0);
-    const double dp = dense_ ? pressure_derivative_[j] : 1.0;
+    const double dp = pressure_derivative_[j];
     for (std::size_t i = 0; i < s_; ++i) {
       const auto I = static_cast<Eigen::Index>(i) * n;
       const double g = sensitivity_.temperature_ratio[i * s_ + j], x = per_particle ? fraction_[j] : fraction_[i];
@@ -203,12 +207,7 @@ MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, co
   }
   if (per_particle) return out;
   // External forces (18.14): −(F_i/m_i)·∂_V f_i and the force in ∂_t^(1)u give the source
-  // 2θ_i V f_i (δ_ij/m_i − n_j/ρ) per F_j, rows 2√θ_i x_i M(p,0)(δ_ij/m_i − x_j); the mode carries 1/T
-  // more than ℬ, so −ζT∂_T adds ζM.
-  Eigen::MatrixXd kf = kb;
-  for (Eigen::Index i = 0; i < S; ++i)
-    if (i != major) kf.block(i * n, i * n, n, n) += zeta_ * mv;
-  kf.block(major * n + 1, major * n, n - 1, n) += zeta_ * mv.bottomRows(n - 1);
+  // 2θ_i V f_i (δ_ij/m_i − n_j/ρ) per F_j, rows 2√θ_i x_i M(p,0)(δ_ij/m_i − x_j).
   const auto lf = kf.partialPivLu();
   for (std::size_t j = 0; j < s_; ++j) {
     Eigen::VectorXd sf(S * n);
@@ -278,8 +277,7 @@ MixtureNavierStokes::ScalarMode MixtureNavierStokes::scalar_mode(int order) cons
       for (int p = 0; p < nq; ++p) rhs(i * nq + p) += f * transfer_[P].source_scalar[static_cast<std::size_t>(p) + 1];
     }
   }
-  const auto major =
-      static_cast<Eigen::Index>(std::max_element(fraction_.begin(), fraction_.end()) - fraction_.begin());
+  const auto major = static_cast<Eigen::Index>(major_);
   m.row(major * nq).setZero();
   rhs(major * nq) = 0;
   for (Eigen::Index k = 0; k < S; ++k) m(major * nq, k * nq) = state_.temperature_ratio[static_cast<std::size_t>(k)];
@@ -335,17 +333,20 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   const Eigen::VectorXd& a = modes.heat;
 
   MixtureTransportValues out;
-  out.pressure_derivative = dense_ ? pressure_derivative_ : std::vector<double>(s, 1.0);
+  out.pressure_derivative = pressure_derivative_;
   out.mutual_diffusion.assign(s * s, 0.0);
   out.thermal_diffusion.assign(s, 0.0);
   out.pressure_diffusion.assign(s, 0.0);
   out.dufour.assign(s, 0.0);
-  const double m00 = vector_m_(0, 0);
+  // Number flux of species i of a vector-mode solution: ∫V·X_i/d = θ_i^{−1/2} M(0,0) φ̃_i0/d (17.9).
+  auto number_flux = [&](const Eigen::VectorXd& v, std::size_t i) {
+    return vector_m_(0, 0) / (d * std::sqrt(theta_[i])) * v(static_cast<Eigen::Index>(i) * n);
+  };
   const Eigen::VectorXd fv = vector_flux_.head(n);
   double lambda = 0;
   for (std::size_t i = 0; i < s; ++i) {
     const auto I = static_cast<Eigen::Index>(i) * n;
-    out.thermal_diffusion[i] = -mass_[i] / d / std::sqrt(theta_[i]) * m00 * a(I) / d0;  // (17.9)
+    out.thermal_diffusion[i] = -mass_[i] * number_flux(a, i) / d0;  // (17.9)
     lambda -= mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(a.segment(I, n)) / (2 * d * temperature);
   }
   // Collisional heat flux (18.9): −(1/(2d)) Σ_ij L R [x_i ⟨⟨(σ̂·c2)ΔE_1 X_j⟩⟩ + x_j ⟨⟨(σ̂·c1)ΔE_1 X_i⟩⟩] from
@@ -384,7 +385,7 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
     double heat = 0;
     for (std::size_t i = 0; i < s; ++i) {
       const auto I = static_cast<Eigen::Index>(i) * n;
-      out.mutual_diffusion[i * s + j] = -m00 / (mass_[j] * d * std::sqrt(theta_[i])) * b(I) / d0;  // (17.9)
+      out.mutual_diffusion[i * s + j] = -number_flux(b, i) / (mass_[j] * d0);  // (17.9)
       heat += 0.5 * mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(b.segment(I, n)) / d;
     }
     if (dense_) {
@@ -405,12 +406,11 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j)
       out.pressure_diffusion[i] += mass_[i] * mass_[j] * fraction_[j] * out.mutual_diffusion[i * s + j];
-  // L_ij = −(m_i/d) θ_i^{−1/2} M(0,0) φ̃^{F_j}_i0, reduced by m̄ n D0/T (18.14).
+  // L_ij = −m_i × the number flux of species i per F_j, reduced by m̄ n D0/T (18.14).
   out.mobility.assign(s * s, 0.0);
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j)
-      out.mobility[i * s + j] = -mass_[i] / d / std::sqrt(theta_[i]) * m00 *
-                                modes.force[j](static_cast<Eigen::Index>(i) * n) * temperature / d0;
+      out.mobility[i * s + j] = -mass_[i] * number_flux(modes.force[j], i) * temperature / d0;
 
   species_drift(order, self, cross, out);
 
@@ -503,7 +503,7 @@ void MixtureNavierStokes::species_drift(int order, const Eigen::MatrixXd& self, 
   for (std::size_t i = 0; i < 2; ++i) {
     const std::size_t k = 1 - i;
     if (fraction_[k] == 0) continue;
-    const double pi = dense_ ? pressure_derivative_[i] : 1.0, pk = dense_ ? pressure_derivative_[k] : 1.0;
+    const double pi = pressure_derivative_[i], pk = pressure_derivative_[k];
     const double denominator = density[i][i] - density[i][k] * fraction_[i] * pi / (fraction_[k] * pk);
     const double a = density[i][k] / (fraction_[k] * pk) / denominator, b = heat[i] / denominator;
     const double c = 1 - fraction_[i] * (1 - pi / pk);

@@ -83,6 +83,7 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   for (std::size_t i = 0; i < 2; ++i) {
     mass_[i] = mixture.species[i].mass;
     diameter_[i] = mixture.species[i].diameter;
+    species_volume_[i] = detail::unit_sphere_volume(dimension_) * std::pow(diameter_[i], dimension_);
   }
   auto at = [&](double x1, double phi) {
     Mixture m = mixture;
@@ -134,10 +135,8 @@ BinaryTransportTable::Reduced BinaryTransportTable::reduced_at(double x, double 
 BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double temperature) const {
   const int d = dimension_;
   const double x[2] = {std::clamp(x1, 0.0, 1.0), 1 - std::clamp(x1, 0.0, 1.0)};
-  // φ = n v_d Σ x_i σ_i^d, v_d the volume of the unit-diameter sphere (disk).
-  const double volume = std::pow(std::numbers::pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1));
-  const double phi =
-      max_packing_ > 0 ? n * volume * (x[0] * std::pow(diameter_[0], d) + x[1] * std::pow(diameter_[1], d)) : 0.0;
+  // φ = n v_d Σ x_i σ_i^d (v_d σ_i^d kept from the build).
+  const double phi = max_packing_ > 0 ? n * (x[0] * species_volume_[0] + x[1] * species_volume_[1]) : 0.0;
   BinaryTransport out;
   if (phi > max_packing_) {
     const double nan = std::nan("");

@@ -12,6 +12,12 @@ namespace gkt::detail {
 /// (θ_iθ_j)^{d/2} J0_ij π^{−d} = c_d √(1/θ_i + 1/θ_j) (theory.md (16.4)).
 inline double geometric_factor(int d) { return std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0); }
 
+/// Returns v_d = π^{d/2}/(2^d Γ(d/2 + 1)), the volume of a sphere (area of a disk) of unit
+/// diameter: φ = n v_d Σ_i x_i σ_i^d.
+inline double unit_sphere_volume(int d) {
+  return std::pow(std::numbers::pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1));
+}
+
 /// η0, κ0, D0 and ν0 = nT/η0 of the reference gas, in the caller's units.
 struct ReferenceGas {
   double viscosity;            ///< η0 = ((d+2)/(8c_d)) √(mT)/σ^{d−1}
