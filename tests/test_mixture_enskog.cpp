@@ -46,6 +46,42 @@ gkt::Mixture at_densities(const gkt::Mixture& base, const std::vector<double>& n
   return m;
 }
 
+/// Returns B_k = π^{(d−1)/2} Γ((k+1)/2)/Γ((k+d)/2) of [garzo2007mixture] (seed 003 prints Γ((d+1)/2)).
+double b_constant(int d, int k) {
+  return std::pow(std::numbers::pi, (d - 1) / 2.0) * std::tgamma((k + 1) / 2.0) / std::tgamma((k + d) / 2.0);
+}
+
+/// Returns n = φ/(v_d Σ x_i σ_i^d) for the mixture's diameters as given (the tests' physical units).
+double number_density(const gkt::Mixture& m) {
+  const int d = m.dimension;
+  double volume = 0;
+  for (const auto& sp : m.species) volume += sp.fraction * std::pow(sp.diameter, d);
+  const double v_d = std::pow(std::numbers::pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1));
+  return m.packing_fraction / (v_d * volume);
+}
+
+/// Returns η0 = ((d+2)/(8c_d)) √(m̄T)/σ̄^{d−1}, c_d = π^{(d−1)/2}/Γ(d/2): the reduction of η* and κ*.
+double reference_viscosity(const gkt::Mixture& m, double temperature) {
+  const int d = m.dimension;
+  const double c_d = std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
+  return (d + 2) / (8 * c_d) * std::sqrt(m.mean_mass() * temperature) / std::pow(m.mean_diameter(), d - 1);
+}
+
+/// Returns the pair (i, j)'s term of GDH's collisional bulk viscosity
+/// κ^c = (B_3(d+1)/(2d²)) Σ_ij m_j μ_ij (1+α_ij) χ_ij σ_ij^{d+1} n_i n_j ⟨g_ij⟩, ⟨g_ij⟩ over Maxwellians at γ_i T.
+double gdh_bulk_viscosity_pair(const gkt::Mixture& m, const std::vector<double>& gamma, double n, double temperature,
+                               std::size_t i, std::size_t j) {
+  const int d = m.dimension;
+  const std::size_t s = m.size();
+  const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ij = mi / (mi + mj);
+  const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter);
+  const double g = std::tgamma((d + 1) / 2.0) / std::tgamma(d / 2.0) *
+                   std::sqrt(2 * gamma[i] * temperature / mi + 2 * gamma[j] * temperature / mj);
+  return b_constant(d, 3) * (d + 1) / (2.0 * d * d) * mj * mu_ij * (1 + m.restitution(i, j)) *
+         m.contact_values()[i * s + j] * std::pow(sigma, d + 1) * n * m.species[i].fraction * n *
+         m.species[j].fraction * g;
+}
+
 gkt::Mixture ternary(int d, double phi) {
   gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.3, ""}, {4, 1.6, 0.5, ""}, {0.4, 0.7, 0.2, ""}}, 0.7, phi);
   m.alpha = {0.9, 0.7, 0.6, 0.7, 0.5, 0.8, 0.6, 0.8, 0.95};
@@ -173,26 +209,15 @@ TEST(MixtureEnskog, BulkViscosityEqualsClosedForms) {
       const auto v = ns.coefficients(3);
       const auto& gamma = ns.cooling_state().temperature_ratio;
       const auto chi = m.contact_values();
-      const double pi = std::numbers::pi, T = 1;
-      auto b = [&](int k) {
-        return std::pow(pi, (d - 1) / 2.0) * std::tgamma((k + 1) / 2.0) / std::tgamma((k + d) / 2.0);
-      };
-      double volume = 0;
-      for (const auto& sp : m.species) volume += sp.fraction * std::pow(sp.diameter, d);
-      const double n = phi / (std::pow(pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1)) * volume);
-      const double c_d = std::pow(pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
-      const double eta0 = (d + 2) / (8 * c_d) * std::sqrt(m.mean_mass() * T) / std::pow(m.mean_diameter(), d - 1);
+      const double T = 1, n = number_density(m), eta0 = reference_viscosity(m, T);
       double kappa = 0, partial = 0;
       for (std::size_t i = 0; i < 2; ++i)
         for (std::size_t j = 0; j < 2; ++j) {
-          const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ij = mi / (mi + mj), mu_ji = mj / (mi + mj);
+          const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ji = mj / (mi + mj);
           const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter), a = m.restitution(i, j);
           const double ni = n * m.species[i].fraction, nj = n * m.species[j].fraction;
-          const double g = std::tgamma((d + 1) / 2.0) / std::tgamma(d / 2.0) *
-                           std::sqrt(2 * gamma[i] * T / mi + 2 * gamma[j] * T / mj);
-          kappa += b(3) * (d + 1) / (2.0 * d * d) * mj * mu_ij * (1 + a) * chi[i * 2 + j] * std::pow(sigma, d + 1) *
-                   ni * nj * g;
-          partial -= b(2) * mu_ji * (1 + a) * std::pow(sigma, d) * chi[i * 2 + j] * ni * nj * T *
+          kappa += gdh_bulk_viscosity_pair(m, gamma, n, T, i, j);
+          partial -= b_constant(d, 2) * mu_ji * (1 + a) * std::pow(sigma, d) * chi[i * 2 + j] * ni * nj * T *
                      v.temperature_first_order[i] / (n * T / eta0);
         }
       EXPECT_GT(std::abs(partial), 1e-3 * kappa) << d << " " << phi;  // the partial temperatures do contribute
@@ -274,20 +299,17 @@ TEST(MixtureEnskog, ThermalDiffusionFactor) {
 // the dense form of (17.12). Nothing in the assembly imposes it: it ties the K sources, the
 // collisional heat flux (unequal masses), p and ∂p/∂n_l together. Unequal masses and diameters.
 TEST(MixtureEnskog, ElasticReciprocity) {
-  const double pi = std::numbers::pi, T = 1;
+  const double T = 1;
   for (int d : {2, 3})
     for (double phi : {0.2, 0.35})
       for (double s2 : {1.0, 1.7}) {
         const gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.4, ""}, {3.5, s2, 0.6, ""}}, 1.0, phi);
         const gkt::MixtureNavierStokes ns(m, 3);
-        double volume = 0;
-        for (const auto& sp : m.species) volume += sp.fraction * std::pow(sp.diameter, d);
-        const double n = phi / (std::pow(pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1)) * volume);
-        const double c_d = std::pow(pi, (d - 1) / 2.0) / std::tgamma(d / 2.0), mbar = m.mean_mass();
-        const double eta0 = (d + 2) / (8 * c_d) * std::sqrt(mbar * T) / std::pow(m.mean_diameter(), d - 1);
+        const double n = number_density(m), mbar = m.mean_mass(), eta0 = reference_viscosity(m, T);
+        // κ0 = (d(d+2)/(2(d−1))) η0/m̄ and D0 = (2d/(d+2)) η0/(ρ) (docs/conventions.md).
         const double kappa0 = d * (d + 2) / (2.0 * (d - 1)) * eta0 / mbar;
-        const double d0 = d / (4 * c_d) * std::sqrt(T / mbar) / (n * std::pow(m.mean_diameter(), d - 1));
-        const double rho = n * mbar, b2 = std::pow(pi, (d - 1) / 2.0) * std::tgamma(1.5) / std::tgamma(d / 2.0 + 1);
+        const double d0 = 2.0 * d / (d + 2) * eta0 / (n * mbar);
+        const double rho = n * mbar, b2 = b_constant(d, 2);
         const auto chi = m.contact_values(), dchi = m.contact_value_derivatives();
         for (int order : {1, 3}) {
           const auto v = ns.coefficients(order);
@@ -425,7 +447,7 @@ TEST(MixtureEnskog, ForceMobility) {
 // (the basis Y_2 S_0 of GDH) the solver's η* equals it to 1e-13 for an unequal binary with unequal
 // temperatures — a check of the mass-asymmetric collisional momentum flux against the paper.
 TEST(MixtureEnskog, ShearViscosityEqualsGdhFirstSonine) {
-  const double pi = std::numbers::pi, T = 1;
+  const double T = 1;
   for (int d : {2, 3})
     for (double alpha : {1.0, 0.7})
       for (double phi : {0.1, 0.3}) {
@@ -435,29 +457,16 @@ TEST(MixtureEnskog, ShearViscosityEqualsGdhFirstSonine) {
         const auto v = ns.coefficients(1);
         const auto& gamma = ns.cooling_state().temperature_ratio;
         const auto chi = m.contact_values();
-        auto b = [&](int k) {
-          return std::pow(pi, (d - 1) / 2.0) * std::tgamma((k + 1) / 2.0) / std::tgamma((k + d) / 2.0);
-        };
-        double volume = 0;
-        for (const auto& sp : m.species) volume += sp.fraction * std::pow(sp.diameter, d);
-        const double n = phi / (std::pow(pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1)) * volume);
-        const double c_d = std::pow(pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
-        const double eta0 = (d + 2) / (8 * c_d) * std::sqrt(m.mean_mass() * T) / std::pow(m.mean_diameter(), d - 1);
+        const double n = number_density(m), eta0 = reference_viscosity(m, T);
         double eta = 0;
         for (std::size_t i = 0; i < 2; ++i) {
           eta += v.shear_viscosity_kinetic[i];
           for (std::size_t j = 0; j < 2; ++j) {
-            const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ij = mi / (mi + mj),
-                         a = m.restitution(i, j);
-            const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter);
-            const double ni = n * m.species[i].fraction, nj = n * m.species[j].fraction;
-            const double g = std::tgamma((d + 1) / 2.0) / std::tgamma(d / 2.0) *
-                             std::sqrt(2 * gamma[i] * T / mi + 2 * gamma[j] * T / mj);
-            const double kappa = b(3) * (d + 1) / (2.0 * d * d) * mj * mu_ij * (1 + a) * chi[i * 2 + j] *
-                                 std::pow(sigma, d + 1) * ni * nj * g;
-            eta += 2 * b(2) / (d + 2) * mu_ij * (1 + a) * chi[i * 2 + j] * ni * std::pow(sigma, d) *
-                       v.shear_viscosity_kinetic[j] +
-                   d / (d + 2.0) * kappa / eta0;
+            const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ij = mi / (mi + mj);
+            const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter), a = m.restitution(i, j);
+            eta += 2 * b_constant(d, 2) / (d + 2) * mu_ij * (1 + a) * chi[i * 2 + j] * n * m.species[i].fraction *
+                       std::pow(sigma, d) * v.shear_viscosity_kinetic[j] +
+                   d / (d + 2.0) * gdh_bulk_viscosity_pair(m, gamma, n, T, i, j) / eta0;
           }
         }
         EXPECT_LT(relative(v.shear_viscosity, eta), 1e-13) << d << " " << alpha << " " << phi;
