@@ -337,6 +337,11 @@ TEST(MixtureNavierStokes, BinaryTransportTable) {
   EXPECT_NEAR(e.mutual_diffusion[1] / n, -0.3 * self, 1e-13);
   EXPECT_EQ(e.cooling_rate, 0);
   // A dense table reaches at most the closure's limit; too many nodes would not fit evaluate()'s stack.
-  EXPECT_THROW(gkt::BinaryTransportTable(m, 1, 5, 0.5), std::invalid_argument);
+  try {
+    const gkt::BinaryTransportTable beyond(m, 1, 5, 0.5);
+    ADD_FAILURE() << "max_packing_fraction 0.5 accepted in 3D";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "max_packing_fraction: must be a number in [0, 1/2) for dimension = 3");
+  }
   EXPECT_THROW(gkt::BinaryTransportTable(m, 1, 65), std::invalid_argument);
 }

@@ -77,9 +77,10 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   if (packing_nodes < 3 || packing_nodes > kMaxNodes)
     throw std::invalid_argument("packing_nodes: must be an integer in [3, 64], got " + std::to_string(packing_nodes));
   if (order < 1 || order > 12) throw std::invalid_argument("order: must be an integer in [1, 12]");
-  const double limit = gkt::max_packing_fraction(mixture.dimension).to_double();
-  if (!(max_packing_fraction >= 0 && max_packing_fraction < limit))
-    throw std::invalid_argument("max_packing_fraction: must be a number in [0, " + std::to_string(limit) + ")");
+  const Rational limit = gkt::max_packing_fraction(mixture.dimension);
+  if (!(max_packing_fraction >= 0 && max_packing_fraction < limit.to_double()))
+    throw std::invalid_argument("max_packing_fraction: must be a number in [0, " + limit.to_string() +
+                                ") for dimension = " + std::to_string(mixture.dimension));
   for (std::size_t i = 0; i < 2; ++i) {
     mass_[i] = mixture.species[i].mass;
     diameter_[i] = mixture.species[i].diameter;
