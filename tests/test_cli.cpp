@@ -372,12 +372,25 @@ TEST(CliEvolve, TransportAlongTrajectory) {
   ASSERT_EQ(rows[0].size(), 10U);
   for (std::size_t c = 0; c < 3; ++c)
     EXPECT_NEAR(std::stod(rows.back()[7 + c]), std::stod(reference[1][c]), 1e-9) << rows[0][7 + c];
-  const CliRun v = run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") +
-                           " --set 'coefficients=[\"shear_viscosity\", \"density_heat_coefficient\"]'");
+  // Viscoelastic: η*, κ*, μ* are the δ'-series of `gkt table` (order 1: η*(0) = κ*(0) = 1) at
+  // δ'(τ) = δ (2T/T0)^{1/10}, δ = 0.1 in the scene.
+  const CliRun v = run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") + names);
   ASSERT_EQ(v.status, 0) << v.err;
-  const auto vr = parse_csv(v.out);
-  for (std::size_t i = 1; i < vr.size(); ++i)
-    EXPECT_NEAR((std::stod(vr[i][5]) - 1) / std::stod(vr[i][6]), (359.0 / 1920) / (19.0 / 40), 1e-12) << i;
+  const CliRun vt = run_gkt("table " + scene_path("viscoelastic_constants.toml") +
+                            " --set 'coefficients=[\"shear_viscosity_1\", \"shear_viscosity_2\", "
+                            "\"thermal_conductivity_1\", \"thermal_conductivity_2\", "
+                            "\"density_heat_coefficient_1\", \"density_heat_coefficient_2\"]'");
+  ASSERT_EQ(vt.status, 0) << vt.err;
+  const auto vr = parse_csv(v.out), series = parse_csv(vt.out);
+  ASSERT_EQ(vr[0][5], "shear_viscosity");
+  for (std::size_t i = 1; i < vr.size(); ++i) {
+    const double dp = 0.1 * std::pow(2 * std::stod(vr[i][2]), 0.1);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double expected =
+          (c < 2 ? 1.0 : 0.0) + std::stod(series[1][2 * c]) * dp + std::stod(series[1][2 * c + 1]) * dp * dp;
+      EXPECT_NEAR(std::stod(vr[i][5 + c]), expected, 1e-12) << vr[0][5 + c] << " row " << i;
+    }
+  }
   // Time-dependent critical size: constant α relaxes to `gkt stability` at the same order; for
   // viscoelastic grains k⊥c* = √(ζ*/η*) ∝ δ'^{1/2} ∝ T^{1/20} at late times, so L_c* ∝ T^{−1/20}
   // (∝ t^{1/12} with T ∝ t^{−5/3}): the log-slope over the last three decades of T is −1/20 within 5 %.
@@ -401,12 +414,13 @@ TEST(CliEvolve, TransportAlongTrajectory) {
   const double slope = std::log(std::stod(late[length]) / std::stod(vcr[earlier][length])) /
                        std::log(std::stod(late[2]) / std::stod(vcr[earlier][2]));
   EXPECT_NEAR(slope, -1.0 / 20, 0.05 / 20) << "rows " << earlier << ", " << vcr.size() - 1;
-  const CliRun bad =
-      run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") + " --set 'coefficients=[\"thermal_conductivity\"]'");
+  const CliRun bad = run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") +
+                             " --set order=9 --set 'coefficients=[\"thermal_conductivity\"]'");
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.err.find("coefficients: 'thermal_conductivity' is not offered along a viscoelastic trajectory"),
+  EXPECT_NE(bad.err.find("order: viscoelastic transport along the trajectory needs an integer in [1, 8], got 9"),
             std::string::npos)
       << bad.err;
+  EXPECT_TRUE(bad.out.empty());
 }
 
 TEST(CliViscoelastic, ConstantsAndBadInput) {
@@ -415,7 +429,8 @@ TEST(CliViscoelastic, ConstantsAndBadInput) {
   expect_csv_close(r.out, read_file(golden_path("viscoelastic_constants.csv")));
   for (const auto& [command, message] : std::vector<std::pair<std::string, std::string>>{
            {"table " + scene_path("viscoelastic_constants.toml") + " --set c1=-1", "c1: must be a number in (0, 10]"},
-           {"table " + scene_path("viscoelastic_constants.toml") + " --set order=2", "order: must be exactly 1, got 2"},
+           {"table " + scene_path("viscoelastic_constants.toml") + " --set order=7",
+            "order: must be an integer in [1, 6], got 7"},
            {"table " + scene_path("viscoelastic_constants.toml") + " --exact",
             "--exact: a requested coefficient is not"},
            {"evolve " + scene_path("cooling_viscoelastic.toml") + " --set delta=0.5",

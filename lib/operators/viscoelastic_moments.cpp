@@ -1,5 +1,4 @@
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "gkt/collision_moments.hpp"
@@ -35,20 +34,23 @@ std::vector<std::vector<double>> power_coefficients(const std::vector<double>& h
 
 }  // namespace
 
-ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution) : k_max_(k_max) {
+ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution)
+    : k_max_(k_max), exponent_(restitution.exponent) {
   if (k_max < 2) throw std::invalid_argument("hcs order: the highest cumulant must be >= 2");
+  if (restitution.series().empty()) throw std::invalid_argument("restitution: needs at least the coefficient h_1");
+  const int orders = static_cast<int>(restitution.series().size());
   const int d = 3, n = k_max + 1;
   const CollisionPair pair{d, Rational(1), Rational(1), Rational(1), Rational(1)};
   const auto alpha = RationalPolynomial::variable();
   const long twice_m = sonine_twice_m(d, 0);
   const auto s = sonine_table(twice_m, k_max);
-  const auto coef = power_coefficients(restitution.series(), kOrders);
-  t_.assign(kOrders + 1, std::vector<double>(static_cast<std::size_t>(n) * n * n, 0.0));
-  e_.assign(kOrders + 1, std::vector<double>(static_cast<std::size_t>(n) * n, 0.0));
+  const auto coef = power_coefficients(restitution.series(), orders);
+  t_.assign(orders + 1, std::vector<double>(static_cast<std::size_t>(n) * n * n, 0.0));
+  e_.assign(orders + 1, std::vector<double>(static_cast<std::size_t>(n) * n, 0.0));
   auto idx3 = [n](int p, int k, int l) { return (static_cast<std::size_t>(p) * n + k) * n + l; };
-  for (int order = 0; order <= kOrders; ++order) {
-    // Moments ⟨u^{J/5} X1^a X2^b X1'^c⟩ with α symbolic; gain terms take the (α − 1)^m coefficients.
-    const Rational power(order, 5);
+  for (int order = 0; order <= orders; ++order) {
+    // Moments ⟨u^{J s} X1^a X2^b X1'^c⟩ with α symbolic; gain terms take the (α − 1)^m coefficients.
+    const Rational power = Rational(order) * exponent_;
     const CollisionMomentTable<RationalPolynomial> gain(pair, alpha, {Slot::v1, Slot::v2, Slot::v1_post},
                                                         {k_max, k_max, k_max}, std::nullopt, 0, power);
     const double factor = gain.power_factor();
@@ -112,10 +114,39 @@ ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestit
   }
 }
 
+std::vector<std::vector<DenseMatrix<double>>> viscoelastic_operator_series(int rank, int n_max, int k_max,
+                                                                           const ViscoelasticRestitution& restitution) {
+  const int d = 3, orders = static_cast<int>(restitution.series().size());
+  const auto alpha = RationalPolynomial::variable();
+  const auto coef = power_coefficients(restitution.series(), orders);
+  std::vector<std::vector<DenseMatrix<double>>> out;
+  for (int order = 0; order <= orders; ++order) {
+    // (13.2): Σ_m coef[m][J] × the (α − 1)^m coefficient of the moments weighted by u^{J s}, × J_s0/J0.
+    const Rational power = Rational(order) * restitution.exponent;
+    const double factor = std::tgamma(1 + power.to_double() / 2) * std::pow(2.0, power.to_double() / 2);
+    const auto by_weight = hcs_linearized_operator_matrices<RationalPolynomial>(d, alpha, rank, n_max, k_max, power);
+    out.emplace_back();
+    for (const auto& m : by_weight) {
+      DenseMatrix<double> g(n_max + 1, n_max + 1);
+      for (int p = 0; p <= n_max; ++p)
+        for (int q = 0; q <= n_max; ++q) {
+          const auto mu = shifted(m(p, q));
+          double v = 0;
+          for (int j = (order == 0 ? 0 : 1); j <= order && j < static_cast<int>(mu.size()); ++j)
+            v += coef[static_cast<std::size_t>(j)][static_cast<std::size_t>(order)] *
+                 mu[static_cast<std::size_t>(j)].to_double();
+          g(p, q) = factor * v;
+        }
+      out.back().push_back(std::move(g));
+    }
+  }
+  return out;
+}
+
 CumulantHierarchy ViscoelasticHierarchy::at(double delta_prime) const {
   std::vector<double> t = t_[0], e = e_[0];
   double power = 1;
-  for (int order = 1; order <= kOrders; ++order) {
+  for (int order = 1; order <= orders(); ++order) {
     power *= delta_prime;
     for (std::size_t i = 0; i < t.size(); ++i) t[i] += power * t_[order][i];
     for (std::size_t i = 0; i < e.size(); ++i) e[i] += power * e_[order][i];
@@ -127,7 +158,7 @@ void ViscoelasticHierarchy::refresh(double delta_prime, CumulantHierarchy& hiera
   hierarchy.t_ = t_[0];  // same sizes: std::vector copy-assignment reuses the storage
   hierarchy.e_ = e_[0];
   double power = 1;
-  for (int order = 1; order <= kOrders; ++order) {
+  for (int order = 1; order <= orders(); ++order) {
     power *= delta_prime;
     for (std::size_t i = 0; i < hierarchy.t_.size(); ++i) hierarchy.t_[i] += power * t_[order][i];
     for (std::size_t i = 0; i < hierarchy.e_.size(); ++i) hierarchy.e_[i] += power * e_[order][i];
@@ -138,70 +169,17 @@ double ViscoelasticHierarchy::energy(int order, int k, int l) const {
   return e_[static_cast<std::size_t>(order)][static_cast<std::size_t>(k) * (k_max_ + 1) + l];
 }
 
+double ViscoelasticHierarchy::transfer(int order, int p, int k, int l) const {
+  const auto n = static_cast<std::size_t>(k_max_ + 1);
+  return t_[static_cast<std::size_t>(order)]
+           [(static_cast<std::size_t>(p) * n + static_cast<std::size_t>(k)) * n + static_cast<std::size_t>(l)];
+}
+
 double ViscoelasticHierarchy::fourth(int order, int k, int l) const {
   // x² = 2 S_2 − 5 S_1 + 15/4 (d = 3): Δ(x²) = 2 T(2; ·) + 5 E (since S_1 = 3/2 − x, T(0; ·) = 0).
   const int n = k_max_ + 1;
   return 2 * t_[static_cast<std::size_t>(order)][(static_cast<std::size_t>(2) * n + k) * n + l] +
          5 * energy(order, k, l);
-}
-
-ViscoelasticConstants viscoelastic_constants(const ViscoelasticRestitution& restitution) {
-  const ViscoelasticHierarchy h(2, restitution);
-  const double nu = linearized_operator_prefactor(3);
-  ViscoelasticConstants c{};
-  c.omega0 = -nu * h.energy(1, 0, 0);
-  c.omega1 = nu * h.energy(2, 0, 0);
-  c.q0 = c.omega0 * std::pow(2.0, 0.1) / (16 * std::sqrt(2 * std::numbers::pi));
-  // F_2(a2, δ') = Σ F_ij a2^i δ'^j = 0 perturbatively (K = 2, quadratic in a2): the hierarchy's F_2
-  // is polynomial in a2 (degree ≤ 3) and δ' (degree ≤ 2); extract F_ij by finite sums.
-  auto f2 = [&](double a2, double dp) {
-    std::vector<double> f;
-    h.at(dp).residual({1.0, 0.0, a2}, f, nullptr);
-    return f[0];
-  };
-  // Exact polynomial interpolation on small grids (f is a polynomial of low degree).
-  const double e = 1e-3;
-  const double f01 = (f2(0, e) - f2(0, -e)) / (2 * e), f02 = (f2(0, e) - 2 * f2(0, 0) + f2(0, -e)) / (2 * e * e);
-  const double f10 = (f2(e, 0) - f2(-e, 0)) / (2 * e), f20 = (f2(e, 0) - 2 * f2(0, 0) + f2(-e, 0)) / (2 * e * e);
-  const double f11 = (f2(e, e) - f2(e, -e) - f2(-e, e) + f2(-e, -e)) / (4 * e * e);
-  c.a2_1 = -f01 / f10;
-  // Adiabatic following of the decaying δ'(t) ∝ T^{1/10}: da2/dτ = a21 dδ'/dτ is O(δ'²) and enters
-  // at the order of a22 (theory.md (13.4)): F_2 = N_2 a21 δ' (1/10)(2/d) R_1 with R_1 ≈ E^(1) δ'.
-  const double drift = sonine_norm(sonine_twice_m(3, 0), 2).to_double() * c.a2_1 * h.energy(1, 0, 0) / (5.0 * 3.0);
-  c.a2_2 = (drift - f02 - f11 * c.a2_1 - f20 * c.a2_1 * c.a2_1) / f10;
-
-  // Transport at first order in δ' (theory.md §13.2). Operator entries about the HCS: the δ'^1 part
-  // is h_1 × [(α − 1)^1 coefficient at power 1/5] × J_{1/5}/J0, plus a21 × the a2-weighted elastic entry.
-  const int d = 3;
-  const auto alpha = RationalPolynomial::variable();
-  const double h1 = restitution.series()[0];
-  const double pf = std::tgamma(1.1) * std::pow(2.0, 0.1);  // J_s0/J0 at θ = 1: Γ(1 + s/2)(A0/N2_0)^{s/2}
-  auto first_order = [&](int rank, int n_max, int p, int q) {
-    const auto shifted_entry = shifted(
-        hcs_linearized_operator_matrices<RationalPolynomial>(d, alpha, rank, n_max, 0, Rational(1, 5))[0](p, q));
-    const double gain = shifted_entry.size() > 1 ? shifted_entry[1].to_double() : 0.0;
-    const double weighted =
-        hcs_linearized_operator_matrices<Rational>(d, Rational(1), rank, n_max, 2)[2](p, q).to_double();
-    return h1 * pf * gain + c.a2_1 * weighted;
-  };
-  const double nu_eta_1 = first_order(2, 0, 0, 0) / (d - 1);
-  const double nu_kappa_1 = first_order(1, 1, 1, 1) / d, nu_kappa_0 = (d - 1.0) / d;
-  const double zeta_1 = -(d + 2.0) / (2.0 * d) * h.energy(1, 0, 0);
-  // Heat source gains −(a21 δ'/10) c S_2 f_M (a2 depends on T through δ'): projected on c S_1 and
-  // normalised by d(d+2)/4.
-  // ⟨x S_1^(d/2) S_2^(d/2−1)⟩ under the Maxwellian
-  std::vector<Rational> x_s1_s2(5);
-  {
-    const auto s1 = sonine_coefficients(sonine_twice_m(d, 1), 1), s2 = sonine_coefficients(sonine_twice_m(d, 0), 2);
-    for (std::size_t i = 0; i < s1.size(); ++i)
-      for (std::size_t j = 0; j < s2.size(); ++j) x_s1_s2[i + j + 1] += s1[i] * s2[j];
-  }
-  const double source_1 = -c.a2_1 / 10 * maxwell_average(d, x_s1_s2).to_double() * 4.0 / (d * (d + 2.0));
-  c.shear_viscosity_1 = -nu_eta_1 + zeta_1 / 2;  // (13.5)
-  c.thermal_conductivity_1_unverified =
-      2 * c.a2_1 + source_1 - nu_kappa_1 / nu_kappa_0 + 2.1 * zeta_1 / nu_kappa_0;  // (13.6)
-  c.density_heat_coefficient_1 = d * zeta_1 / (d - 1.0) + c.a2_1;                   // (13.7)
-  return c;
 }
 
 }  // namespace gkt

@@ -79,10 +79,13 @@ GalerkinPieces<Rational> tensor_pieces(int d, int n_max, int k_max) {
   const auto w = sonine_table(sonine_twice_m(d, 0), k_max);
   const Rational yy(d - 1, static_cast<unsigned long>(d));  // Y:Y = ((d−1)/d) x²
   r.d.assign(n_max + 1, std::vector<Rational>(n_max + 1));
+  r.m = r.d;
   for (int p = 0; p <= n_max; ++p) {
     const Poly dp = add(s[p], times_x(derivative(s[p])), Rational(2));
-    for (int q = 0; q <= n_max; ++q)
+    for (int q = 0; q <= n_max; ++q) {
       r.d[p][q] = (Rational(-1, 2) * yy * maxwell_average(d, times_x(multiply(s[q], dp), 2)));
+      r.m[p][q] = yy * maxwell_average(d, times_x(multiply(s[p], s[q]), 2));  // ⟨Y_2 S_p : Y_2 S_q⟩
+    }
   }
   r.u.assign(n_max + 1, std::vector<Rational>(k_max + 1));
   const Rational c1 = Rational(d + 1) - Rational(2, static_cast<unsigned long>(d));

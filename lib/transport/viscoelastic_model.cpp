@@ -1,23 +1,50 @@
 // The "viscoelastic" model: BP's expansion constants of the homogeneous cooling of viscoelastic
-// spheres (3D), derived by the engine (viscoelastic.hpp; docs/theory.md §13).
+// spheres (3D) and the δ'-series of the Navier–Stokes coefficients, derived by the engine
+// (viscoelastic.hpp, viscoelastic_transport.hpp; docs/theory.md §13).
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <map>
+#include <optional>
 
-#include "gkt/viscoelastic.hpp"
+#include "gkt/viscoelastic_transport.hpp"
 #include "transport/models.hpp"
 
 namespace gkt::detail {
 
 namespace {
 
+constexpr int kMaxSonineOrder = 6;  // the error estimate asks for N + 1 and N + 2 ≤ 8
+
+/// The series coefficients offered by name: <family>_<j>, j = 1 … J (δ'^j).
+const std::vector<std::string>& series_families() {
+  static const std::vector<std::string> f{"a2", "cooling_rate", "shear_viscosity", "thermal_conductivity",
+                                          "density_heat_coefficient"};
+  return f;
+}
+
+const std::vector<double>& family(const ViscoelasticTransportSeries& s, const std::string& name) {
+  if (name == "a2") return s.cumulants[2];
+  if (name == "cooling_rate") return s.cooling_rate;
+  if (name == "shear_viscosity") return s.shear_viscosity;
+  if (name == "thermal_conductivity") return s.thermal_conductivity;
+  return s.density_heat_coefficient;
+}
+
 class ViscoelasticModel final : public TransportModel {
  public:
   [[nodiscard]] std::string name() const override { return "viscoelastic"; }
   [[nodiscard]] std::string description() const override {
     return "viscoelastic spheres (3D), restitution 1 - C1 delta' u^(1/5) + (3/5) C1^2 delta'^2 u^(2/5): "
-           "expansion constants of the cooling gas (first Sonine, as Brilliantov & Poeschel 2002)";
+           "expansion constants of the cooling gas and delta'-series of eta*, kappa*, mu* (order 1 = first "
+           "Sonine, as Brilliantov & Poeschel 2002)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"omega0", "omega1", "q0", "a2_1", "a2_2", "shear_viscosity_1", "density_heat_coefficient_1"};
+    std::vector<std::string> names{"omega0", "omega1", "q0"};
+    const int orders = static_cast<int>(ViscoelasticRestitution{}.series().size());
+    for (const auto& f : series_families())
+      for (int j = 1; j <= orders; ++j) names.push_back(f + "_" + std::to_string(j));
+    return names;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     return {{"c1",
@@ -30,36 +57,53 @@ class ViscoelasticModel final : public TransportModel {
              "first coefficient C1 of the viscoelastic restitution series",
              {}}};
   }
-  [[nodiscard]] int max_order() const override { return 1; }
+  [[nodiscard]] int max_order() const override { return kMaxSonineOrder; }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
     const Rational c1 = point.number("c1", Rational::parse("1.15344"));
     parameters().front().check(c1);
-    if (order.tolerance || order.order != 1)
-      throw std::invalid_argument("order: \"viscoelastic\" gives the first Sonine constants (order = 1)");
-    ViscoelasticRestitution restitution;
-    restitution.c1 = c1.to_double();
-    const ViscoelasticConstants c = viscoelastic_constants(restitution);
+    if (!order.tolerance && (order.order < 1 || order.order > kMaxSonineOrder))
+      throw std::invalid_argument("order: \"viscoelastic\" takes a Sonine order in [1, " +
+                                  std::to_string(kMaxSonineOrder) + "], got " + std::to_string(order.order));
+    const ViscoelasticRestitution restitution = ViscoelasticRestitution::hertz(c1.to_double());
+    if (c1 != cached_c1_) {
+      series_.clear();
+      cached_c1_ = c1;
+    }
+    auto series_at = [&](int n) -> const ViscoelasticTransportSeries& {
+      auto it = series_.find(n);
+      if (it == series_.end()) it = series_.emplace(n, viscoelastic_transport_series(n, restitution)).first;
+      return it->second;
+    };
+    std::optional<ViscoelasticConstants> constants;
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
-      const double value = name == "omega0"                       ? c.omega0
-                           : name == "omega1"                     ? c.omega1
-                           : name == "q0"                         ? c.q0
-                           : name == "a2_1"                       ? c.a2_1
-                           : name == "a2_2"                       ? c.a2_2
-                           : name == "shear_viscosity_1"          ? c.shear_viscosity_1
-                           : name == "density_heat_coefficient_1" ? c.density_heat_coefficient_1
-                                                                  : std::nan("");
-      if (std::isnan(value))
-        throw std::invalid_argument("coefficients: unknown coefficient '" + name + "' for model viscoelastic");
-      // ω0, ω1, q0 are exact at a = 0 (no Sonine truncation); a2_1, a2_2 are first Sonine (K = 2)
-      // like BP's; their truncation error is not estimated yet (reported as 0, flagged).
-      const bool truncated = name != "omega0" && name != "omega1" && name != "q0";
-      out.push_back({Rational::from_double(value), Rational(0), 1, !truncated, false, true});
+      if (name == "omega0" || name == "omega1" || name == "q0") {  // exact at a = 0: no Sonine truncation
+        if (!constants) constants = viscoelastic_constants(restitution);
+        const double v = name == "omega0" ? constants->omega0 : name == "omega1" ? constants->omega1 : constants->q0;
+        out.push_back({Rational::from_double(v), Rational(0), 1, true, false, true});
+        continue;
+      }
+      const auto split = name.rfind('_');
+      const std::string base = split == std::string::npos ? name : name.substr(0, split);
+      const int j = split == std::string::npos ? -1 : std::atoi(name.c_str() + split + 1);
+      const int orders = static_cast<int>(restitution.series().size());
+      if (std::find(series_families().begin(), series_families().end(), base) == series_families().end() || j < 1 ||
+          j > orders || name.substr(split + 1) != std::to_string(j))
+        throw std::invalid_argument("coefficients: unknown coefficient '" + name +
+                                    "' for model viscoelastic; valid: " + join(coefficient_names()));
+      out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
+        auto at = [&](int m) { return Rational::from_double(family(series_at(m), base)[static_cast<std::size_t>(j)]); };
+        return OrderValue{estimate_truncation(at(n), at(n + 1), at(n + 2)), true, false};
+      }));
     }
     return out;
   }
+
+ private:
+  Rational cached_c1_{-1};
+  std::map<int, ViscoelasticTransportSeries> series_;  // by Sonine order, for cached_c1_
 };
 
 }  // namespace

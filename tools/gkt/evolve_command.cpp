@@ -12,6 +12,7 @@
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "gkt/navier_stokes.hpp"
 #include "gkt/viscoelastic.hpp"
+#include "gkt/viscoelastic_transport.hpp"
 #include "scene.hpp"
 
 namespace gkt::cli {
@@ -20,6 +21,7 @@ namespace {
 
 constexpr int kMaxOrder = 12;
 constexpr long kMaxPoints = 1000000;
+constexpr int kMaxViscoelasticOrder = 8;  // viscoelastic_transport_series
 
 std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
 
@@ -113,12 +115,9 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   }
 
   // Transport coefficients along the trajectory (theory.md §12.3), only those asked for.
-  const std::vector<std::string> offered =
-      viscoelastic ? std::vector<std::string>{"shear_viscosity", "density_heat_coefficient",
-                                              "critical_wavenumber_shear", "critical_length"}
-                   : std::vector<std::string>{"shear_viscosity",          "thermal_conductivity",
-                                              "density_heat_coefficient", "critical_wavenumber_shear",
-                                              "critical_wavenumber_heat", "critical_length"};
+  const std::vector<std::string> offered{"shear_viscosity",          "thermal_conductivity",
+                                         "density_heat_coefficient", "critical_wavenumber_shear",
+                                         "critical_wavenumber_heat", "critical_length"};
   std::vector<std::string> coefficients;
   if (const auto* c = t.get("coefficients")) {
     const auto* array = c->as_array();
@@ -127,8 +126,7 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
       const std::string name = item.is_string() ? item.as_string()->get() : "";
       if (std::find(offered.begin(), offered.end(), name) == offered.end())
         throw error("coefficients: '" + name + "' is not offered along a " + std::string(table_model(viscoelastic)) +
-                    " trajectory; valid: " + join(offered) +
-                    (viscoelastic ? " (thermal_conductivity_1 is unverified, theory.md §13.2)" : ""));
+                    " trajectory; valid: " + join(offered));
       coefficients.push_back(name);
     }
   }
@@ -152,12 +150,16 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   for (const auto& c : coefficients) table.columns.push_back(c);
   table.numeric.assign(table.columns.size(), true);
   std::optional<NavierStokesSolver> solver;
-  std::optional<ViscoelasticConstants> constants;
+  std::optional<ViscoelasticTransportSeries> series;
   if (!coefficients.empty()) {
-    if (viscoelastic)
-      constants = viscoelastic_constants();
-    else
+    if (viscoelastic) {
+      if (order > kMaxViscoelasticOrder)
+        throw error("order: viscoelastic transport along the trajectory needs an integer in [1, " +
+                    std::to_string(kMaxViscoelasticOrder) + "], got " + format_number(order));
+      series = viscoelastic_transport_series(static_cast<int>(order));
+    } else {
       solver.emplace(d);
+    }
   }
   for (const auto& s : result.samples) {
     std::vector<std::string> row{format_number(s.time), format_number(s.collisions), format_number(s.temperature)};
@@ -165,24 +167,22 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     row.push_back(format_number(s.cooling_rate));
     if (!coefficients.empty()) {
       NavierStokesValues v;
-      if (viscoelastic) {  // first order in δ'(τ) = δ (2T/T0)^{1/10} (theory.md (13.5), (13.7))
+      if (viscoelastic) {  // the δ'-series at Sonine order N, δ'(τ) = δ (2T/T0)^{1/10} (theory.md §13.2)
         const double delta_prime = delta * std::pow(2.0 * s.temperature, 0.1);
-        v.shear_viscosity = 1 + constants->shear_viscosity_1 * delta_prime;
-        v.density_heat_coefficient = constants->density_heat_coefficient_1 * delta_prime;
+        auto sum = [delta_prime](const std::vector<double>& c) {
+          double v = 0;
+          for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * delta_prime + *it;
+          return v;
+        };
+        v.shear_viscosity = sum(series->shear_viscosity);
+        v.thermal_conductivity = sum(series->thermal_conductivity);
+        v.density_heat_coefficient = sum(series->density_heat_coefficient);
       } else {  // order N about the instantaneous cumulants a(τ)
         v = solver->solve(alpha, static_cast<int>(order), s.a);
       }
-      // Critical sizes at the instantaneous state (theory.md §12.3): viscoelastic from the shear
-      // mode alone, k⊥c* = √(ζ*(τ)/η*(τ)) (the heat mode, k∥c* ≈ √(2ζ*/5) at small δ', is slower
-      // and would need the unverified κ̃1).
-      HcsStability stability;
-      if (viscoelastic) {
-        stability.shear_wavenumber = shear_critical_wavenumber(s.cooling_rate, v.shear_viscosity);
-        stability.critical_length = critical_length(stability.shear_wavenumber);
-      } else {
-        stability =
-            hcs_stability(d, s.cooling_rate, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient);
-      }
+      // Critical sizes at the instantaneous state (theory.md §12.3), ζ*(τ) from the hierarchy.
+      const HcsStability stability =
+          hcs_stability(d, s.cooling_rate, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient);
       for (const auto& c : coefficients)
         row.push_back(format_number(c == "shear_viscosity"             ? v.shear_viscosity
                                     : c == "thermal_conductivity"      ? v.thermal_conductivity
