@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libflint-dev libgmp-dev libmpfr-dev   # exact arithmetic (FLINT fmpq/fmpq_poly/fmpq_mat, MPFR rounding)
-  libeigen3-dev libgsl-dev              # floating-point linear algebra; GSL RNG for Monte Carlo checks
+  libeigen3-dev libgsl-dev              # floating-point linear algebra; GSL ODEs (viscoelastic contact), RNG (Monte Carlo checks)
   libsundials-dev                       # CVODE: time evolution of the cooling gas
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev   # scenes, command line, JSON output
   libgtest-dev libbenchmark-dev         # tests and benchmarks

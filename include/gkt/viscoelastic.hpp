@@ -7,19 +7,22 @@
 
 #include "gkt/dense_matrix.hpp"
 #include "gkt/homogeneous_cooling_state.hpp"
+#include "gkt/viscoelastic_contact.hpp"
 
 namespace gkt {
 
 /// The restitution series ε = 1 + Σ_j h_j δ'^j u^{j s} ([brilliantov2002] eq. 2.2 for s = 1/5).
 struct ViscoelasticRestitution {
-  /// h_1 … h_J. Default: viscoelastic (Hertz) spheres, h_1 = −C1, h_2 = C2 = (3/5) C1², C1 = 1.15344
-  /// ([brilliantov2002] §2; Schwager & Pöschel 1998).
-  std::vector<double> coefficients{-1.15344, 0.6 * 1.15344 * 1.15344};
+  /// h_1 … h_J. Default: viscoelastic (Hertz) spheres to δ'^3 with BP's C1 = 1.15344 — h_1 = −C1,
+  /// h_2 = C2 = (3/5) C1², h_3 = −C3 from the contact equation (viscoelastic_contact.hpp).
+  std::vector<double> coefficients = hertz_restitution_coefficients(1.15344, 3);
   /// Exponent s of the reduced impact speed u = σ̂·g/v0. δ' ∝ T^{s/2} (for s = 1/5, δ' ∝ T^{1/10});
   /// s = 0 is a constant restitution 1 + Σ h_j δ'^j — the check against the constant-α solvers.
   Rational exponent{1, 5};
-  /// Returns the Hertz series for a given C1: {−C1, (3/5) C1²}.
-  static ViscoelasticRestitution hertz(double c1) { return {{-c1, 0.6 * c1 * c1}, Rational(1, 5)}; }
+  /// Returns the Hertz series to δ'^orders (≤ 4) for a given C1.
+  static ViscoelasticRestitution hertz(double c1, int orders = 3) {
+    return {hertz_restitution_coefficients(c1, orders), Rational(1, 5)};
+  }
   /// Returns h_1 … h_J.
   [[nodiscard]] const std::vector<double>& series() const { return coefficients; }
 };

@@ -23,6 +23,7 @@
 #include "gkt/tracer_diffusion.hpp"
 #include "gkt/transport_model.hpp"
 #include "gkt/viscoelastic.hpp"
+#include "gkt/viscoelastic_transport.hpp"
 
 namespace {
 
@@ -312,6 +313,15 @@ void CoolingViscoelastic(benchmark::State& state) {
   state.counters["steps"] = static_cast<double>(steps);
 }
 BENCHMARK(CoolingViscoelastic)->Unit(benchmark::kMillisecond);
+
+/// The δ'-series of a2, ζ*, η*, κ*, μ* of viscoelastic spheres to δ'³ at Sonine order N (cold: the
+/// exact operator series, the hierarchy and the solves; theory.md §13.2).
+void ViscoelasticTransportSeries(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const gkt::ViscoelasticRestitution restitution;  // the contact-equation fit, once per process
+  for (auto _ : state) benchmark::DoNotOptimize(gkt::viscoelastic_transport_series(n, restitution));
+}
+BENCHMARK(ViscoelasticTransportSeries)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Unit(benchmark::kMillisecond);
 
 void CoolingConstantAlpha(benchmark::State& state) {
   gkt::HomogeneousCoolingState hcs(3);
