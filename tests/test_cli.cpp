@@ -418,6 +418,16 @@ TEST(CliEvolve, TransportAlongTrajectory) {
   const double slope = std::log(std::stod(late[length]) / std::stod(vcr[earlier][length])) /
                        std::log(std::stod(late[2]) / std::stod(vcr[earlier][2]));
   EXPECT_NEAR(slope, -1.0 / 20, 0.05 / 20) << "rows " << earlier << ", " << vcr.size() - 1;
+  // The heat mode of viscoelastic grains: k∥c*² (κ* − μ*)/ζ* = (4/5)(1 − λ_T), λ_T = ∂ln ζ/∂ln T →
+  // 3/5 at late times (δ' ≈ 0.012: λ_T = 0.598), i.e. 0.32 — not the 0.4 of constant α (14.6).
+  const CliRun vh = run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") +
+                            " --set 'coefficients=[\"thermal_conductivity\", \"density_heat_coefficient\", "
+                            "\"critical_wavenumber_heat\"]'");
+  ASSERT_EQ(vh.status, 0) << vh.err;
+  const auto vh_rows = parse_csv(vh.out);
+  const auto& last = vh_rows.back();
+  const double kh = std::stod(last[7]);
+  EXPECT_NEAR(kh * kh * (std::stod(last[5]) - std::stod(last[6])) / std::stod(last[4]), 0.32, 2e-3);
   const CliRun bad = run_gkt("evolve " + scene_path("cooling_viscoelastic.toml") +
                              " --set order=9 --set 'coefficients=[\"thermal_conductivity\"]'");
   EXPECT_EQ(bad.status, 2);
@@ -431,12 +441,30 @@ TEST(CliViscoelastic, ConstantsAndBadInput) {
   const CliRun r = run_gkt("table " + scene_path("viscoelastic_constants.toml"));
   ASSERT_EQ(r.status, 0) << r.err;
   expect_csv_close(r.out, read_file(golden_path("viscoelastic_constants.csv")));
+  // `gkt stability` at one δ': k⊥c*² = ζ*/η* and k∥c*² = (4/5)(1 − λ_T) ζ*/(κ* − μ*) with
+  // λ_T(0.05) = 0.592, from the same series (order 3).
+  const CliRun st = run_gkt("stability " + scene_path("viscoelastic_constants.toml") +
+                            " --set delta_prime=0.05 --set order=3 --set 'coefficients=[\"cooling_rate\", "
+                            "\"shear_viscosity\", \"thermal_conductivity\", \"density_heat_coefficient\", "
+                            "\"critical_wavenumber_shear\", \"critical_wavenumber_heat\"]'");
+  ASSERT_EQ(st.status, 0) << st.err;
+  const auto sv = parse_csv(st.out)[1];
+  const double zeta = std::stod(sv[0]), ks = std::stod(sv[4]), kh = std::stod(sv[5]);
+  EXPECT_NEAR(ks * ks, zeta / std::stod(sv[1]), 1e-14);
+  EXPECT_NEAR(kh * kh * (std::stod(sv[2]) - std::stod(sv[3])) / zeta, 0.8 * (1 - 0.592), 1e-3);
+  const CliRun defaults = run_gkt("stability " + scene_path("viscoelastic_constants.toml") + " --set delta_prime=0.05");
+  ASSERT_EQ(defaults.status, 0) << defaults.err;
+  EXPECT_EQ(parse_csv(defaults.out)[0][0], "critical_wavenumber_shear");
   for (const auto& [command, message] : std::vector<std::pair<std::string, std::string>>{
            {"table " + scene_path("viscoelastic_constants.toml") + " --set c1=-1", "c1: must be a number in (0, 10]"},
            {"table " + scene_path("viscoelastic_constants.toml") + " --set order=7",
             "order: must be an integer in [1, 6], got 7"},
            {"table " + scene_path("viscoelastic_constants.toml") + " --exact",
             "--exact: a requested coefficient is not"},
+           {"stability " + scene_path("viscoelastic_constants.toml"),
+            "delta_prime: required for 'critical_wavenumber_shear' (a number in [0, 0.3])"},
+           {"stability " + scene_path("viscoelastic_constants.toml") + " --set delta_prime=0.4",
+            "delta_prime: must be a number in [0, 3/10], got 2/5"},
            {"evolve " + scene_path("cooling_viscoelastic.toml") + " --set delta=0.5",
             "delta: must be a number in [0, 0.3]"},
            {"evolve " + scene_path("cooling_viscoelastic.toml") + " --set alpha=0.9",

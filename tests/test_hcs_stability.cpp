@@ -10,6 +10,7 @@
 #include "gkt/homogeneous_cooling_state.hpp"
 #include "gkt/navier_stokes.hpp"
 #include "gkt/pair_correlation.hpp"
+#include "gkt/viscoelastic_transport.hpp"
 
 namespace {
 
@@ -66,6 +67,39 @@ TEST(HcsStability, HeatModeCrossesZeroAtTheClosedFormWavenumber) {
       EXPECT_GT(s.shear_wavenumber, s.heat_wavenumber);
       EXPECT_NEAR(s.critical_length, 2 * M_PI / s.shear_wavenumber, 1e-12);
     }
+  }
+}
+
+// Viscoelastic spheres (theory.md (14.6)): ζ ∝ n T^{λ_T} with λ_T(δ') from the transport series
+// (3/5 as δ' → 0). With the series' ζ*, η*, κ*, μ*, λ_T at δ' = 0.05, 0.2 (order 3), the heat-mode
+// eigenvalue changes sign at k∥c, the determinant is (k²/2)((1 − λ_T)ζ* − K_U k²), and λ_T = ½ would
+// put k∥c 9–11 % higher.
+TEST(HcsStability, ViscoelasticHeatModeUsesTheCoolingTemperatureExponent) {
+  const auto series = gkt::viscoelastic_transport_series(3);
+  auto sum = [](const std::vector<double>& c, double x, bool drop_last = false) {
+    double v = 0;
+    for (auto it = c.rbegin() + (drop_last ? 1 : 0); it != c.rend(); ++it) v = v * x + *it;
+    return v;
+  };
+  for (const double x : {0.05, 0.2}) {
+    const double zeta = sum(series.cooling_rate, x), eta = sum(series.shear_viscosity, x);
+    const double kappa = sum(series.thermal_conductivity, x), mu = sum(series.density_heat_coefficient, x);
+    gkt::StabilityDensity dilute;
+    dilute.cooling_temperature_exponent = sum(series.cooling_temperature_exponent, x, true);
+    EXPECT_NEAR(dilute.cooling_temperature_exponent, 0.6, 0.05) << x;
+    const auto s = gkt::hcs_stability(3, zeta, eta, kappa, mu, dilute);
+    const auto below = heat_mode(eigenvalues(3, zeta, eta, kappa, mu, 0.999 * s.heat_wavenumber, dilute));
+    const auto above = heat_mode(eigenvalues(3, zeta, eta, kappa, mu, 1.001 * s.heat_wavenumber, dilute));
+    EXPECT_GT(below.real(), 0) << x;
+    EXPECT_LT(above.real(), 0) << x;
+    for (double k : {0.1, 0.4}) {
+      const auto ev = eigenvalues(3, zeta, eta, kappa, mu, k, dilute);
+      const double closed =
+          k * k / 2 * ((1 - dilute.cooling_temperature_exponent) * zeta - 5.0 / 4 * (kappa - mu) * k * k);
+      EXPECT_NEAR((ev(0) * ev(1) * ev(2)).real(), closed, 1e-12 * (1 + std::abs(closed)));
+    }
+    const auto constant_alpha = gkt::hcs_stability(3, zeta, eta, kappa, mu);
+    EXPECT_GT(constant_alpha.heat_wavenumber / s.heat_wavenumber, 1.08) << x;
   }
 }
 

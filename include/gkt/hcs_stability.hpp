@@ -16,14 +16,17 @@
 
 namespace gkt {
 
-/// What the dense (Enskog) gas adds to the linearised equations (theory.md (14.4)); the default is
-/// the dilute gas.
+/// What the dense (Enskog) gas and a temperature-dependent restitution add to the linearised
+/// equations (theory.md (14.4), (14.6)); the default is the dilute gas with constant α.
 struct StabilityDensity {
   double pressure = 1;                  ///< p* = p/(nT)
   double pressure_derivative = 0;       ///< φ ∂p*/∂φ
   double log_chi_derivative = 0;        ///< λ = φ ∂ln χ/∂φ (ζ0 ∝ χ(φ) n T^{1/2})
   double bulk_viscosity = 0;            ///< bulk viscosity / η0 (longitudinal momentum only)
   double cooling_rate_first_order = 0;  ///< ζ_U (energy equation only)
+  /// λ_T = ∂ln ζ/∂ln T at fixed n: ½ for constant α (ζ ∝ n T^{1/2}); ½ + γ δ'ζ'/ζ for viscoelastic
+  /// spheres (3/5 as δ' → 0; viscoelastic_transport.hpp).
+  double cooling_temperature_exponent = 0.5;
 };
 
 /// Critical values of one state.

@@ -12,9 +12,12 @@ namespace gkt {
 /// Coefficients of δ'^j, j = 0 … J (J = number of restitution coefficients), of the HCS and the
 /// Navier–Stokes coefficients at one Sonine order.
 struct ViscoelasticTransportSeries {
-  int sonine_order = 0;                          ///< N trial polynomials per mode; the HCS keeps a_2 … a_{N+1}
-  std::vector<std::vector<double>> cumulants;    ///< a_k = Σ_j cumulants[k][j] δ'^j, k = 0 … N + 1
-  std::vector<double> cooling_rate;              ///< ζ* = ζ/ν0, ν0 = nT/η0 (elastic η0 at the current T)
+  int sonine_order = 0;                        ///< N trial polynomials per mode; the HCS keeps a_2 … a_{N+1}
+  std::vector<std::vector<double>> cumulants;  ///< a_k = Σ_j cumulants[k][j] δ'^j, k = 0 … N + 1
+  std::vector<double> cooling_rate;            ///< ζ* = ζ/ν0, ν0 = nT/η0 (elastic η0 at the current T)
+  /// λ_T = ∂ln ζ/∂ln T = ½ + γ δ'ζ'/ζ (theory.md §13.2); its last coefficient (δ'^J) is not known
+  /// and set to 0.
+  std::vector<double> cooling_temperature_exponent;
   std::vector<double> shear_viscosity;           ///< η* = η/η0
   std::vector<double> thermal_conductivity;      ///< κ* = κ/κ0
   std::vector<double> density_heat_coefficient;  ///< μ* = nμ/(Tκ0)

@@ -2,11 +2,13 @@
 // spheres (3D) and the δ'-series of the Navier–Stokes coefficients, derived by the engine
 // (viscoelastic.hpp, viscoelastic_transport.hpp; docs/theory.md §13).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <optional>
 
+#include "gkt/hcs_stability.hpp"
 #include "gkt/viscoelastic_transport.hpp"
 #include "transport/models.hpp"
 
@@ -23,12 +25,34 @@ const std::vector<std::string>& series_families() {
   return f;
 }
 
+const std::array<std::string, 3> kCritical{"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"};
+
 const std::vector<double>& family(const ViscoelasticTransportSeries& s, const std::string& name) {
   if (name == "a2") return s.cumulants[2];
   if (name == "cooling_rate") return s.cooling_rate;
   if (name == "shear_viscosity") return s.shear_viscosity;
   if (name == "thermal_conductivity") return s.thermal_conductivity;
   return s.density_heat_coefficient;
+}
+
+/// Returns Σ_j c_j x^j, without the last term if drop_last.
+double sum(const std::vector<double>& c, double x, bool drop_last) {
+  double v = 0;
+  for (auto it = c.rbegin() + (drop_last ? 1 : 0); it != c.rend(); ++it) v = v * x + *it;
+  return v;
+}
+
+/// Returns a2, ζ*, η*, κ*, μ* or a critical value (theory.md (14.1), (14.6)) at δ' from the series.
+double at_state(const ViscoelasticTransportSeries& s, const std::string& name, double x, bool drop_last) {
+  if (std::find(kCritical.begin(), kCritical.end(), name) == kCritical.end()) return sum(family(s, name), x, drop_last);
+  StabilityDensity dilute;
+  dilute.cooling_temperature_exponent = sum(s.cooling_temperature_exponent, x, true);
+  const HcsStability h =
+      hcs_stability(3, sum(s.cooling_rate, x, drop_last), sum(s.shear_viscosity, x, drop_last),
+                    sum(s.thermal_conductivity, x, drop_last), sum(s.density_heat_coefficient, x, drop_last), dilute);
+  return name == "critical_wavenumber_shear"  ? h.shear_wavenumber
+         : name == "critical_wavenumber_heat" ? h.heat_wavenumber
+                                              : h.critical_length;
 }
 
 class ViscoelasticModel final : public TransportModel {
@@ -40,6 +64,13 @@ class ViscoelasticModel final : public TransportModel {
            "Sonine, as Brilliantov & Poeschel 2002)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
+    auto names = default_coefficients({});
+    for (const auto& f : series_families()) names.push_back(f);
+    for (const auto& c : kCritical) names.push_back(c);
+    return names;
+  }
+  /// The constants and series coefficients; the values at one δ' (`delta_prime`) only on request.
+  [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint&) const override {
     std::vector<std::string> names{"omega0", "omega1", "q0"};
     const int orders = static_cast<int>(ViscoelasticRestitution{}.series().size());
     for (const auto& f : series_families())
@@ -55,6 +86,16 @@ class ViscoelasticModel final : public TransportModel {
              true,
              Rational::parse("1.15344"),
              "first coefficient C1 of the viscoelastic restitution series",
+             {}},
+            {"delta_prime",
+             ParameterSpec::Kind::real,
+             Rational(0),
+             Rational(3, 10),
+             true,
+             true,
+             Rational(0),
+             "delta' = delta (2T/T0)^(1/10) of the state at which a2, cooling_rate, shear_viscosity, ..., "
+             "critical_* are summed from the series",
              {}}};
   }
   [[nodiscard]] int max_order() const override { return kMaxSonineOrder; }
@@ -83,6 +124,23 @@ class ViscoelasticModel final : public TransportModel {
         if (!constants) constants = viscoelastic_constants(restitution);
         const double v = name == "omega0" ? constants->omega0 : name == "omega1" ? constants->omega1 : constants->q0;
         out.push_back({Rational::from_double(v), Rational(0), 1, true, false, true});
+        continue;
+      }
+      if (const bool critical = std::find(kCritical.begin(), kCritical.end(), name) != kCritical.end();
+          critical || std::find(series_families().begin(), series_families().end(), name) != series_families().end()) {
+        if (!point.numbers.contains("delta_prime"))
+          throw std::invalid_argument("delta_prime: required for '" + name + "' (a number in [0, 0.3])");
+        const Rational delta_prime = point.number("delta_prime", Rational(0));
+        parameters()[1].check(delta_prime);
+        const double x = delta_prime.to_double();
+        out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
+          auto at = [&](int m, bool drop_last) {
+            return Rational::from_double(at_state(series_at(m), name, x, drop_last));
+          };
+          TruncationEstimate e = estimate_truncation(at(n, false), at(n + 1, false), at(n + 2, false));
+          e.error = e.error + (at(n, false) - at(n, true)).abs();  // the last δ'-term as the series' remainder
+          return OrderValue{e, true, false};
+        }));
         continue;
       }
       const auto split = name.rfind('_');

@@ -145,6 +145,7 @@ ViscoelasticTransportSeries viscoelastic_transport_series(int sonine_order,
     lambda[j] = (j == 0 ? 0.5 : 0.0) + gamma * q[j];
   }
   const Series r1_lambda = product(r1, lambda);
+  out.cooling_temperature_exponent = lambda;
 
   // Heat (A) and density (B) modes: basis c S_1 … c S_N.
   {
