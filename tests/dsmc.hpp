@@ -1,7 +1,8 @@
 // Test helper: Direct Simulation Monte Carlo of the homogeneous cooling state (Bird's scheme
 // for a spatially homogeneous gas), independent of the Sonine engine. Collisions are drawn with
 // probability ∝ |g| (majorant frequency) and σ̂ with density ∝ (σ̂·ĝ)_+; velocities are rescaled
-// to unit temperature between samples (the scaled HCS is invariant under rescaling).
+// to unit temperature between samples (the scaled HCS is invariant under rescaling; for a
+// speed-dependent restitution at fixed δ' too, since it sees u = σ̂·g/√(2T/m)).
 #pragma once
 
 #include <algorithm>
@@ -50,9 +51,11 @@ struct HcsMoments {
 };
 
 /// Runs the DSMC for `particles` particles, `relax` collisions per particle of relaxation and
-/// `batches` batches of `per_batch` collisions per particle; returns the moments.
-inline HcsMoments run_hcs_dsmc(int d, double alpha, int particles, double relax, int batches, double per_batch,
-                               unsigned long seed) {
+/// `batches` batches of `per_batch` collisions per particle; returns the moments. The restitution
+/// is `restitution(u)`, u = σ̂·g in units of the thermal speed √(2T/m) (constant α: ignore u).
+template <class Restitution>
+HcsMoments run_hcs_dsmc(int d, Restitution&& restitution, int particles, double relax, int batches, double per_batch,
+                        unsigned long seed) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, seed);
   std::vector<std::array<double, 3>> v(static_cast<std::size_t>(particles), {0, 0, 0});
@@ -80,8 +83,12 @@ inline HcsMoments run_hcs_dsmc(int d, double alpha, int particles, double relax,
     }
     return 2.2 * vmax;  // majorant of |g| until the next rescale (energy only decreases)
   };
+  // Σ c² (= dN/2 right after a rescale), updated at every collision: the speed u the restitution sees
+  // is σ̂·g in units of the current thermal speed.
+  double energy = 0;
   auto collide = [&](double collisions_per_particle) {
     double gmax = rescale();
+    energy = 0.5 * d * particles;
     long accepted = 0;
     const long target = static_cast<long>(collisions_per_particle * particles / 2);
     long since_rescale = 0;
@@ -101,13 +108,17 @@ inline HcsMoments run_hcs_dsmc(int d, double alpha, int particles, double relax,
       const std::array<double, 3> sigma = collision_direction(rng, d, ghat);
       double sg = 0;
       for (int k = 0; k < d; ++k) sg += sigma[k] * g[k];
+      const double alpha = restitution(sg / std::sqrt(2 * energy / (d * particles)));
       for (int k = 0; k < d; ++k) {
+        energy -= v[i][k] * v[i][k] + v[j][k] * v[j][k];
         v[i][k] -= 0.5 * (1 + alpha) * sg * sigma[k];
         v[j][k] += 0.5 * (1 + alpha) * sg * sigma[k];
+        energy += v[i][k] * v[i][k] + v[j][k] * v[j][k];
       }
       ++accepted;
       if (++since_rescale == particles) {  // keep the temperature O(1) for the majorant
         gmax = rescale();
+        energy = 0.5 * d * particles;
         since_rescale = 0;
       }
     }
@@ -132,6 +143,13 @@ inline HcsMoments run_hcs_dsmc(int d, double alpha, int particles, double relax,
   batch_mean(c4s, m.c4, m.c4_error);
   batch_mean(c6s, m.c6, m.c6_error);
   return m;
+}
+
+/// Constant restitution α.
+inline HcsMoments run_hcs_dsmc(int d, double alpha, int particles, double relax, int batches, double per_batch,
+                               unsigned long seed) {
+  return run_hcs_dsmc(
+      d, [alpha](double) { return alpha; }, particles, relax, batches, per_batch, seed);
 }
 
 }  // namespace gkt::test

@@ -3,12 +3,16 @@
 // adiabatic a2 against the full dynamics, and the late-time cooling law T ∝ t^{−5/3}.
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "dsmc.hpp"
 #include "gkt/homogeneous_cooling_evolution.hpp"
 #include "gkt/navier_stokes.hpp"
+#include "gkt/sonine.hpp"
 #include "gkt/viscoelastic.hpp"
 #include "gkt/viscoelastic_contact.hpp"
 #include "gkt/viscoelastic_transport.hpp"
@@ -147,9 +151,9 @@ TEST(ViscoelasticSeries, ConvergesInSonineOrder) {
 
 // The adiabatic a2 = a21 δ' + a22 δ'² + a23 δ'³ (the series of (13.9), first Sonine) against the full
 // (T, a2) dynamics of CVODE: once the initial transient has decayed, (a2(τ) − a21 δ' − a22 δ'²)/δ'³
-// tends to a23 as δ'(τ) → 0, the distance shrinking like δ' (measured 0.170, 0.117, 0.081, 0.055 at
-// δ' = 0.0144 … 0.0045, i.e. ≈ 12 δ'). The engine's a22 = +2.690 includes the drift
-// da2/dτ = a21 dδ'/dτ; BP's printed −11.509 is not reproduced (docs/theory.md §13).
+// tends to a23 as δ'(τ) → 0, the distance shrinking like δ' (measured 0.330, 0.227, 0.156, 0.107 at
+// δ' = 0.0144 … 0.0045, i.e. ≈ 23 δ': the a24 of the dynamics, whose moments keep every power of δ'). The engine's a22
+// = +2.690 includes the drift da2/dτ = a21 dδ'/dτ; BP's printed −11.509 is not reproduced (docs/theory.md §13).
 TEST(Viscoelastic, AdiabaticA2FollowsTheDynamics) {
   const gkt::ViscoelasticHierarchy h(2);
   const auto s = gkt::viscoelastic_transport_series(1);
@@ -161,7 +165,7 @@ TEST(Viscoelastic, AdiabaticA2FollowsTheDynamics) {
   for (const auto& x : r.samples) {
     const double dp = delta * std::pow(2 * x.temperature, 0.1);
     const double third = (x.a[2] - a21 * dp - a22 * dp * dp) / (dp * dp * dp);
-    EXPECT_NEAR(third, a23, 15 * dp) << "tau=" << x.time;
+    EXPECT_NEAR(third, a23, 30 * dp) << "tau=" << x.time;
     EXPECT_LT(std::abs(third - a23), previous);  // approaches a23 as δ' decreases
     previous = std::abs(third - a23);
   }
@@ -191,6 +195,47 @@ TEST(Viscoelastic, LateTimeCoolingAndNonMonotonicA2) {
   EXPECT_GT(where, 0U);
   EXPECT_LT(where, r.samples.size() - 1);
   EXPECT_LT(std::abs(r.samples.back().a[2]), 0.5 * peak);
+}
+
+// DSMC of viscoelastic grains at fixed δ' (the scaled HCS is then stationary; tests/dsmc.hpp feeds
+// the restitution the speed u = σ̂·g/√(2T/m) of the current temperature): ε(u) = 1 + h_1 δ' u^{1/5} +
+// h_2 δ'² u^{2/5} + h_3 δ'³ u^{3/5}, the same truncated series the hierarchy uses. The stationary
+// cumulants of ViscoelasticHierarchy::at(δ') (K = 6, Newton via long-time evolution) must agree within
+// 4 standard errors — a check of the u^{J/5}-weighted moments at finite δ', independent of the Sonine
+// engine. At δ' = 0.1 the first-Sonine adiabatic value with BP's printed a22 = −11.509,
+// a21 δ' + a22 δ'² = −0.154, is excluded by > 100σ (the drift term, 0.06 δ'², does not matter).
+TEST(Viscoelastic, FixedDeltaHcsAgreesWithDsmc) {
+  const gkt::ViscoelasticRestitution restitution;
+  const auto& h = restitution.series();
+  ASSERT_EQ(h.size(), 3U);
+  const gkt::ViscoelasticHierarchy hierarchy(6, restitution);
+  for (const double dp : {0.1, 0.2}) {
+    const auto m = gkt::test::run_hcs_dsmc(
+        3,
+        [&](double u) {
+          const double w = std::pow(u, 0.2) * dp;
+          return 1 + w * (h[0] + w * (h[1] + w * h[2]));
+        },
+        20000, 8, 400, 1.0, 7);
+    const double a2 = m.c4 / 3.75 - 1, a2_error = m.c4_error / 3.75;
+    const auto r = gkt::evolve_homogeneous_cooling(hierarchy.at(dp), 1.0, {0.0}, {1e4}, 1e-10, 1e-14);
+    const auto& a = r.samples.back().a;
+    // ⟨c⁶⟩ = 105/8 + a2 ⟨x³S_2⟩ + a3 ⟨x³S_3⟩ + … (S_k ⟂ x³ for k > 3).
+    auto x3_sk = [](int k) {
+      std::vector<gkt::Rational> poly(3, gkt::Rational(0));
+      const auto c = gkt::sonine_coefficients(gkt::sonine_twice_m(3, 0), k);
+      poly.insert(poly.end(), c.begin(), c.end());
+      return gkt::maxwell_average(3, poly).to_double();
+    };
+    const double c6 = 105.0 / 8 + a[2] * x3_sk(2) + a[3] * x3_sk(3);
+    EXPECT_NEAR(a2, a[2], 4 * a2_error) << "delta'=" << dp << " DSMC a2 = " << a2 << " ± " << a2_error;
+    EXPECT_NEAR(m.c6, c6, 4 * m.c6_error) << "delta'=" << dp << " DSMC <c^6> = " << m.c6 << " ± " << m.c6_error;
+    if (dp == 0.1) {
+      EXPECT_GT(std::abs(a2 - (-0.38810802 * dp - 11.509 * dp * dp)), 100 * a2_error);
+    }
+    std::cout << "[ DSMC ] viscoelastic delta'=" << dp << ": a2 = " << a2 << " ± " << a2_error
+              << " (hierarchy K=6: " << a[2] << "), <c^6> = " << m.c6 << " ± " << m.c6_error << " (" << c6 << ")\n";
+  }
 }
 
 // δ = 0 is the elastic gas: T constant, a Maxwellian stays Maxwellian.

@@ -27,8 +27,10 @@ struct ViscoelasticRestitution {
   [[nodiscard]] const std::vector<double>& series() const { return coefficients; }
 };
 
-/// The bilinear collision moments of theory.md §9 expanded in δ': T = Σ_J δ'^J T^(J) for J ≤ the
-/// number of restitution coefficients, with the same layout as BilinearCollisionMoments (double).
+/// The bilinear collision moments of theory.md §9 expanded in δ': T = Σ_J δ'^J T^(J), with the same
+/// layout as BilinearCollisionMoments (double). Every J ≤ kMomentOrders is kept, so that at() gives
+/// the moments of the truncated restitution series itself (to δ'^16), not their expansion cut at the
+/// series' order (theory.md §13: the cut moments are off by 0.01 in a2 at δ' = 0.2).
 class ViscoelasticHierarchy {
  public:
   /// Builds the expansion for cumulants up to a_K (K ≥ 2), d = 3.
@@ -44,13 +46,17 @@ class ViscoelasticHierarchy {
   /// Returns the test-x² moment M^(J)(k, l) = ⟨S_k S_l Δ(X1²)⟩/J0 (BP's μ4 up to the factor −ν).
   [[nodiscard]] double fourth(int order, int k, int l) const;
   [[nodiscard]] int k_max() const { return k_max_; }
-  /// Returns the highest order in δ' kept (the number of restitution coefficients).
-  [[nodiscard]] int orders() const { return static_cast<int>(t_.size()) - 1; }
+  /// Returns the number of restitution coefficients (the order of the δ'-series built on it).
+  [[nodiscard]] int orders() const { return orders_; }
+  /// Returns the highest J of the stored tensors T^(J), E^(J).
+  [[nodiscard]] int moment_orders() const { return static_cast<int>(t_.size()) - 1; }
+  /// The highest power of δ' kept in the moments: (1 − ε)^J ≤ 0.35^J with ε of (13.1) at δ' ≤ 0.3.
+  static constexpr int kMomentOrders = 16;
   /// Returns the exponent s of the restitution series (δ' ∝ T^{s/2}).
   [[nodiscard]] const Rational& exponent() const { return exponent_; }
 
  private:
-  int k_max_;
+  int k_max_, orders_;
   Rational exponent_;
   std::vector<std::vector<double>> t_, e_;  // [J][index]
   std::vector<double> c_;

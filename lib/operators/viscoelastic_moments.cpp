@@ -35,10 +35,10 @@ std::vector<std::vector<double>> power_coefficients(const std::vector<double>& h
 }  // namespace
 
 ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution)
-    : k_max_(k_max), exponent_(restitution.exponent) {
+    : k_max_(k_max), orders_(static_cast<int>(restitution.series().size())), exponent_(restitution.exponent) {
   if (k_max < 2) throw std::invalid_argument("hcs order: the highest cumulant must be >= 2");
   if (restitution.series().empty()) throw std::invalid_argument("restitution: needs at least the coefficient h_1");
-  const int orders = static_cast<int>(restitution.series().size());
+  const int orders = std::max(kMomentOrders, orders_);
   const int d = 3, n = k_max + 1;
   const CollisionPair pair{d, Rational(1), Rational(1), Rational(1), Rational(1)};
   const auto alpha = RationalPolynomial::variable();
@@ -146,7 +146,7 @@ std::vector<std::vector<DenseMatrix<double>>> viscoelastic_operator_series(int r
 CumulantHierarchy ViscoelasticHierarchy::at(double delta_prime) const {
   std::vector<double> t = t_[0], e = e_[0];
   double power = 1;
-  for (int order = 1; order <= orders(); ++order) {
+  for (int order = 1; order <= moment_orders(); ++order) {
     power *= delta_prime;
     for (std::size_t i = 0; i < t.size(); ++i) t[i] += power * t_[order][i];
     for (std::size_t i = 0; i < e.size(); ++i) e[i] += power * e_[order][i];
@@ -158,7 +158,7 @@ void ViscoelasticHierarchy::refresh(double delta_prime, CumulantHierarchy& hiera
   hierarchy.t_ = t_[0];  // same sizes: std::vector copy-assignment reuses the storage
   hierarchy.e_ = e_[0];
   double power = 1;
-  for (int order = 1; order <= orders(); ++order) {
+  for (int order = 1; order <= moment_orders(); ++order) {
     power *= delta_prime;
     for (std::size_t i = 0; i < hierarchy.t_.size(); ++i) hierarchy.t_[i] += power * t_[order][i];
     for (std::size_t i = 0; i < hierarchy.e_.size(); ++i) hierarchy.e_[i] += power * e_[order][i];
