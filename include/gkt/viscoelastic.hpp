@@ -33,8 +33,9 @@ struct ViscoelasticRestitution {
 /// series' order (theory.md §13: the cut moments are off by 0.01 in a2 at δ' = 0.2).
 class ViscoelasticHierarchy {
  public:
-  /// Builds the expansion for cumulants up to a_K (K ≥ 2), d = 3.
-  ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution = {});
+  /// Builds the expansion for cumulants up to a_K (K ≥ 2), d = 3, keeping the moments to
+  /// δ'^max(moment_orders, number of restitution coefficients).
+  ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution = {}, int moment_orders = kMomentOrders);
   /// Returns the cumulant hierarchy at the current δ'.
   [[nodiscard]] CumulantHierarchy at(double delta_prime) const;
   /// Overwrites the δ'-dependent tensors of a hierarchy made by at() — no allocation (ODE hot path).

@@ -34,11 +34,11 @@ std::vector<std::vector<double>> power_coefficients(const std::vector<double>& h
 
 }  // namespace
 
-ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution)
+ViscoelasticHierarchy::ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution, int moment_orders)
     : k_max_(k_max), orders_(static_cast<int>(restitution.series().size())), exponent_(restitution.exponent) {
   if (k_max < 2) throw std::invalid_argument("hcs order: the highest cumulant must be >= 2");
   if (restitution.series().empty()) throw std::invalid_argument("restitution: needs at least the coefficient h_1");
-  const int orders = std::max(kMomentOrders, orders_);
+  const int orders = std::max(moment_orders, orders_);
   const int d = 3, n = k_max + 1;
   const CollisionPair pair{d, Rational(1), Rational(1), Rational(1), Rational(1)};
   const auto alpha = RationalPolynomial::variable();

@@ -126,7 +126,7 @@ ViscoelasticTransportSeries viscoelastic_transport_series(int sonine_order,
     throw std::invalid_argument("order: must be an integer in [1, 8], got " + std::to_string(sonine_order));
   const int d = 3, n = sonine_order, k_max = n + 1;
   const double gamma = restitution.exponent.to_double() / 2;  // δ' ∝ T^γ
-  const ViscoelasticHierarchy h(k_max, restitution);
+  const ViscoelasticHierarchy h(k_max, restitution, 0);       // the series needs T^(J) for J ≤ orders only
   const int orders = h.orders();
 
   ViscoelasticTransportSeries out;
@@ -200,7 +200,7 @@ ViscoelasticTransportSeries viscoelastic_transport_series(int sonine_order,
 ViscoelasticConstants viscoelastic_constants(const ViscoelasticRestitution& restitution) {
   if (restitution.series().size() < 2)
     throw std::invalid_argument("restitution: the constants need h_1 and h_2 (second order in delta')");
-  const ViscoelasticHierarchy h(2, restitution);
+  const ViscoelasticHierarchy h(2, restitution, 0);
   const double nu = linearized_operator_prefactor(3);
   const auto s = viscoelastic_transport_series(1, restitution);
   ViscoelasticConstants c{};
