@@ -76,16 +76,12 @@ TEST(HcsStability, HeatModeCrossesZeroAtTheClosedFormWavenumber) {
 // put k∥c 9–11 % higher.
 TEST(HcsStability, ViscoelasticHeatModeUsesTheCoolingTemperatureExponent) {
   const auto series = gkt::viscoelastic_transport_series(3);
-  auto sum = [](const std::vector<double>& c, double x, bool drop_last = false) {
-    double v = 0;
-    for (auto it = c.rbegin() + (drop_last ? 1 : 0); it != c.rend(); ++it) v = v * x + *it;
-    return v;
-  };
   for (const double x : {0.05, 0.2}) {
-    const double zeta = sum(series.cooling_rate, x), eta = sum(series.shear_viscosity, x);
-    const double kappa = sum(series.thermal_conductivity, x), mu = sum(series.density_heat_coefficient, x);
+    const auto v = gkt::viscoelastic_state(series, x);
+    const double zeta = v.cooling_rate, eta = v.shear_viscosity, kappa = v.thermal_conductivity,
+                 mu = v.density_heat_coefficient;
     gkt::StabilityDensity dilute;
-    dilute.cooling_temperature_exponent = sum(series.cooling_temperature_exponent, x, true);
+    dilute.cooling_temperature_exponent = v.cooling_temperature_exponent;
     EXPECT_NEAR(dilute.cooling_temperature_exponent, 0.6, 0.05) << x;
     const auto s = gkt::hcs_stability(3, zeta, eta, kappa, mu, dilute);
     const auto below = heat_mode(eigenvalues(3, zeta, eta, kappa, mu, 0.999 * s.heat_wavenumber, dilute));

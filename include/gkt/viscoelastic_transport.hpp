@@ -29,6 +29,15 @@ struct ViscoelasticTransportSeries {
 ViscoelasticTransportSeries viscoelastic_transport_series(int sonine_order,
                                                           const ViscoelasticRestitution& restitution = {});
 
+/// a2, ζ*, η*, κ*, μ* and λ_T of the state at one δ', summed from the series.
+struct ViscoelasticState {
+  double a2, cooling_rate, shear_viscosity, thermal_conductivity, density_heat_coefficient;
+  double cooling_temperature_exponent;  ///< λ_T, always without its unknown δ'^J term
+};
+
+/// Returns the series summed at δ' through δ'^orders (orders < 0: every term).
+ViscoelasticState viscoelastic_state(const ViscoelasticTransportSeries& series, double delta_prime, int orders = -1);
+
 /// BP's constants derived from the engine ([brilliantov2002] §3; theory.md (13.3)–(13.7)): ω0 = −ν E^(1)(0,0),
 /// ω1 = ν E^(2)(0,0) (μ2 = ω0 δ' − ω1 δ'² + … at a2 = 0), q0 = ω0 2^{1/10}/(16√(2π)) (the T ∝ t^{−5/3}
 /// time scale), and the first Sonine series (N = 1, HCS a2 only): a2 = a21 δ' + a22 δ'²,

@@ -27,32 +27,32 @@ const std::vector<std::string>& series_families() {
 
 const std::array<std::string, 3> kCritical{"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"};
 
-const std::vector<double>& family(const ViscoelasticTransportSeries& s, const std::string& name) {
-  if (name == "a2") return s.cumulants[2];
-  if (name == "cooling_rate") return s.cooling_rate;
-  if (name == "shear_viscosity") return s.shear_viscosity;
-  if (name == "thermal_conductivity") return s.thermal_conductivity;
-  return s.density_heat_coefficient;
-}
-
-/// Returns Σ_j c_j x^j, without the last term if drop_last.
-double sum(const std::vector<double>& c, double x, bool drop_last) {
-  double v = 0;
-  for (auto it = c.rbegin() + (drop_last ? 1 : 0); it != c.rend(); ++it) v = v * x + *it;
-  return v;
-}
-
-/// Returns a2, ζ*, η*, κ*, μ* or a critical value (theory.md (14.1), (14.6)) at δ' from the series.
-double at_state(const ViscoelasticTransportSeries& s, const std::string& name, double x, bool drop_last) {
-  if (std::find(kCritical.begin(), kCritical.end(), name) == kCritical.end()) return sum(family(s, name), x, drop_last);
+/// Returns a2, ζ*, η*, κ*, μ* or a critical value (theory.md (14.1), (14.6)) at δ' from the series
+/// through δ'^orders.
+double at_state(const ViscoelasticTransportSeries& s, const std::string& name, double x, int orders) {
+  const ViscoelasticState v = viscoelastic_state(s, x, orders);
+  if (name == "a2") return v.a2;
+  if (name == "cooling_rate") return v.cooling_rate;
+  if (name == "shear_viscosity") return v.shear_viscosity;
+  if (name == "thermal_conductivity") return v.thermal_conductivity;
+  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
   StabilityDensity dilute;
-  dilute.cooling_temperature_exponent = sum(s.cooling_temperature_exponent, x, true);
+  dilute.cooling_temperature_exponent = v.cooling_temperature_exponent;
   const HcsStability h =
-      hcs_stability(3, sum(s.cooling_rate, x, drop_last), sum(s.shear_viscosity, x, drop_last),
-                    sum(s.thermal_conductivity, x, drop_last), sum(s.density_heat_coefficient, x, drop_last), dilute);
+      hcs_stability(3, v.cooling_rate, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient, dilute);
   return name == "critical_wavenumber_shear"  ? h.shear_wavenumber
          : name == "critical_wavenumber_heat" ? h.heat_wavenumber
                                               : h.critical_length;
+}
+
+/// Returns the δ'^j coefficient of a series family.
+double coefficient(const ViscoelasticTransportSeries& s, const std::string& name, int j) {
+  const auto& c = name == "a2"                     ? s.cumulants[2]
+                  : name == "cooling_rate"         ? s.cooling_rate
+                  : name == "shear_viscosity"      ? s.shear_viscosity
+                  : name == "thermal_conductivity" ? s.thermal_conductivity
+                                                   : s.density_heat_coefficient;
+  return c[static_cast<std::size_t>(j)];
 }
 
 class ViscoelasticModel final : public TransportModel {
@@ -126,19 +126,18 @@ class ViscoelasticModel final : public TransportModel {
         out.push_back({Rational::from_double(v), Rational(0), 1, true, false, true});
         continue;
       }
-      if (const bool critical = std::find(kCritical.begin(), kCritical.end(), name) != kCritical.end();
-          critical || std::find(series_families().begin(), series_families().end(), name) != series_families().end()) {
+      if (std::find(kCritical.begin(), kCritical.end(), name) != kCritical.end() ||
+          std::find(series_families().begin(), series_families().end(), name) != series_families().end()) {
         if (!point.numbers.contains("delta_prime"))
           throw std::invalid_argument("delta_prime: required for '" + name + "' (a number in [0, 0.3])");
         const Rational delta_prime = point.number("delta_prime", Rational(0));
         parameters()[1].check(delta_prime);
         const double x = delta_prime.to_double();
         out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
-          auto at = [&](int m, bool drop_last) {
-            return Rational::from_double(at_state(series_at(m), name, x, drop_last));
-          };
-          TruncationEstimate e = estimate_truncation(at(n, false), at(n + 1, false), at(n + 2, false));
-          e.error = e.error + (at(n, false) - at(n, true)).abs();  // the last δ'-term as the series' remainder
+          const int all = static_cast<int>(restitution.series().size());
+          auto at = [&](int m, int terms) { return Rational::from_double(at_state(series_at(m), name, x, terms)); };
+          TruncationEstimate e = estimate_truncation(at(n, all), at(n + 1, all), at(n + 2, all));
+          e.error = e.error + (at(n, all) - at(n, all - 1)).abs();  // the last δ'-term as the series' remainder
           return OrderValue{e, true, false};
         }));
         continue;
@@ -152,7 +151,7 @@ class ViscoelasticModel final : public TransportModel {
         throw std::invalid_argument("coefficients: unknown coefficient '" + name +
                                     "' for model viscoelastic; valid: " + join(coefficient_names()));
       out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
-        auto at = [&](int m) { return Rational::from_double(family(series_at(m), base)[static_cast<std::size_t>(j)]); };
+        auto at = [&](int m) { return Rational::from_double(coefficient(series_at(m), base, j)); };
         return OrderValue{estimate_truncation(at(n), at(n + 1), at(n + 2)), true, false};
       }));
     }

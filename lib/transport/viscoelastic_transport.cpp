@@ -1,5 +1,6 @@
 #include "gkt/viscoelastic_transport.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -195,6 +196,22 @@ ViscoelasticTransportSeries viscoelastic_transport_series(int sonine_order,
       out.shear_viscosity.push_back(-8.0 / (d * (d + 2.0) * (d + 2.0)) * gamma_t[j].dot(flux));  // (10.7)
   }
   return out;
+}
+
+ViscoelasticState viscoelastic_state(const ViscoelasticTransportSeries& series, double delta_prime, int orders) {
+  const int last = static_cast<int>(series.cooling_rate.size()) - 1;
+  auto sum = [delta_prime](const std::vector<double>& c, int top) {  // Horner, terms j ≤ top
+    double v = 0;
+    for (int j = top; j >= 0; --j) v = v * delta_prime + c[static_cast<std::size_t>(j)];
+    return v;
+  };
+  const int top = orders < 0 ? last : std::min(orders, last);
+  return {sum(series.cumulants[2], top),
+          sum(series.cooling_rate, top),
+          sum(series.shear_viscosity, top),
+          sum(series.thermal_conductivity, top),
+          sum(series.density_heat_coefficient, top),
+          sum(series.cooling_temperature_exponent, std::min(top, last - 1))};
 }
 
 ViscoelasticConstants viscoelastic_constants(const ViscoelasticRestitution& restitution) {

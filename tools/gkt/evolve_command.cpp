@@ -36,13 +36,6 @@ double number(const toml::table& t, const std::string& key, double fallback, dou
   return v;
 }
 
-/// Returns Σ_j c_j x^j (Horner).
-double sum(const std::vector<double>& c, double x) {
-  double v = 0;
-  for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * x + *it;
-  return v;
-}
-
 const char* table_model(bool viscoelastic) { return viscoelastic ? "viscoelastic" : "smooth-inelastic"; }
 
 }  // namespace
@@ -174,20 +167,18 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     row.push_back(format_number(s.cooling_rate));
     if (!coefficients.empty()) {
       NavierStokesValues v;
+      StabilityDensity dilute;
       if (viscoelastic) {  // the δ'-series at Sonine order N, δ'(τ) = δ (2T/T0)^{1/10} (theory.md §13.2)
-        const double delta_prime = delta * std::pow(2.0 * s.temperature, 0.1);
-        v.shear_viscosity = sum(series->shear_viscosity, delta_prime);
-        v.thermal_conductivity = sum(series->thermal_conductivity, delta_prime);
-        v.density_heat_coefficient = sum(series->density_heat_coefficient, delta_prime);
+        const ViscoelasticState state = viscoelastic_state(*series, delta * std::pow(2.0 * s.temperature, 0.1));
+        v.shear_viscosity = state.shear_viscosity;
+        v.thermal_conductivity = state.thermal_conductivity;
+        v.density_heat_coefficient = state.density_heat_coefficient;
+        dilute.cooling_temperature_exponent = state.cooling_temperature_exponent;
       } else {  // order N about the instantaneous cumulants a(τ)
         v = solver->solve(alpha, static_cast<int>(order), s.a);
       }
       // Critical sizes at the instantaneous state (theory.md §12.3), ζ*(τ) from the hierarchy; for
       // viscoelastic grains ζ ∝ n T^{λ_T} with λ_T(δ') of the series (theory.md (14.6)).
-      StabilityDensity dilute;
-      if (viscoelastic)
-        dilute.cooling_temperature_exponent =
-            sum(series->cooling_temperature_exponent, delta * std::pow(2.0 * s.temperature, 0.1));
       const HcsStability stability = hcs_stability(d, s.cooling_rate, v.shear_viscosity, v.thermal_conductivity,
                                                    v.density_heat_coefficient, dilute);
       for (const auto& c : coefficients)
