@@ -341,7 +341,7 @@ TEST(MixtureNavierStokes, BinaryTransportTable) {
     const gkt::BinaryTransportTable beyond(m, 1, 5, 0.5);
     ADD_FAILURE() << "max_packing_fraction 0.5 accepted in 3D";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "max_packing_fraction: must be a number in [0, 1/2) for dimension = 3");
+    EXPECT_STREQ(e.what(), "max_packing_fraction: must be a number in [0, 0.5) for dimension = 3");
   }
   EXPECT_THROW(gkt::BinaryTransportTable(m, 1, 65), std::invalid_argument);
 }

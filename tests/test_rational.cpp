@@ -17,6 +17,20 @@ TEST(Rational, ParsesDecimalsExactly) {
   EXPECT_THROW(Rational::parse("1/0"), std::invalid_argument);
 }
 
+// What the user typed comes back the way it was typed: parse ∘ to_decimal_string is the identity,
+// and a non-terminating fraction falls back to p/q.
+TEST(Rational, EchoesTerminatingDecimals) {
+  EXPECT_EQ(Rational(5001, 10000).to_decimal_string(), "0.5001");
+  EXPECT_EQ(Rational(-1, 800).to_decimal_string(), "-0.00125");
+  EXPECT_EQ(Rational(3, 2).to_decimal_string(), "1.5");
+  EXPECT_EQ(Rational(-7).to_decimal_string(), "-7");
+  EXPECT_EQ(Rational(0).to_decimal_string(), "0");
+  EXPECT_EQ(Rational(1, 3).to_decimal_string(), "1/3");
+  EXPECT_EQ(Rational(-205, 202).to_decimal_string(), "-205/202");
+  for (const char* text : {"0.6", "-1.25e-3", "1e-30", "123456789.000123", "0.3"})
+    EXPECT_EQ(Rational::parse(Rational::parse(text).to_decimal_string()), Rational::parse(text)) << text;
+}
+
 TEST(Rational, ConvertsToNearestDouble) {
   EXPECT_EQ(Rational(1, 3).to_double(), 1.0 / 3.0);
   EXPECT_EQ(Rational(205, 202).to_double(), 205.0 / 202.0);

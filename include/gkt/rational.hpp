@@ -88,6 +88,9 @@ class Rational {
   [[nodiscard]] double to_double() const;
   /// "p/q" or "p" in lowest terms.
   [[nodiscard]] std::string to_string() const;
+  /// The exact terminating decimal ("0.5001", "-1.25", "3") when the denominator is 2^a 5^b, else
+  /// "p/q": how a number the user typed as a decimal is echoed back in messages.
+  [[nodiscard]] std::string to_decimal_string() const;
   /// Number of bits of numerator plus denominator (a measure of size).
   [[nodiscard]] long bits() const;
 

@@ -1,5 +1,6 @@
 #include "gkt/rational.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <stdexcept>
@@ -61,6 +62,45 @@ std::string Rational::to_string() const {
   char* s = fmpq_get_str(nullptr, 10, value_);
   std::string out(s);
   flint_free(s);
+  return out;
+}
+
+std::string Rational::to_decimal_string() const {
+  // q = 2^a 5^b  ⇒  p/q = p 2^(k−a) 5^(k−b) / 10^k with k = max(a, b).
+  fmpz_t q;
+  fmpz_init_set(q, fmpq_denref(value_));
+  long twos = 0;
+  long fives = 0;
+  while (fmpz_divisible_si(q, 2)) {
+    fmpz_divexact_si(q, q, 2);
+    ++twos;
+  }
+  while (fmpz_divisible_si(q, 5)) {
+    fmpz_divexact_si(q, q, 5);
+    ++fives;
+  }
+  const bool terminating = fmpz_is_one(q) != 0;
+  fmpz_clear(q);
+  if (!terminating) return to_string();
+  const long digits = std::max(twos, fives);
+  fmpz_t scaled;
+  fmpz_init(scaled);
+  fmpz_abs(scaled, fmpq_numref(value_));
+  for (long i = twos; i < digits; ++i) fmpz_mul_si(scaled, scaled, 2);
+  for (long i = fives; i < digits; ++i) fmpz_mul_si(scaled, scaled, 5);
+  char* raw = fmpz_get_str(nullptr, 10, scaled);
+  std::string text(raw);
+  flint_free(raw);
+  fmpz_clear(scaled);
+  const auto fraction_digits = static_cast<std::size_t>(digits);
+  const std::size_t zeros = text.size() <= fraction_digits ? fraction_digits + 1 - text.size() : 0;
+  const std::size_t point = zeros + text.size() - fraction_digits;
+  std::string out;
+  out.reserve(zeros + text.size() + 2);
+  if (sign() < 0) out.push_back('-');
+  out.append(zeros, '0');
+  out.append(text);
+  if (fraction_digits > 0) out.insert(out.begin() + static_cast<std::ptrdiff_t>(point + (sign() < 0)), '.');
   return out;
 }
 

@@ -7,10 +7,10 @@ namespace gkt {
 void CollisionPair::validate() const {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
-  if (mass_i.sign() <= 0) throw std::invalid_argument("mass_i: must be > 0, got " + mass_i.to_string());
-  if (mass_j.sign() <= 0) throw std::invalid_argument("mass_j: must be > 0, got " + mass_j.to_string());
-  if (theta_i.sign() <= 0) throw std::invalid_argument("theta_i: must be > 0, got " + theta_i.to_string());
-  if (theta_j.sign() <= 0) throw std::invalid_argument("theta_j: must be > 0, got " + theta_j.to_string());
+  if (mass_i.sign() <= 0) throw std::invalid_argument("mass_i: must be > 0, got " + mass_i.to_decimal_string());
+  if (mass_j.sign() <= 0) throw std::invalid_argument("mass_j: must be > 0, got " + mass_j.to_decimal_string());
+  if (theta_i.sign() <= 0) throw std::invalid_argument("theta_i: must be > 0, got " + theta_i.to_decimal_string());
+  if (theta_j.sign() <= 0) throw std::invalid_argument("theta_j: must be > 0, got " + theta_j.to_decimal_string());
 }
 
 std::array<std::array<Rational, 3>, 4> CollisionPair::velocity_map() const {

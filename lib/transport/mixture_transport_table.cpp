@@ -79,7 +79,7 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   if (order < 1 || order > 12) throw std::invalid_argument("order: must be an integer in [1, 12]");
   const Rational limit = gkt::max_packing_fraction(mixture.dimension);
   if (!(max_packing_fraction >= 0 && max_packing_fraction < limit.to_double()))
-    throw std::invalid_argument("max_packing_fraction: must be a number in [0, " + limit.to_string() +
+    throw std::invalid_argument("max_packing_fraction: must be a number in [0, " + limit.to_decimal_string() +
                                 ") for dimension = " + std::to_string(mixture.dimension));
   for (std::size_t i = 0; i < 2; ++i) {
     mass_[i] = mixture.species[i].mass;

@@ -143,7 +143,7 @@ NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, c
                                              SonineScheme scheme, const EnskogState& dense) {
   if (order < 1) throw std::invalid_argument("order: must be >= 1");
   if (alpha.sign() <= 0 || alpha > Rational(1))
-    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_string());
+    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
   const int k_max = static_cast<int>(hcs_a.size()) - 1;
   const bool modified = scheme == SonineScheme::modified;
   const bool is_dense = dense.packing_fraction > 0;

@@ -12,18 +12,21 @@ std::string ParameterSpec::allowed() const {
     return "one of " + detail::join(choices, "\"");
   }
   const std::string kind_name = kind == Kind::integer ? "an integer" : "a number";
-  if (kind == Kind::integer && min_inclusive && max_inclusive && min == max) return "exactly " + min.to_string();
+  if (kind == Kind::integer && min_inclusive && max_inclusive && min == max)
+    return "exactly " + min.to_decimal_string();
   if (kind == Kind::integer && min_inclusive && max_inclusive && max - min == Rational(1))
-    return min.to_string() + " or " + max.to_string();
+    return min.to_decimal_string() + " or " + max.to_decimal_string();
   std::string out = kind_name;
   out += min_inclusive ? " in [" : " in (";
-  out += min.to_string() + ", " + max.to_string();
+  out += min.to_decimal_string() + ", " + max.to_decimal_string();
   out += max_inclusive ? "]" : ")";
   return out;
 }
 
 void ParameterSpec::check(const Rational& v) const {
-  auto fail = [&]() { return std::invalid_argument(name + ": must be " + allowed() + ", got " + v.to_string()); };
+  auto fail = [&]() {
+    return std::invalid_argument(name + ": must be " + allowed() + ", got " + v.to_decimal_string());
+  };
   if (kind == Kind::choice) throw fail();
   if (kind == Kind::integer && !fmpz_is_one(fmpq_denref(v.raw()))) throw fail();
   if (min_inclusive ? v < min : v <= min) throw fail();

@@ -137,8 +137,9 @@ class SmoothInelasticModel final : public TransportModel {
     specs[5].check(closure);
     const int d = dim == Rational(2) ? 2 : 3;
     if (phi > max_packing_fraction(d))
-      throw std::invalid_argument("packing_fraction: must be a number in [0, " + max_packing_fraction(d).to_string() +
-                                  "] for dimension = " + std::to_string(d) + ", got " + phi.to_string());
+      throw std::invalid_argument("packing_fraction: must be a number in [0, " +
+                                  max_packing_fraction(d).to_decimal_string() +
+                                  "] for dimension = " + std::to_string(d) + ", got " + phi.to_decimal_string());
     const PairCorrelation& pc = pair_correlation(closure);
     const Rational chi = pc.contact_value(d, phi);
     const Dense dense{phi, chi, pc.packing_derivative(d, phi), closure};

@@ -77,7 +77,7 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     if (alpha_node->is_array() || alpha_node->is_table()) throw error("alpha: must be a single number in (0, 1]");
     alpha = scene_number(*alpha_node, "alpha");
     if (alpha.sign() <= 0 || alpha > Rational(1))
-      throw error("alpha: must be a number in (0, 1], got " + alpha.to_string());
+      throw error("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
   }
   const double order = number(t, "order", 3, 1, false, kMaxOrder, "an integer in [1, 12]");
   if (order != std::floor(order)) throw error("order: must be an integer in [1, 12], got " + format_number(order));

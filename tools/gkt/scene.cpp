@@ -145,8 +145,8 @@ void flatten_mixture(toml::table& scene) {
       const Rational a = scene_number(*rows[i][j], name), b = scene_number(*rows[j][i], name);
       if (a != b)
         throw error("alpha: the restitution matrix must be symmetric, got alpha[" + std::to_string(i + 1) + "][" +
-                    std::to_string(j + 1) + "] = " + a.to_string() + " and alpha[" + std::to_string(j + 1) + "][" +
-                    std::to_string(i + 1) + "] = " + b.to_string());
+                    std::to_string(j + 1) + "] = " + a.to_decimal_string() + " and alpha[" + std::to_string(j + 1) +
+                    "][" + std::to_string(i + 1) + "] = " + b.to_decimal_string());
       if (!scene.contains(name)) scene.insert_or_assign(name, *rows[i][j]);
     }
   scene.erase("alpha");
