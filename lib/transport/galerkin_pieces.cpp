@@ -56,7 +56,8 @@ GalerkinPieces<Rational> vector_pieces(int d, int n_max, int k_max) {
   r.u2 = r.u;
   r.u_pressure = r.u;
   for (int p = 0; p <= n_max; ++p) {
-    const Poly sp = s[p], spp = derivative(s[p]);
+    const Poly& sp = s[p];
+    const Poly spp = derivative(sp);
     // heat: (d/2)S_p + xS_p' − xS_p − x²S_p';  density: (d/2)S_p + xS_p' − xS_p
     Poly density = add(add(Poly{}, sp, half_d), times_x(spp));
     density = add(density, times_x(sp), Rational(-1));

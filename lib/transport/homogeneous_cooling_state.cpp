@@ -18,7 +18,7 @@ FirstSonineHcs first_sonine_hcs(int dimension) {
   const auto m = bilinear_collision_moments<RationalPolynomial>(dimension, alpha, 2);
   const Rational two_over_d(2, static_cast<unsigned long>(dimension));
   // F_2 linearised in a2: c0 + c1 a2 = 0 with R_1 ≈ e00 + a2 (e20 + e02), ⟨xS_2'⟩ ≈ w20 + a2 w22.
-  const RationalPolynomial e0 = m.e(0, 0);
+  const RationalPolynomial& e0 = m.e(0, 0);
   const RationalPolynomial e1 = m.e(2, 0) + m.e(0, 2);
   const Rational w0 = scaling_weight(dimension, 2, 0);
   const Rational w2 = scaling_weight(dimension, 2, 2);

@@ -53,9 +53,7 @@ int run_models() {
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   CLI::App app{
       "gkt: Chapman-Enskog transport coefficients of granular and molecular gases from exact "
       "Sonine expansions"};
@@ -66,7 +64,7 @@ int main(int argc, char** argv) {
   std::string scene_path, format = "csv", output;
   std::vector<std::string> overrides;
   bool exact = false;
-  table->add_option("scene", scene_path, "Scene file (TOML), see examples/")->required();
+  table->add_option("scene", scene_path, "Scene file (TOML), e.g. tables/scenes/*.toml")->required();
   table->add_option("--set", overrides, "Override a scene key: KEY=VALUE (VALUE in TOML syntax); repeatable")
       ->allow_extra_args(false);
   table->add_option("--format", format, "Output format")->check(CLI::IsMember({"csv", "json"}));
@@ -88,7 +86,8 @@ int main(int argc, char** argv) {
       "stability", "Critical wave numbers and system size of the homogeneous cooling state (like table)");
   std::string stability_scene, stability_format = "csv", stability_output;
   std::vector<std::string> stability_overrides;
-  stability->add_option("scene", stability_scene, "Scene file (TOML), model smooth-inelastic or mixture")->required();
+  stability->add_option("scene", stability_scene, "Scene file (TOML), model smooth-inelastic, mixture or viscoelastic")
+      ->required();
   stability->add_option("--set", stability_overrides, "Override a scene key: KEY=VALUE; repeatable");
   stability->add_option("--format", stability_format, "Output format")->check(CLI::IsMember({"csv", "json"}));
   stability->add_option("--output", stability_output, "Output file (written atomically); default: standard output");
@@ -138,6 +137,17 @@ int main(int argc, char** argv) {
     std::cerr << "gkt: error: " << e.what() << "\n";
     return kBadInput;
   } catch (const std::exception& e) {
+    std::cerr << "gkt: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {  // from the option set-up itself: a defect, not bad input
     std::cerr << "gkt: internal error: " << e.what() << "\n";
     return 1;
   }
