@@ -66,41 +66,38 @@ std::string Rational::to_string() const {
 }
 
 std::string Rational::to_decimal_string() const {
-  // q = 2^a 5^b  ⇒  p/q = p 2^(k−a) 5^(k−b) / 10^k with k = max(a, b).
-  fmpz_t q;
-  fmpz_init_set(q, fmpq_denref(value_));
-  long twos = 0;
-  long fives = 0;
-  while (fmpz_divisible_si(q, 2)) {
-    fmpz_divexact_si(q, q, 2);
-    ++twos;
+  // q = 2^a 5^b  ⇒  |p|/q = |p| 2^(k−a) 5^(k−b) / 10^k with k = max(a, b).
+  fmpz_t rest, factor;
+  fmpz_init(rest);
+  fmpz_init_set_ui(factor, 2);
+  const auto twos = static_cast<unsigned long>(fmpz_remove(rest, fmpq_denref(value_), factor));
+  fmpz_set_ui(factor, 5);
+  const auto fives = static_cast<unsigned long>(fmpz_remove(rest, rest, factor));
+  const bool terminating = fmpz_is_one(rest) != 0;
+  fmpz_clear(rest);
+  if (!terminating) {
+    fmpz_clear(factor);
+    return to_string();
   }
-  while (fmpz_divisible_si(q, 5)) {
-    fmpz_divexact_si(q, q, 5);
-    ++fives;
-  }
-  const bool terminating = fmpz_is_one(q) != 0;
-  fmpz_clear(q);
-  if (!terminating) return to_string();
-  const long digits = std::max(twos, fives);
-  fmpz_t scaled;
-  fmpz_init(scaled);
-  fmpz_abs(scaled, fmpq_numref(value_));
-  for (long i = twos; i < digits; ++i) fmpz_mul_si(scaled, scaled, 2);
-  for (long i = fives; i < digits; ++i) fmpz_mul_si(scaled, scaled, 5);
-  char* raw = fmpz_get_str(nullptr, 10, scaled);
-  std::string text(raw);
+  const unsigned long digits = std::max(twos, fives);
+  fmpz_pow_ui(factor, factor, digits - fives);
+  fmpz_mul(factor, factor, fmpq_numref(value_));
+  fmpz_mul_2exp(factor, factor, digits - twos);
+  fmpz_abs(factor, factor);
+  char* raw = fmpz_get_str(nullptr, 10, factor);
+  const std::string magnitude(raw);
   flint_free(raw);
-  fmpz_clear(scaled);
-  const auto fraction_digits = static_cast<std::size_t>(digits);
-  const std::size_t zeros = text.size() <= fraction_digits ? fraction_digits + 1 - text.size() : 0;
-  const std::size_t point = zeros + text.size() - fraction_digits;
-  std::string out;
-  out.reserve(zeros + text.size() + 2);
-  if (sign() < 0) out.push_back('-');
-  out.append(zeros, '0');
-  out.append(text);
-  if (fraction_digits > 0) out.insert(out.begin() + static_cast<std::ptrdiff_t>(point + (sign() < 0)), '.');
+  fmpz_clear(factor);
+  // Left-pad with zeros so that at least one digit stands before the point.
+  std::string padded(magnitude.size() <= digits ? digits + 1 - magnitude.size() : 0, '0');
+  padded.append(magnitude);
+  const std::size_t point = padded.size() - digits;
+  std::string out(sign() < 0 ? "-" : "");
+  out.append(padded, 0, point);
+  if (digits > 0) {
+    out.push_back('.');
+    out.append(padded, point);
+  }
   return out;
 }
 

@@ -136,9 +136,6 @@ int run(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     std::cerr << "gkt: error: " << e.what() << "\n";
     return kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "gkt: internal error: " << e.what() << "\n";
-    return 1;
   }
 }
 
@@ -147,7 +144,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
-  } catch (const std::exception& e) {  // from the option set-up itself: a defect, not bad input
+  } catch (const std::exception& e) {  // anything but bad input is a defect
     std::cerr << "gkt: internal error: " << e.what() << "\n";
     return 1;
   }
