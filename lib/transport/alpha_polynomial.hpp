@@ -1,8 +1,9 @@
 // Private: exact polynomials in α stored as long-double coefficients and evaluated per α by
 // Horner's rule — how the solvers reuse matrices built once with α symbolic (docs/theory.md §9.2:
-// measured relative error ≤ 4e-14 against exact evaluation).
+// measured relative error ≤ 4e-14 against exact evaluation), and the one check on α they share.
 #pragma once
 
+#include <stdexcept>
 #include <vector>
 
 #include "gkt/rational_polynomial.hpp"
@@ -24,6 +25,12 @@ inline double evaluate(const AlphaPolynomial& c, long double alpha) {
   long double v = 0;
   for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * alpha + *it;
   return static_cast<double>(v);
+}
+
+/// Throws std::invalid_argument naming `alpha` and its range (0, 1] unless 0 < α ≤ 1.
+inline void require_restitution(const Rational& alpha) {
+  if (alpha.sign() <= 0 || alpha > Rational(1))
+    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
 }
 
 }  // namespace gkt::detail

@@ -11,8 +11,6 @@
 
 namespace gkt {
 
-namespace {}  // namespace
-
 FirstSonineHcs first_sonine_hcs(int dimension) {
   const auto alpha = RationalPolynomial::variable();
   const auto m = bilinear_collision_moments<RationalPolynomial>(dimension, alpha, 2);
@@ -59,8 +57,7 @@ void HomogeneousCoolingState::ensure_tables(int k_max) {
 }
 
 HcsState HomogeneousCoolingState::solve(const Rational& alpha, int k_max, HcsScheme scheme) {
-  if (alpha.sign() <= 0 || alpha > Rational(1))
-    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
+  detail::require_restitution(alpha);
   if (k_max < 2) throw std::invalid_argument("hcs order: the highest cumulant must be >= 2");
   if (!first_sonine_) first_sonine_ = first_sonine_hcs(dimension_);
   const Rational a2_lin = first_sonine_->a2.evaluate(alpha);
@@ -114,8 +111,7 @@ HcsState HomogeneousCoolingState::solve(const Rational& alpha, int k_max, HcsSch
 }
 
 CumulantHierarchy HomogeneousCoolingState::hierarchy(const Rational& alpha, int k_max) {
-  if (alpha.sign() <= 0 || alpha > Rational(1))
-    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
+  detail::require_restitution(alpha);
   if (k_max < 2) throw std::invalid_argument("hcs order: the highest cumulant must be >= 2");
   ensure_tables(k_max);
   const int n = tables_.k_max + 1;

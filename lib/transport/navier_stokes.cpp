@@ -142,8 +142,7 @@ void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, b
 NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
                                              SonineScheme scheme, const EnskogState& dense) {
   if (order < 1) throw std::invalid_argument("order: must be >= 1");
-  if (alpha.sign() <= 0 || alpha > Rational(1))
-    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
+  detail::require_restitution(alpha);
   const int k_max = static_cast<int>(hcs_a.size()) - 1;
   const bool modified = scheme == SonineScheme::modified;
   const bool is_dense = dense.packing_fraction > 0;
