@@ -271,7 +271,9 @@ TEST(CliFormula, GeneratedFileIsCurrent) {
       ASSERT_EQ(r.status, 0) << r.err;
       expected += r.out;
     }
-  EXPECT_EQ(read_file(std::string(GKT_SOURCE_DIR) + "/lib/transport/generated/first_sonine_closed_forms.inc"), expected)
+  EXPECT_EQ(
+      read_file(std::string(GKT_SOURCE_DIR) + "/lib/transport/closed_forms/generated/first_sonine_closed_forms.inc"),
+      expected)
       << "regenerate with: bash tools/generate_first_sonine.sh";
   std::ofstream(scene) << "model = \"smooth-inelastic\"\npacking_fraction = 0.25\n";
   expected =
@@ -286,7 +288,8 @@ TEST(CliFormula, GeneratedFileIsCurrent) {
       expected += r.out;
     }
   fs::remove(scene);
-  EXPECT_EQ(read_file(std::string(GKT_SOURCE_DIR) + "/lib/transport/generated/enskog_first_sonine_closed_forms.inc"),
+  EXPECT_EQ(read_file(std::string(GKT_SOURCE_DIR) +
+                      "/lib/transport/closed_forms/generated/enskog_first_sonine_closed_forms.inc"),
             expected)
       << "regenerate with: bash tools/generate_first_sonine.sh";
 }

@@ -11,10 +11,10 @@
 #include <string>
 #include <tuple>
 
-#include "gkt/collision_moments.hpp"
-#include "gkt/gaussian_collision_integral.hpp"
-#include "gkt/linearized_operator.hpp"
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/collision/collision_moments.hpp"
+#include "gkt/collision/gaussian_collision_integral.hpp"
+#include "gkt/operators/linearized_operator.hpp"
 #include "monte_carlo.hpp"
 
 using gkt::Rational;

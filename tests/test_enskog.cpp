@@ -5,12 +5,12 @@
 
 #include <cmath>
 
-#include "gkt/collisional_transfer.hpp"
-#include "gkt/homogeneous_cooling_state.hpp"
-#include "gkt/linearized_operator.hpp"
-#include "gkt/navier_stokes.hpp"
-#include "gkt/pair_correlation.hpp"
-#include "gkt/quadratic_form_moments.hpp"
+#include "gkt/collision/quadratic_form_moments.hpp"
+#include "gkt/operators/collisional_transfer.hpp"
+#include "gkt/operators/linearized_operator.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
 #include "monte_carlo.hpp"
 
 using gkt::Rational;

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "gkt/collisional_transfer.hpp"
-#include "gkt/enskog_closed_form.hpp"
-#include "gkt/first_sonine_formulas.hpp"
-#include "gkt/homogeneous_cooling_state.hpp"
-#include "gkt/navier_stokes.hpp"
-#include "gkt/pair_correlation.hpp"
+#include "gkt/operators/collisional_transfer.hpp"
+#include "gkt/transport/closed_forms/enskog_closed_form.hpp"
+#include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
 
 using gkt::EnskogClosedForm;
 using gkt::EnskogMonomial;

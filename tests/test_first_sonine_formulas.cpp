@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "gkt/first_sonine_formulas.hpp"
+#include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
 
 using gkt::Rational;
 using gkt::RationalFunction;
@@ -95,7 +95,7 @@ TEST(FirstSonineFormulas, ElasticLimitAndNoPoles) {
   EXPECT_THROW((void)gkt::first_sonine_closed_form(3, "a3"), std::invalid_argument);
 }
 
-// The generated C++ (lib/transport/generated) evaluates the exact forms to 1e-13 relative.
+// The generated C++ (lib/transport/closed_forms/generated) evaluates the exact forms to 1e-13 relative.
 TEST(FirstSonineFormulas, GeneratedCodeMatchesExactValues) {
   for (int d : {2, 3}) {
     std::vector<RationalFunction> forms;

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "gkt/gaussian_collision_integral.hpp"
+#include "gkt/collision/gaussian_collision_integral.hpp"
 #include "monte_carlo.hpp"
 
 using gkt::QuadraticForm;

@@ -6,9 +6,9 @@
 
 #include <flint/fmpq_mat.h>
 
-#include "gkt/hard_spheres.hpp"
-#include "gkt/linearized_operator.hpp"
-#include "gkt/transport_model.hpp"
+#include "gkt/models/transport_model.hpp"
+#include "gkt/operators/linearized_operator.hpp"
+#include "gkt/transport/monodisperse/hard_spheres.hpp"
 
 using gkt::HardSphereCoefficient;
 using gkt::Rational;

@@ -6,11 +6,11 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "gkt/hcs_stability.hpp"
-#include "gkt/homogeneous_cooling_state.hpp"
-#include "gkt/navier_stokes.hpp"
-#include "gkt/pair_correlation.hpp"
-#include "gkt/viscoelastic_transport.hpp"
+#include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
+#include "gkt/transport/viscoelastic/viscoelastic_transport.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "gkt/homogeneous_cooling_evolution.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 
 using gkt::HcsScheme;
 using gkt::Rational;

@@ -6,8 +6,8 @@
 #include <iostream>
 
 #include "dsmc.hpp"
-#include "gkt/homogeneous_cooling_state.hpp"
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 
 using gkt::HcsScheme;
 using gkt::Rational;

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "gkt/inelasticity_expansion.hpp"
+#include "gkt/transport/closed_forms/inelasticity_expansion.hpp"
 
 using gkt::Rational;
 

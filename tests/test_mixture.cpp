@@ -8,13 +8,13 @@
 #include <iostream>
 
 #include "dsmc_mixture.hpp"
-#include "gkt/collision_moments.hpp"
-#include "gkt/hard_spheres.hpp"
-#include "gkt/homogeneous_cooling_state.hpp"
-#include "gkt/mixture.hpp"
-#include "gkt/mixture_cooling_state.hpp"
-#include "gkt/pair_correlation.hpp"
-#include "gkt/tracer_diffusion.hpp"
+#include "gkt/collision/collision_moments.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
+#include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
+#include "gkt/transport/mixture/tracer_diffusion.hpp"
+#include "gkt/transport/monodisperse/hard_spheres.hpp"
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 
 using gkt::Rational;
 

@@ -11,12 +11,12 @@
 #include <utility>
 #include <vector>
 
-#include "gkt/hcs_stability.hpp"
-#include "gkt/mixture.hpp"
-#include "gkt/mixture_navier_stokes.hpp"
-#include "gkt/mixture_transport_table.hpp"
-#include "gkt/navier_stokes.hpp"
-#include "gkt/pair_correlation.hpp"
+#include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
+#include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_navier_stokes.hpp"
+#include "gkt/transport/mixture/mixture_transport_table.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
 #include "mixture_test_helpers.hpp"
 
 using gkt::Rational;

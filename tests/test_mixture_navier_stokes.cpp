@@ -8,13 +8,13 @@
 #include <cmath>
 #include <numbers>
 
-#include "gkt/hcs_stability.hpp"
-#include "gkt/mixture.hpp"
-#include "gkt/mixture_cooling_state.hpp"
-#include "gkt/mixture_navier_stokes.hpp"
-#include "gkt/mixture_transport_table.hpp"
-#include "gkt/navier_stokes.hpp"
-#include "gkt/tracer_diffusion.hpp"
+#include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
+#include "gkt/transport/mixture/mixture_navier_stokes.hpp"
+#include "gkt/transport/mixture/mixture_transport_table.hpp"
+#include "gkt/transport/mixture/tracer_diffusion.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
 #include "mixture_test_helpers.hpp"
 
 using gkt::Rational;

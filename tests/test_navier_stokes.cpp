@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "gkt/hard_spheres.hpp"
-#include "gkt/homogeneous_cooling_state.hpp"
-#include "gkt/navier_stokes.hpp"
+#include "gkt/transport/monodisperse/hard_spheres.hpp"
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
 
 using gkt::Rational;
 using gkt::RationalPolynomial;

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "gkt/rational.hpp"
-#include "gkt/rational_polynomial.hpp"
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/rational.hpp"
+#include "gkt/algebra/rational_polynomial.hpp"
+#include "gkt/algebra/sonine.hpp"
 
 using gkt::Rational;
 

@@ -10,12 +10,12 @@
 #include <numbers>
 
 #include "dsmc.hpp"
-#include "gkt/homogeneous_cooling_evolution.hpp"
-#include "gkt/navier_stokes.hpp"
-#include "gkt/sonine.hpp"
-#include "gkt/viscoelastic.hpp"
-#include "gkt/viscoelastic_contact.hpp"
-#include "gkt/viscoelastic_transport.hpp"
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/collision/viscoelastic_contact.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+#include "gkt/operators/viscoelastic_hierarchy.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
+#include "gkt/transport/viscoelastic/viscoelastic_transport.hpp"
 
 namespace {
 const double kC1 = 1.15344;

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "gkt/rational.hpp"
+#include "gkt/algebra/rational.hpp"
 
 namespace gkt::detail {
 

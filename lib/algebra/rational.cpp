@@ -1,4 +1,4 @@
-#include "gkt/rational.hpp"
+#include "gkt/algebra/rational.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "gkt/rational_function.hpp"
+#include "gkt/algebra/rational_function.hpp"
 
 #include <stdexcept>
 

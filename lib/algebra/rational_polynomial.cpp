@@ -1,4 +1,4 @@
-#include "gkt/rational_polynomial.hpp"
+#include "gkt/algebra/rational_polynomial.hpp"
 
 #include <sstream>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/sonine.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,12 +1,12 @@
-#include "gkt/collision_moments.hpp"
+#include "gkt/collision/collision_moments.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include "collision/generating_series.hpp"
-#include "gkt/gaussian_collision_integral.hpp"
-#include "gkt/quadratic_form_moments.hpp"
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/collision/gaussian_collision_integral.hpp"
+#include "gkt/collision/quadratic_form_moments.hpp"
 
 namespace gkt {
 

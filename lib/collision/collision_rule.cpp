@@ -1,4 +1,4 @@
-#include "gkt/collision_rule.hpp"
+#include "gkt/collision/collision_rule.hpp"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "gkt/gaussian_collision_integral.hpp"
+#include "gkt/collision/gaussian_collision_integral.hpp"
 
 #include <cmath>
 #include <numbers>

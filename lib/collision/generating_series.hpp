@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "collision/ring.hpp"
-#include "gkt/collision_rule.hpp"
+#include "gkt/collision/collision_rule.hpp"
 
 namespace gkt::detail {
 

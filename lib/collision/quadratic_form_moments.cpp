@@ -1,4 +1,4 @@
-#include "gkt/quadratic_form_moments.hpp"
+#include "gkt/collision/quadratic_form_moments.hpp"
 
 #include <cmath>
 #include <stdexcept>

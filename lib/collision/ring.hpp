@@ -4,8 +4,8 @@
 // involves α, so constant terms are always plain rationals).
 #pragma once
 
-#include "gkt/rational.hpp"
-#include "gkt/rational_polynomial.hpp"
+#include "gkt/algebra/rational.hpp"
+#include "gkt/algebra/rational_polynomial.hpp"
 
 namespace gkt::detail {
 

@@ -1,4 +1,4 @@
-#include "gkt/viscoelastic_contact.hpp"
+#include "gkt/collision/viscoelastic_contact.hpp"
 
 #include <cmath>
 #include <numbers>

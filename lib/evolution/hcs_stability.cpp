@@ -1,4 +1,4 @@
-#include "gkt/hcs_stability.hpp"
+#include "gkt/evolution/hcs_stability.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-#include "gkt/homogeneous_cooling_evolution.hpp"
-#include "gkt/viscoelastic.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+#include "gkt/operators/viscoelastic_hierarchy.hpp"
 
 #include <cmath>
 #include <memory>

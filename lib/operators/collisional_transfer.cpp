@@ -1,13 +1,13 @@
-#include "gkt/collisional_transfer.hpp"
+#include "gkt/operators/collisional_transfer.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include "algebra/coefficient_polynomial.hpp"
 #include "collision/ring.hpp"
-#include "gkt/linearized_operator.hpp"
-#include "gkt/quadratic_form_moments.hpp"
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/collision/quadratic_form_moments.hpp"
+#include "gkt/operators/linearized_operator.hpp"
 
 namespace gkt {
 

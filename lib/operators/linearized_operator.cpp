@@ -1,12 +1,12 @@
-#include "gkt/linearized_operator.hpp"
+#include "gkt/operators/linearized_operator.hpp"
 
 #include <cmath>
 #include <numbers>
 
 #include "collision/ring.hpp"
-#include "gkt/collision_moments.hpp"
-#include "gkt/gaussian_collision_integral.hpp"
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/collision/collision_moments.hpp"
+#include "gkt/collision/gaussian_collision_integral.hpp"
 
 #include <optional>
 #include <stdexcept>

@@ -1,11 +1,11 @@
-#include "gkt/mixture_collisional_transfer.hpp"
+#include "gkt/operators/mixture_collisional_transfer.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "gkt/collision_rule.hpp"
-#include "gkt/quadratic_form_moments.hpp"
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/collision/collision_rule.hpp"
+#include "gkt/collision/quadratic_form_moments.hpp"
 
 namespace gkt {
 

@@ -1,10 +1,10 @@
-#include "gkt/nonlinear_collision_moments.hpp"
+#include "gkt/operators/nonlinear_collision_moments.hpp"
 
 #include <stdexcept>
 
 #include "collision/ring.hpp"
-#include "gkt/collision_moments.hpp"
-#include "gkt/sonine.hpp"
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/collision/collision_moments.hpp"
 
 namespace gkt {
 

@@ -11,19 +11,19 @@
 #include <numbers>
 #include <utility>
 
-#include "gkt/enskog_closed_form.hpp"
-#include "gkt/first_sonine_formulas.hpp"
-#include "gkt/hard_spheres.hpp"
-#include "gkt/homogeneous_cooling_evolution.hpp"
-#include "gkt/linearized_operator.hpp"
-#include "gkt/mixture_cooling_state.hpp"
-#include "gkt/mixture_navier_stokes.hpp"
-#include "gkt/mixture_transport_table.hpp"
-#include "gkt/sonine_solution.hpp"
-#include "gkt/tracer_diffusion.hpp"
-#include "gkt/transport_model.hpp"
-#include "gkt/viscoelastic.hpp"
-#include "gkt/viscoelastic_transport.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+#include "gkt/models/transport_model.hpp"
+#include "gkt/operators/linearized_operator.hpp"
+#include "gkt/operators/viscoelastic_hierarchy.hpp"
+#include "gkt/transport/closed_forms/enskog_closed_form.hpp"
+#include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
+#include "gkt/transport/common/sonine_solution.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
+#include "gkt/transport/mixture/mixture_navier_stokes.hpp"
+#include "gkt/transport/mixture/mixture_transport_table.hpp"
+#include "gkt/transport/mixture/tracer_diffusion.hpp"
+#include "gkt/transport/monodisperse/hard_spheres.hpp"
+#include "gkt/transport/viscoelastic/viscoelastic_transport.hpp"
 
 namespace {
 

@@ -7,12 +7,12 @@
 #include <set>
 #include <stdexcept>
 
-#include "gkt/hcs_stability.hpp"
-#include "gkt/homogeneous_cooling_evolution.hpp"
-#include "gkt/homogeneous_cooling_state.hpp"
-#include "gkt/navier_stokes.hpp"
-#include "gkt/viscoelastic.hpp"
-#include "gkt/viscoelastic_transport.hpp"
+#include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+#include "gkt/operators/viscoelastic_hierarchy.hpp"
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
+#include "gkt/transport/viscoelastic/viscoelastic_transport.hpp"
 #include "scene.hpp"
 
 namespace gkt::cli {

@@ -5,9 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "gkt/enskog_closed_form.hpp"
-#include "gkt/first_sonine_formulas.hpp"
-#include "gkt/transport_model.hpp"
+#include "gkt/models/transport_model.hpp"
+#include "gkt/transport/closed_forms/enskog_closed_form.hpp"
+#include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
 #include "scene.hpp"
 
 namespace gkt::cli {

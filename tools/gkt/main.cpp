@@ -10,7 +10,7 @@
 
 #include "evolve_command.hpp"
 #include "formula_command.hpp"
-#include "gkt/transport_model.hpp"
+#include "gkt/models/transport_model.hpp"
 #include "scene.hpp"
 #include "table_command.hpp"
 #include "table_writer.hpp"

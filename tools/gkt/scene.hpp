@@ -1,5 +1,5 @@
 // Scene files: what a `gkt` run asks for (TOML). Front-end layer: talks to the library only
-// through the public model interface (gkt/transport_model.hpp).
+// through the public model interface (gkt/models/transport_model.hpp).
 #pragma once
 
 #include <map>
@@ -8,8 +8,8 @@
 
 #include <toml++/toml.h>
 
-#include "gkt/rational.hpp"
-#include "gkt/transport_model.hpp"
+#include "gkt/algebra/rational.hpp"
+#include "gkt/models/transport_model.hpp"
 
 namespace gkt::cli {
 

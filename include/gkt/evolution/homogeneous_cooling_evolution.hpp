@@ -1,0 +1,49 @@
+// Time evolution of a freely cooling homogeneous granular gas with constant restitution: the
+// temperature T(t)/T(0) and the cumulants a_2(t) … a_K(t), integrated with SUNDIALS CVODE
+// (BDF, dense direct solver, analytic Jacobian from the cumulant hierarchy). docs/theory.md §12.
+//
+// Time τ is in units of the initial Maxwellian mean free time 1/ω_M(0), ω_M = n σ^{d−1} v0 ν
+// (ν of theory.md (5.3)); `collisions` counts collisions per particle.
+#pragma once
+
+#include <vector>
+
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+
+namespace gkt {
+
+/// One output time.
+struct EvolutionSample {
+  double time = 0;          ///< τ = ω_M(0) t
+  double collisions = 0;    ///< collisions per particle since τ = 0
+  double temperature = 1;   ///< T(τ)/T(0)
+  std::vector<double> a;    ///< a_0 = 1, a_1 = 0, a_2 … a_K
+  double cooling_rate = 0;  ///< ζ*(a(τ)) = ζ/ν0 at the current state
+};
+
+/// CVODE's integration counters.
+struct EvolutionCounters {
+  long steps = 0, rhs_evaluations = 0, jacobian_evaluations = 0, error_test_failures = 0, nonlinear_iterations = 0;
+};
+
+/// The samples at the requested times and the counters.
+struct EvolutionResult {
+  std::vector<EvolutionSample> samples;
+  EvolutionCounters counters;
+};
+
+/// Returns the trajectory for viscoelastic spheres (d = 3): the hierarchy is evaluated at
+/// δ'(θ) = δ 2^{1/10} θ^{1/10} (BP's δ' = δ[2T/T0]^{1/10}, δ at the initial temperature T0 = 1);
+/// CVODE uses its difference-quotient Jacobian here.
+EvolutionResult evolve_viscoelastic_cooling(const class ViscoelasticHierarchy& hierarchy, double delta,
+                                            const std::vector<double>& initial_a, const std::vector<double>& times,
+                                            double rtol, double atol);
+
+/// Returns the trajectory from T/T0 = temperature0 and cumulants initial_a (a_2 … a_K; missing
+/// ones 0) at the increasing positive `times`, with CVODE tolerances rtol (relative) and atol
+/// (absolute). Throws std::invalid_argument on bad input, std::runtime_error if CVODE fails.
+EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
+                                           const std::vector<double>& initial_a, const std::vector<double>& times,
+                                           double rtol, double atol);
+
+}  // namespace gkt

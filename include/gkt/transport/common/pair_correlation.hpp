@@ -1,0 +1,35 @@
+// Contact values χ(φ) of the pair correlation function of hard spheres (d = 3) and disks
+// (d = 2), chosen by name through one registry (docs/theory.md §15.1).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "gkt/algebra/rational.hpp"
+
+namespace gkt {
+
+/// One closure for the contact value of the pair correlation.
+struct PairCorrelation {
+  std::string name;
+  std::string description;
+  /// Returns χ(φ) exactly (rational φ gives a rational χ).
+  Rational (*contact_value)(int dimension, const Rational& packing_fraction);
+  /// Returns φ dχ/dφ exactly.
+  Rational (*packing_derivative)(int dimension, const Rational& packing_fraction);
+};
+
+/// Returns every registered pair correlation (the first is the default).
+const std::vector<PairCorrelation>& pair_correlations();
+
+/// Returns the registered names, in registry order.
+std::vector<std::string> pair_correlation_names();
+
+/// Returns the pair correlation called `name`; throws std::invalid_argument
+/// "pair_correlation: unknown … valid: …" otherwise.
+const PairCorrelation& pair_correlation(const std::string& name);
+
+/// Returns the largest packing fraction the kinetic theory is offered at: 0.5 (3D), 0.7 (2D).
+Rational max_packing_fraction(int dimension);
+
+}  // namespace gkt

@@ -1,0 +1,30 @@
+// Exact solution of truncated Sonine systems and the estimate of their truncation error.
+//
+// Layer: Chapman–Enskog solvers. Exact linear algebra is FLINT's fmpq_mat (fraction-free
+// solve); nothing here rounds.
+#pragma once
+
+#include <vector>
+
+#include "gkt/algebra/dense_matrix.hpp"
+#include "gkt/algebra/rational.hpp"
+
+namespace gkt {
+
+/// Returns component 0 of x solving L_b x = e_0, where L_b is the n × n diagonal block of L
+/// starting at (first, first) and e_0 the first unit vector (exact; throws if singular).
+Rational solve_first_component(const DenseMatrix<Rational>& l, int first, int n);
+
+/// A Sonine-order sequence value with its estimated truncation error.
+struct TruncationEstimate {
+  Rational value;   ///< the value at the requested order N
+  Rational error;   ///< estimated |value − converged value|
+  bool converging;  ///< false if the next two corrections do not shrink
+};
+
+/// Returns v_N with error (5/4)|Δ1|/(1 − r), Δ1 = v_{N+1} − v_N, r = Δ2/Δ1 (signed),
+/// Δ2 = v_{N+2} − v_{N+1}: the geometric tail, monotone or alternating, with a 25 % margin
+/// (docs/theory.md §6). If |r| ≥ 1 the error is |Δ1| + |Δ2| and `converging` is false.
+TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1, const Rational& v_n2);
+
+}  // namespace gkt

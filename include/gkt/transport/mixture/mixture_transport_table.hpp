@@ -1,0 +1,79 @@
+// The Navier–Stokes set of a granular binary for hydrodynamic solvers: built once per pair of
+// species and restitution matrix, then evaluated at any state (x_1, n, T) in physical units
+// without allocation (docs/theory.md §17.8, dense §18.10).
+//
+// At fixed species and α the reduced coefficients depend on the composition x_1 and, in the dense
+// gas, on the packing fraction φ only; they are solved at Chebyshev–Lobatto points of x_1 ∈ [0, 1]
+// (both ends tracer limits) and, for a dense table, of φ ∈ [0, φ_max], and interpolated
+// barycentrically (tensor product); n and T enter through φ = n v_d Σ x_i σ_i^d and the reference
+// values η0, κ0, D0, ν0 of the gas (m̄, σ̄).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "gkt/transport/mixture/mixture.hpp"
+
+namespace gkt {
+
+/// The Navier–Stokes set of a binary at one state, in the caller's units (mass, length, energy
+/// for T, so that velocities are √(T/m)); species indices 0, 1.
+struct BinaryTransport {
+  double cooling_rate = 0;                    ///< ζ (1/time)
+  std::array<double, 2> temperature_ratio{};  ///< T_i/T
+  double shear_viscosity = 0;                 ///< η
+  double thermal_conductivity = 0;            ///< λ (q = −λ∇T − …)
+  std::array<double, 4> mutual_diffusion{};  ///< D_ij at 2i + j (j_i = −Σ_j (m_i m_j n_j/ρ) D_ij ∇ln n_j − …)
+  std::array<double, 2> thermal_diffusion{};   ///< D^T_i (j_i ∋ −ρ D^T_i ∇ln T)
+  std::array<double, 2> pressure_diffusion{};  ///< D^p_i (j_i ∋ −ρ D^p_i ∇ln p at fixed x, T)
+  std::array<double, 2> dufour{};              ///< D''_j (q ∋ −T² D''_j ∇ln n_j)
+  double pressure = 0;                         ///< p (energy/volume; nT when dilute)
+  double bulk_viscosity = 0;                   ///< κ (P ∋ −κ I ∇·u; 0 when dilute)
+  double cooling_rate_first_order = 0;         ///< ζ_U (ζ = ζ0 + ζ_U ∇·u; dimensionless)
+};
+
+/// Interpolation table of a binary's transport coefficients in the mole fraction x_1 (and φ).
+class BinaryTransportTable {
+ public:
+  /// Solves the mixture (species masses and diameters as given, fractions and φ ignored; α of
+  /// `mixture`) at Sonine order `order` on `nodes` Chebyshev–Lobatto points x_1 ∈ [0, 1] — and, if
+  /// max_packing_fraction > 0, on packing_nodes points φ ∈ [0, max_packing_fraction] — and measures
+  /// the interpolation error between the nodes. Throws std::invalid_argument on bad input (nodes or
+  /// packing_nodes outside [3, 64], order outside [1, 12], max_packing_fraction outside [0, φ limit)).
+  BinaryTransportTable(const Mixture& mixture, int order, int nodes = 24, double max_packing_fraction = 0,
+                       int packing_nodes = 12);
+
+  /// Returns the coefficients at x_1 ∈ [0, 1], density n > 0 and temperature T > 0 (no allocation);
+  /// every value is nan if φ = n v_d Σ x_i σ_i^d exceeds the table's φ_max (0 for a dilute table,
+  /// which treats any n as dilute).
+  [[nodiscard]] BinaryTransport evaluate(double fraction_1, double number_density, double temperature) const;
+
+  /// Returns the largest |interpolated − solved| of the reduced coefficients at the midpoints
+  /// between nodes (dense: at every pair of midpoints in x_1 and φ), relative to max(1, |value|):
+  /// the interpolation error measured at build time.
+  [[nodiscard]] double interpolation_error() const { return interpolation_error_; }
+
+ private:
+  // ζ*, γ_1, γ_2, η*, λ*, D_ij* (4), D^T_i* (2), D^p_i* (2), D''_j* (2), p*, κ*, ζ_U
+  static constexpr int kReduced = 18;
+  static constexpr int kMaxNodes = 64;  // per axis: evaluate() keeps its factors on the stack
+  using Reduced = std::array<double, kReduced>;
+  /// Chebyshev–Lobatto points of [0, top] and their barycentric weights.
+  struct Axis {
+    std::vector<double> nodes, weights;
+    Axis(int count, double top);
+    /// Fills w with the barycentric factors at t, normalised to sum 1 (one-hot at a node).
+    void factors(double t, std::array<double, kMaxNodes>& w) const;
+  };
+  int dimension_;
+  std::array<double, 2> mass_{}, diameter_{}, species_volume_{};  // species_volume_: v_d σ_i^d
+  double max_packing_ = 0;
+  Axis fraction_axis_, packing_axis_;
+  std::vector<Reduced> values_;  // at packing node a, fraction node b: a · nodes + b
+  double interpolation_error_ = 0;
+
+  [[nodiscard]] Reduced reduced_at(double fraction_1, double packing) const;
+  static Reduced solve(const Mixture& mixture, int order);
+};
+
+}  // namespace gkt

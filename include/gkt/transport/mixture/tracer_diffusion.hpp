@@ -1,0 +1,45 @@
+// Diffusion of a tracer (intruder) species in a dilute granular gas at its homogeneous cooling
+// state, at any Sonine order (docs/theory.md §16.5): the Boltzmann–Lorentz operator of the pair
+// from the engine with the tracer's and the host's masses and temperatures.
+#pragma once
+
+#include <vector>
+
+#include "gkt/transport/common/sonine_solution.hpp"
+
+namespace gkt {
+
+/// A tracer species 0 in a one-component host gas (mass m, diameter σ, restitution α_hh).
+struct Tracer {
+  int dimension = 3;
+  double mass_ratio = 1;      ///< m0/m
+  double diameter_ratio = 1;  ///< σ0/σ
+  double alpha_tracer = 1;    ///< α_0h, tracer–host restitution
+  double alpha_host = 1;      ///< α_hh, host–host restitution
+
+  /// Throws std::invalid_argument naming the field for d ∉ {2, 3}, ratios ≤ 0, α outside (0, 1].
+  void validate() const;
+};
+
+/// The tracer diffusion coefficient, built once per tracer and evaluated at any order.
+class TracerDiffusion {
+ public:
+  /// Builds the operator for `tracer` (validated) up to `max_order` Sonine polynomials
+  /// (c S_0 … c S_{N−1}).
+  TracerDiffusion(const Tracer& tracer, int max_order);
+  /// Returns D0* = D0/D_ref at order N ≤ max_order, D_ref = (dΓ(d/2)/(4π^{(d−1)/2}))√(T/m)/(nσ^{d−1})
+  /// the host's first-approximation self-diffusion coefficient (flux of tracer number −D0 ∇n0).
+  [[nodiscard]] double coefficient(int order) const;
+  /// Returns D0* at `order` with its truncation error from orders +1, +2 (order ≤ max_order − 2).
+  [[nodiscard]] TruncationEstimate estimate(int order) const;
+  /// Returns γ0 = T0/T of the tracer in the host's HCS (both Maxwellian; ζ0 = ζ_host, (16.4) with x0 = 0).
+  [[nodiscard]] double temperature_ratio() const { return gamma_; }
+  [[nodiscard]] int max_order() const { return max_order_; }
+
+ private:
+  int max_order_;
+  double gamma_ = 1, theta0_ = 1, prefactor_ = 1;
+  std::vector<std::vector<double>> matrix_;  // M(p, q), p, q < max_order: (16.9)
+};
+
+}  // namespace gkt

@@ -1,0 +1,378 @@
+// The "mixture" transport model (docs/conventions.md): s = 2 … 4 smooth inelastic species,
+// dilute or dense: the homogeneous cooling state (temperature ratios, cooling rate, the species
+// cumulants a2,i; theory.md §16) and the Navier–Stokes coefficients at any Sonine order (theory.md
+// §17 dilute, §18 dense).
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <stdexcept>
+
+#include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
+#include "gkt/transport/common/sonine_solution.hpp"
+#include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
+#include "gkt/transport/mixture/mixture_navier_stokes.hpp"
+#include "gkt/transport/mixture/tracer_diffusion.hpp"
+#include "models/models.hpp"
+
+namespace gkt {
+
+namespace {
+
+constexpr int kMaxSpecies = 4;
+
+std::string index_name(const std::string& base, int i) { return base + "_" + std::to_string(i); }
+std::string index_name(const std::string& base, int i, int j) { return index_name(index_name(base, i), j); }
+
+ParameterSpec real(const std::string& name, const Rational& min, bool min_inclusive, const Rational& max,
+                   bool max_inclusive, const Rational& fallback, const std::string& description) {
+  return {name, ParameterSpec::Kind::real, min, max, min_inclusive, max_inclusive, fallback, description, {}};
+}
+
+class MixtureModel final : public TransportModel {
+ public:
+  [[nodiscard]] std::string name() const override { return "mixture"; }
+  [[nodiscard]] std::string description() const override {
+    return "granular mixture of s = 2..4 smooth inelastic hard spheres/disks (dilute or Enskog): homogeneous "
+           "cooling state (first Sonine or Maxwellian); Navier-Stokes coefficients at any order";
+  }
+  [[nodiscard]] std::vector<std::string> coefficient_names() const override {
+    auto n = names(kMaxSpecies, kMaxHcsOrder);
+    for (const auto& t : transport_names(kMaxSpecies)) n.push_back(t);
+    for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
+    return n;
+  }
+  [[nodiscard]] std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const override {
+    const int s = static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double());
+    auto n = names(s, hcs_order(fixed));
+    for (const auto& t : transport_names(s)) n.push_back(t);
+    if (s == 2)
+      for (int i = 1; i <= 2; ++i) n.push_back(index_name("tracer_diffusion", i));
+    return n;
+  }
+  /// The HCS always; the Navier–Stokes coefficients and the HCS stability when the scene fixes φ,
+  /// with p*, bulk viscosity and ζ_U too at φ > 0 (theory.md §18) — a sweep over φ lists the HCS
+  /// only unless it names its coefficients;
+  /// tracer_diffusion_i only when asked for (a property of the pair at infinite dilution, not of
+  /// the scene's composition).
+  [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const override {
+    const int s = static_cast<int>(fixed.number("species", Rational(kMaxSpecies)).to_double());
+    auto n = names(s, hcs_order(fixed));
+    const Rational phi = fixed.number("packing_fraction", Rational(-1));
+    for (const auto& t : transport_names(s))
+      if (!on_request(t) && (phi.sign() > 0 || (phi.sign() == 0 && !dense_only(t)))) n.push_back(t);
+    return n;
+  }
+  [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
+    std::vector<ParameterSpec> p{
+        {"dimension",
+         ParameterSpec::Kind::integer,
+         Rational(2),
+         Rational(3),
+         true,
+         true,
+         Rational(3),
+         "spatial dimension",
+         {}},
+        {"species",
+         ParameterSpec::Kind::integer,
+         Rational(2),
+         Rational(kMaxSpecies),
+         true,
+         true,
+         Rational(2),
+         "number of species (set by the [[species]] tables)",
+         {}},
+        real("packing_fraction", Rational(0), true, max_packing_fraction(2), false, Rational(0),
+             "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
+        real("alpha", Rational(0), false, Rational(1), true, Rational(1),
+             "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
+        real("reduced_gravity", Rational(-1000000L), true, Rational(1000000L), true, Rational(0),
+             "g* = rho g/(n dT/dz) of the segregation criterion thermal_diffusion_factor_i "
+             "(dp/dz = -rho g)"),
+        hcs_spec(),
+        {"hcs_order",
+         ParameterSpec::Kind::integer,
+         Rational(2),
+         Rational(kMaxHcsOrder),
+         true,
+         true,
+         Rational(2),
+         "highest cumulant a_K of each species in the HCS",
+         {}}};
+    for (int i = 1; i <= kMaxSpecies; ++i) {
+      p.push_back(real(index_name("mass", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
+                       "mass of species i (any unit)"));
+      p.push_back(real(index_name("diameter", i), Rational(0), false, Rational(1000000000L), true, Rational(1),
+                       "diameter of species i (any unit)"));
+      p.push_back(real(index_name("fraction", i), Rational(0), true, Rational(1), true, Rational(1),
+                       "mole fraction x_i (the fractions sum to 1; 0 = tracer)"));
+    }
+    for (int i = 1; i <= kMaxSpecies; ++i)
+      for (int j = i; j <= kMaxSpecies; ++j)
+        p.push_back(real(index_name("alpha", i, j), Rational(0), false, Rational(1), true, Rational(1),
+                         "restitution coefficient of the pair (i, j)"));
+    return p;
+  }
+  [[nodiscard]] int max_order() const override { return kMaxOrder; }
+
+  std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
+                                         const OrderRequest& order) override {
+    const std::string hcs = point.choice("hcs", "linear");
+    hcs_spec().check(hcs);
+    const Mixture mixture = make(point);
+    const auto s = static_cast<int>(mixture.size());
+    std::vector<CoefficientValue> out;
+    const int hcs_k = hcs_order(point);
+    std::optional<MixtureCoolingState> chosen, alternative, higher;  // solved once, if an HCS value is asked for
+    TransportCache transport;                                        // built once, if a transport value is asked for
+    transport.gravity = point.number("reduced_gravity", Rational(0)).to_double();
+    for (const auto& c : coefficients) {
+      int i = 0, kind = c == "cooling_rate" ? 0 : -1, cumulant = 0;
+      for (int k = 1; k <= s; ++k) {
+        if (c == index_name("temperature_ratio", k)) i = k, kind = 1;
+        for (int q = 2; q <= hcs_k; ++q)
+          if (c == index_name(cumulant_base(q), k)) i = k, kind = 2, cumulant = q;
+        if (c == index_name("tracer_diffusion", k)) i = k, kind = 3;
+      }
+      if (kind < 0) {
+        const auto all = transport_names(s);
+        if (std::find(all.begin(), all.end(), c) == all.end())
+          throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
+                                      " species; valid: " + detail::join(names(s, hcs_k)) + ", " + detail::join(all));
+        out.push_back(transport.value(mixture, c, order));
+        continue;
+      }
+      const auto k = static_cast<std::size_t>(i > 0 ? i - 1 : 0);
+      if (kind == 3) {
+        out.push_back(tracer_diffusion(mixture, k, order));
+        continue;
+      }
+      // The HCS carries a_2 … a_K (K = hcs_order) whatever the transport order. The errors of ζ* and
+      // T_i/T are the difference from the Maxwellian (or first-Sonine) state, those of the a_k,i the
+      // difference from the linear scheme at K + 1 (theory.md §16.3).
+      const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                      : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                          : MixtureHcsScheme::nonlinear;
+      if (!chosen) {
+        chosen = mixture_cooling_state(mixture, scheme, hcs_k);
+        alternative = mixture_cooling_state(
+            mixture, scheme == MixtureHcsScheme::maxwellian ? MixtureHcsScheme::linear : MixtureHcsScheme::maxwellian);
+      }
+      if (kind == 2 && !higher) higher = mixture_cooling_state(mixture, MixtureHcsScheme::linear, hcs_k + 1);
+      const MixtureCoolingState& state = *chosen;
+      const MixtureCoolingState& other = *alternative;
+      auto value = [&](double v, double other_value, bool estimated) {
+        return CoefficientValue{Rational::from_double(v),
+                                Rational::from_double(std::abs(v - other_value)),
+                                order.tolerance ? 1 : order.order,
+                                state.solved && other.solved,
+                                false,
+                                state.solved,
+                                estimated};
+      };
+      if (kind == 0)
+        out.push_back(value(state.cooling_rate, other.cooling_rate, true));
+      else if (kind == 1)
+        out.push_back(value(state.temperature_ratio[k], other.temperature_ratio[k], true));
+      else {
+        const auto q = static_cast<std::size_t>(cumulant);
+        CoefficientValue v = value(state.cumulants[k][q], higher->cumulants[k][q], true);
+        v.converged = v.converged && higher->solved;
+        out.push_back(v);
+      }
+    }
+    return out;
+  }
+
+ private:
+  static constexpr int kMaxOrder = 12;
+
+  static ParameterSpec hcs_spec() {
+    return {"hcs",
+            ParameterSpec::Kind::choice,
+            Rational(0),
+            Rational(0),
+            true,
+            true,
+            Rational(0),
+            "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
+            "nonlinear in them) or Maxwellian",
+            {"linear", "nonlinear", "maxwellian"}};
+  }
+
+  /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the
+  /// requested order or tolerance; error from the next two orders.
+  static CoefficientValue tracer_diffusion(const Mixture& m, std::size_t k, const OrderRequest& order) {
+    const std::string name = "tracer_diffusion_" + std::to_string(k + 1);
+    if (m.size() != 2) throw std::invalid_argument("coefficients: " + name + " needs exactly 2 species");
+    if (m.packing_fraction > 0)
+      throw std::invalid_argument("coefficients: " + name +
+                                  " is computed for the dilute gas only (packing_fraction = 0)");
+    const std::size_t h = 1 - k;
+    const Tracer tracer{m.dimension, m.species[k].mass / m.species[h].mass,
+                        m.species[k].diameter / m.species[h].diameter, m.restitution(k, h), m.restitution(h, h)};
+    // Built for the order asked (+2 for the estimate); a tolerance scan rebuilds it larger as it goes.
+    std::optional<TracerDiffusion> diffusion;
+    return detail::choose_order(order, kMaxOrder, [&](int n) {
+      if (!diffusion || diffusion->max_order() < n + 2)
+        diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(n + 2, diffusion ? 2 * diffusion->max_order() : 6)));
+      detail::OrderValue v;
+      v.exact = false;
+      // Undefined (no positive D*, e.g. a heavy tracer at strong dissipation) unless orders n … n+2
+      // are finite and D*(n) > 0; only then the estimate, which converts them to exact rationals.
+      const double value = diffusion->coefficient(n);
+      v.defined = value > 0 && std::isfinite(value) && std::isfinite(diffusion->coefficient(n + 1)) &&
+                  std::isfinite(diffusion->coefficient(n + 2));
+      if (v.defined) v.estimate = diffusion->estimate(n);
+      return v;
+    });
+  }
+
+  /// The mixture's Navier–Stokes operator for one parameter point, grown as orders are asked for,
+  /// and the coefficients of every order solved so far.
+  struct TransportCache {
+    struct AtOrder {
+      MixtureTransportValues values;
+      HcsStability stability;  ///< critical wave numbers from this order's coefficients (nan if η* or λ* ≤ 0)
+    };
+    std::optional<MixtureNavierStokes> operators;
+    std::map<int, AtOrder> by_order;
+    double gravity = 0;  ///< g* of the segregation criterion
+
+    const AtOrder& at(const Mixture& m, int n) {
+      if (const auto it = by_order.find(n); it != by_order.end()) return it->second;
+      if (!operators || operators->max_order() < n)
+        operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)));
+      AtOrder a{operators->coefficients(n), {NAN, NAN, NAN}};
+      const MixtureTransportValues& v = a.values;
+      if (v.shear_viscosity > 0 && v.thermal_conductivity > 0)
+        a.stability = mixture_hcs_stability(mixture_stability_input(m, *operators, v));
+      return by_order.emplace(n, std::move(a)).first->second;
+    }
+
+    /// Returns the coefficient `name` at the requested order or tolerance, its error from the next
+    /// two orders (theory.md §6), undefined (nan) if a value is not finite.
+    CoefficientValue value(const Mixture& m, const std::string& name, const OrderRequest& order) {
+      const auto s = m.size();
+      auto pick = [&](const AtOrder& at_order) {
+        const MixtureTransportValues& v = at_order.values;
+        if (name == "critical_wavenumber_shear") return at_order.stability.shear_wavenumber;
+        if (name == "critical_wavenumber_heat") return at_order.stability.heat_wavenumber;
+        if (name == "critical_length") return at_order.stability.critical_length;
+        if (name == "shear_viscosity") return v.shear_viscosity;
+        if (name == "thermal_conductivity") return v.thermal_conductivity;
+        if (name == "bulk_viscosity") return v.bulk_viscosity;
+        if (name == "cooling_rate_first_order") return v.cooling_rate_first_order;
+        if (name == "pressure") return v.pressure;
+        for (std::size_t i = 0; i < s; ++i) {
+          const int a = static_cast<int>(i) + 1;
+          if (name == index_name("thermal_diffusion", a)) return v.thermal_diffusion[i];
+          if (name == index_name("pressure_diffusion", a)) return v.pressure_diffusion[i];
+          if (name == index_name("dufour", a)) return v.dufour[i];
+          if (name == index_name("thermal_diffusion_factor", a))
+            return v.segregation.empty() ? NAN : v.segregation[i] + gravity * v.segregation_gravity[i];
+          for (std::size_t j = 0; j < s; ++j) {
+            if (name == index_name("mutual_diffusion", a, static_cast<int>(j) + 1))
+              return v.mutual_diffusion[i * s + j];
+            if (name == index_name("mobility", a, static_cast<int>(j) + 1)) return v.mobility[i * s + j];
+          }
+        }
+        throw std::logic_error("mixture: no transport value named " + name);
+      };
+      return detail::choose_order(order, kMaxOrder, [&](int n) {
+        detail::OrderValue v;
+        v.exact = false;
+        // Highest order first: the operator is then built once to n + 2, not to n and again larger.
+        const double c = pick(at(m, n + 2)), b = pick(at(m, n + 1)), a = pick(at(m, n));
+        v.defined = std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
+        if (v.defined)
+          v.estimate =
+              estimate_truncation(Rational::from_double(a), Rational::from_double(b), Rational::from_double(c));
+        return v;
+      });
+    }
+  };
+
+  /// Returns the Navier–Stokes coefficient names of s species (theory.md §17).
+  static std::vector<std::string> transport_names(int s) {
+    std::vector<std::string> n{"shear_viscosity", "thermal_conductivity"};
+    for (int i = 1; i <= s; ++i)
+      for (int j = 1; j <= s; ++j) n.push_back(index_name("mutual_diffusion", i, j));
+    for (const char* base : {"thermal_diffusion", "pressure_diffusion", "dufour"})
+      for (int i = 1; i <= s; ++i) n.push_back(index_name(base, i));
+    if (s == 2)
+      for (int i = 1; i <= s; ++i) n.push_back(index_name("thermal_diffusion_factor", i));
+    for (const char* c : {"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"})
+      n.emplace_back(c);
+    for (const char* c : {"bulk_viscosity", "cooling_rate_first_order", "pressure"}) n.emplace_back(c);
+    for (int i = 1; i <= s; ++i)
+      for (int j = 1; j <= s; ++j) n.push_back(index_name("mobility", i, j));
+    return n;
+  }
+  /// The external-force coefficients L_ij: listed only when the scene names them.
+  static bool on_request(const std::string& name) { return name.rfind("mobility_", 0) == 0; }
+  /// Zero in the dilute gas (p* = 1): listed by default only for a dense scene.
+  static bool dense_only(const std::string& name) {
+    return name == "bulk_viscosity" || name == "cooling_rate_first_order" || name == "pressure";
+  }
+
+  static constexpr int kMaxHcsOrder = 5;
+
+  /// Returns "a<q>_species" (built by appending: GCC 12 misreports "a" + std::string as overlapping).
+  static std::string cumulant_base(int q) {
+    std::string base(1, 'a');
+    base.append(std::to_string(q)).append("_species");
+    return base;
+  }
+
+  /// Returns the scene's hcs_order K (the HCS carries a_2 … a_K).
+  static int hcs_order(const ParameterPoint& p) {
+    return static_cast<int>(p.number("hcs_order", Rational(2)).to_double());
+  }
+
+  static std::vector<std::string> names(int s, int hcs_k) {
+    std::vector<std::string> n{"cooling_rate"};
+    for (int i = 1; i <= s; ++i) n.push_back(index_name("temperature_ratio", i));
+    for (int q = 2; q <= hcs_k; ++q)
+      for (int i = 1; i <= s; ++i) n.push_back(index_name(cumulant_base(q), i));
+    return n;
+  }
+  static Mixture make(const ParameterPoint& p) {
+    const int s = static_cast<int>(p.number("species", Rational(0)).to_double());
+    if (s < 2 || s > kMaxSpecies)
+      throw std::invalid_argument("species: give 2 to " + std::to_string(kMaxSpecies) +
+                                  " [[species]] tables (mass, diameter, fraction), got " + std::to_string(s));
+    Mixture m;
+    m.dimension = static_cast<int>(p.number("dimension", Rational(3)).to_double());
+    m.packing_fraction = p.number("packing_fraction", Rational(0)).to_double();
+    for (int i = 1; i <= s; ++i) {
+      Species sp;
+      for (const char* field : {"mass", "diameter", "fraction"})
+        if (!p.numbers.contains(index_name(field, i)))
+          throw std::invalid_argument("species[" + std::to_string(i) + "]." + field + ": required");
+      sp.mass = p.number(index_name("mass", i), Rational(1)).to_double();
+      sp.diameter = p.number(index_name("diameter", i), Rational(1)).to_double();
+      sp.fraction = p.number(index_name("fraction", i), Rational(1)).to_double();
+      m.species.push_back(sp);
+    }
+    const Rational alpha = p.number("alpha", Rational(1));
+    m.alpha.assign(static_cast<std::size_t>(s * s), 0.0);
+    for (int i = 1; i <= s; ++i)
+      for (int j = i; j <= s; ++j) {
+        const double a = p.number(index_name("alpha", i, j), alpha).to_double();
+        m.alpha[static_cast<std::size_t>((i - 1) * s + j - 1)] = a;
+        m.alpha[static_cast<std::size_t>((j - 1) * s + i - 1)] = a;
+      }
+    m.validate();
+    return m;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<TransportModel> detail::make_mixture_model() { return std::make_unique<MixtureModel>(); }
+
+}  // namespace gkt

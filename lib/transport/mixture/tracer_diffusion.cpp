@@ -1,0 +1,83 @@
+#include "gkt/transport/mixture/tracer_diffusion.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "gkt/collision/collision_moments.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
+#include "transport/common/galerkin_pieces.hpp"
+#include "transport/common/reference_gas.hpp"
+
+namespace gkt {
+
+namespace {
+
+Mixture as_mixture(const Tracer& t) {
+  Mixture m{t.dimension, {{t.mass_ratio, t.diameter_ratio, 0.0, "tracer"}, {1.0, 1.0, 1.0, "host"}}, {}, 0.0};
+  m.alpha = {1.0, t.alpha_tracer, t.alpha_tracer, t.alpha_host};  // α_00 never enters (x0 = 0)
+  return m;
+}
+
+}  // namespace
+
+void Tracer::validate() const {
+  if (dimension != 2 && dimension != 3)
+    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  if (!(mass_ratio > 0) || !std::isfinite(mass_ratio)) throw std::invalid_argument("mass_ratio: must be a number > 0");
+  if (!(diameter_ratio > 0) || !std::isfinite(diameter_ratio))
+    throw std::invalid_argument("diameter_ratio: must be a number > 0");
+  if (!(alpha_tracer > 0 && alpha_tracer <= 1)) throw std::invalid_argument("alpha_tracer: must be a number in (0, 1]");
+  if (!(alpha_host > 0 && alpha_host <= 1)) throw std::invalid_argument("alpha_host: must be a number in (0, 1]");
+}
+
+TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order) : max_order_(max_order) {
+  tracer.validate();
+  if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
+  const MixtureCoolingState hcs = mixture_cooling_state(as_mixture(tracer));
+  const int d = tracer.dimension;
+  gamma_ = hcs.temperature_ratio[0];
+  theta0_ = tracer.mass_ratio / gamma_;  // θ = m/(2T) in units of the host's √(2T/m)
+  // [garzo2004tracer]; (16.8)–(16.9): M(p, q) = ζ̂ D(p, q) + w L(p, q) in units of n σ^{d−1} √(2T/m), with L the
+  // Boltzmann–Lorentz operator (loss − gain, normalised by J0) in the tracer's basis c S_p.
+  const CollisionPair pair{d, Rational::from_double(tracer.mass_ratio), Rational(1), Rational::from_double(theta0_),
+                           Rational(1)};
+  const Rational alpha = Rational::from_double(tracer.alpha_tracer);
+  const int n = max_order - 1;
+  const auto gain = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1_post, 1, n);
+  const auto loss = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1, 1, n);
+  const auto pieces = detail::vector_pieces(d, n, 0);
+  // c = π^{(d−1)/2}/Γ(d/2) = K_d/π^d carries every geometric factor below.
+  const double c = detail::geometric_factor(d);
+  const double w = std::pow(0.5 * (1 + tracer.diameter_ratio), d - 1) * c * std::sqrt(1 / theta0_ + 1);
+  // The host's ζ in units of n σ^{d−1} √(2T/m): ζ* ν0 with ν0 = nT/η0 in those units.
+  const double zeta = hcs.cooling_rate * detail::unit_reference_gas(d).collision_frequency;
+  // D0* = (√2 π^{(d−1)/2}/(θ0 Γ(d/2))) (M⁻¹)_00 (16.10); the tracer's velocity unit is 1/√θ0.
+  prefactor_ = std::sqrt(2.0) * c / theta0_;
+  matrix_.assign(static_cast<std::size_t>(max_order), std::vector<double>(static_cast<std::size_t>(max_order)));
+  for (int p = 0; p < max_order; ++p)
+    for (int q = 0; q < max_order; ++q)
+      matrix_[p][q] = zeta * pieces.d[p][q].to_double() + w * (loss(p, q) - gain(p, q)).to_double();
+}
+
+double TracerDiffusion::coefficient(int order) const {
+  if (order < 1 || order > max_order_)
+    throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(max_order_) + "]");
+  Eigen::MatrixXd m(order, order);
+  for (int p = 0; p < order; ++p)
+    for (int q = 0; q < order; ++q) m(p, q) = matrix_[p][q];
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(order);
+  e(0) = 1;
+  const double inverse00 = m.partialPivLu().solve(e)(0);
+  return prefactor_ * inverse00;
+}
+
+TruncationEstimate TracerDiffusion::estimate(int order) const {
+  return estimate_truncation(Rational::from_double(coefficient(order)), Rational::from_double(coefficient(order + 1)),
+                             Rational::from_double(coefficient(order + 2)));
+}
+
+}  // namespace gkt
