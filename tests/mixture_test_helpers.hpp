@@ -6,6 +6,8 @@
 
 #include <Eigen/Dense>
 
+#include "evolution/mixture_longitudinal_matrix.hpp"
+
 namespace gkt::test {
 
 /// Returns |a − b| / max(1, |b|).

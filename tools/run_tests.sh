@@ -10,6 +10,7 @@ if command -v clang-format >/dev/null; then
   git ls-files '*.cpp' '*.hpp' | xargs clang-format --dry-run --Werror
   echo "run_tests: formatting ok"
 fi
+python3 tools/check_layers.py  # include graph: no arrow up the floors (docs/architecture.md)
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
 cmake --build build -j"$jobs"

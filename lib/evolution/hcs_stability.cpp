@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "evolution/mixture_longitudinal_matrix.hpp"
+
 namespace gkt {
 
 std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimension, double cooling_rate,

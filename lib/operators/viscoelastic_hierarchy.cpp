@@ -144,25 +144,13 @@ std::vector<std::vector<DenseMatrix<double>>> viscoelastic_operator_series(int r
 }
 
 CumulantHierarchy ViscoelasticHierarchy::at(double delta_prime) const {
-  std::vector<double> t = t_[0], e = e_[0];
-  double power = 1;
-  for (int order = 1; order <= moment_orders(); ++order) {
-    power *= delta_prime;
-    for (std::size_t i = 0; i < t.size(); ++i) t[i] += power * t_[order][i];
-    for (std::size_t i = 0; i < e.size(); ++i) e[i] += power * e_[order][i];
-  }
-  return CumulantHierarchy(3, k_max_, std::move(t), std::move(e), c_, w_, norms_);
+  CumulantHierarchy hierarchy(3, k_max_, t_[0], e_[0], c_, w_, norms_);
+  refresh(delta_prime, hierarchy);
+  return hierarchy;
 }
 
 void ViscoelasticHierarchy::refresh(double delta_prime, CumulantHierarchy& hierarchy) const {
-  hierarchy.t_ = t_[0];  // same sizes: std::vector copy-assignment reuses the storage
-  hierarchy.e_ = e_[0];
-  double power = 1;
-  for (int order = 1; order <= moment_orders(); ++order) {
-    power *= delta_prime;
-    for (std::size_t i = 0; i < hierarchy.t_.size(); ++i) hierarchy.t_[i] += power * t_[order][i];
-    for (std::size_t i = 0; i < hierarchy.e_.size(); ++i) hierarchy.e_[i] += power * e_[order][i];
-  }
+  hierarchy.assign_power_series(delta_prime, t_, e_);
 }
 
 double ViscoelasticHierarchy::energy(int order, int k, int l) const {

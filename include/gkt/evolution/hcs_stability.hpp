@@ -9,8 +9,6 @@
 #include <complex>
 #include <vector>
 
-#include <Eigen/Dense>
-
 #include "gkt/transport/mixture/mixture.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 
@@ -78,10 +76,6 @@ struct MixtureStabilityInput {
 /// order (dilute or dense).
 MixtureStabilityInput mixture_stability_input(const Mixture& mixture, const MixtureNavierStokes& solver,
                                               const MixtureTransportValues& values);
-
-/// Returns the (s+2)×(s+2) matrix of the longitudinal modes (ρ_1 … ρ_s, θ, w∥), ρ_i = δn_i/n_i:
-/// ∂_τ X = M X at k* (theory.md (17.14), dense (18.13)).
-Eigen::MatrixXcd mixture_longitudinal_matrix(const MixtureStabilityInput& in, double k);
 
 /// Returns the critical values of a mixture's HCS: k⊥c* = √(ζ*/η*) and k∥c*, the largest k* at
 /// which det M(k*) of (17.14)/(18.13) vanishes (a real eigenvalue crosses zero; 0 if none).

@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "gkt/algebra/dense_matrix.hpp"
+#include "gkt/algebra/rational.hpp"
 #include "gkt/collision/viscoelastic_contact.hpp"
-#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+#include "gkt/operators/cumulant_hierarchy.hpp"
 
 namespace gkt {
 
@@ -38,7 +39,9 @@ class ViscoelasticHierarchy {
   ViscoelasticHierarchy(int k_max, const ViscoelasticRestitution& restitution = {}, int moment_orders = kMomentOrders);
   /// Returns the cumulant hierarchy at the current δ'.
   [[nodiscard]] CumulantHierarchy at(double delta_prime) const;
-  /// Overwrites the δ'-dependent tensors of a hierarchy made by at() — no allocation (ODE hot path).
+  /// Overwrites the δ'-dependent tensors T, E of a hierarchy made by at() with their series at
+  /// delta_prime (CumulantHierarchy::assign_power_series) — no allocation (ODE hot path). Throws
+  /// std::invalid_argument if the hierarchy's K differs from k_max().
   void refresh(double delta_prime, CumulantHierarchy& hierarchy) const;
   /// Returns E^(J)(k, l) (energy moment of order J in δ').
   [[nodiscard]] double energy(int order, int k, int l) const;

@@ -5,9 +5,21 @@
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
-#include "gkt/transport/monodisperse/navier_stokes.hpp"
 
 namespace gkt::detail {
+
+/// The α-independent pieces of one mode's Galerkin system (theory.md (10.4)–(10.7)): exact
+/// (T = Rational, for the closed forms) or rounded to double (the solver).
+template <class T>
+struct GalerkinPieces {
+  std::vector<std::vector<T>> d, m;        ///< D(p, q), M(p, q)
+  std::vector<std::vector<T>> u, u2;       ///< source projections per HCS weight S_k (u2: density)
+  std::vector<std::vector<T>> u_pressure;  ///< ⟨((d/2)S_p + xS_p') S_k⟩: the part ∝ p* (vector)
+  std::vector<T> flux;                     ///< ⟨x² S_q⟩
+  /// product[k](q, r) = ⟨w S_k S_q S_r⟩/⟨w S_r²⟩ (w the mode's weight; S_k scalar index), the
+  /// expansion of S_k S_q in the mode's basis (modified scheme, theory.md (10.9)).
+  std::vector<std::vector<std::vector<T>>> product;
+};
 
 /// Returns product[k][q][r] = ⟨x^rank S_k S_q S_r⟩/⟨x^rank S_r²⟩ (S_k of index d/2 − 1, S_q, S_r of
 /// the mode's index): S_k S_q = Σ_r product[k][q][r] S_r (theory.md (10.9)), exact.

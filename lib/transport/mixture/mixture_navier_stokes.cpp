@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include <Eigen/Dense>
 
 #include "gkt/collision/collision_moments.hpp"
 #include "gkt/operators/mixture_collisional_transfer.hpp"
@@ -57,7 +60,70 @@ Eigen::MatrixXd leading_blocks(const Eigen::MatrixXd& m, std::size_t s, int full
 
 }  // namespace
 
-MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
+/// The solver's state: the operator of every mode in Sonine blocks, built once, and what the sources
+/// need (HCS, masses, fractions; the dense gas's pair tables).
+struct MixtureNavierStokes::Impl {
+  Impl(const Mixture& mixture, int max_order);
+  /// MixtureNavierStokes::coefficients.
+  [[nodiscard]] MixtureTransportValues coefficients(int order) const;
+  /// The vector modes' solutions: heat = 𝒜 (∇ln T), density[j] = ℬ^j, each as the unknowns φ̃ of
+  /// (17.5)–(17.7) (ℬ^j per ∇n_j) or, per_particle, φ = φ̃/x_i of (17.13) (ℬ^j per ∇ln n_j).
+  struct VectorModes {
+    Eigen::VectorXd heat;
+    std::vector<Eigen::VectorXd> density;
+    std::vector<Eigen::VectorXd> force;  ///< per external force F_j (standard scaling only; (18.14))
+  };
+  /// Solves both vector systems at `order` with the leading blocks of the operator's two parts.
+  [[nodiscard]] VectorModes vector_modes(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
+                                         bool per_particle) const;
+  /// Fills out.drift, out.thermal_drift and, for a binary, out.segregation* from the vector modes
+  /// solved per particle (theory.md (17.13)).
+  void species_drift(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
+                     MixtureTransportValues& out) const;
+
+  /// The dense gas's additions to the vector sources (theory.md (18.4)): heat[i·n + p] (∇ln T)
+  /// and density[l][i·n + p] (∇n_l), standard scaling; empty in the dilute gas.
+  struct TransferSources {
+    Eigen::VectorXd heat;
+    std::vector<Eigen::VectorXd> density;
+  };
+  [[nodiscard]] TransferSources transfer_sources(int order, bool per_particle) const;
+  /// The ∇·u mode (theory.md (18.6)–(18.8)) in the units of the solver: ζ_U, the bulk viscosity's
+  /// part from the scalar components of f^(1), and the S_1 coefficients δ_i1 of every species.
+  struct ScalarMode {
+    double cooling_rate = 0, bulk_viscosity = 0;
+    std::vector<double> temperature;
+  };
+  [[nodiscard]] ScalarMode scalar_mode(int order) const;
+  [[nodiscard]] std::size_t pair_index(std::size_t i, std::size_t j) const { return i * s_ + j; }
+
+  int dimension_;
+  MixtureCoolingState state_;
+  MixtureCoolingSensitivity sensitivity_;
+  int max_order_;
+  std::size_t s_;
+  std::size_t major_ = 0;  // the first most abundant species: its rows carry the conservation constraints
+  double nu0_ = 0;         // ν0 = nT/η0 = 4√2 c_d/(d+2) in the units n = σ̄ = m̄ = √(2T/m̄) = 1
+  double zeta_ = 0;        // ζ = ζ* ν0 in those units
+  std::vector<double> theta_, mass_, fraction_;  // θ_k = m_k/γ_k, m_k/m̄, x_k
+  // Rows (i, p), columns (k, q), index i·n + p. The vector operator is kept in two parts: the
+  // species-diagonal one (X_i against f_j, weight x_j) and the cross one (f_i against X_j) without its
+  // weight, x_i per particle of the unknown's species or x_j per particle of the row's (17.4), (17.13).
+  Eigen::MatrixXd vector_self_, vector_cross_, tensor_operator_, scalar_operator_;
+  Eigen::MatrixXd vector_d_, vector_m_, tensor_d_, scalar_d_;  // one-species ζ pieces D(p, q), M(p, q)
+  Eigen::VectorXd vector_flux_, tensor_flux_;                  // ⟨x² S_q⟩ of the two modes
+  // Dense gas (theory.md §18), per ordered pair i·s + j: rate_ = σ_ij^{d−1} χ_ij c_d w_ij (the operator's
+  // collision rate), length_ = n σ̄^d σ_ij/σ̄ (the transfer length in the solver's units), the pair's
+  // restitution and transfer averages; dchi_ = n ∂ln χ_ij/∂n_l at (i·s + j)·s + l; p* and
+  // pressure_derivative_[l] = ∂p/∂n_l/T (1 when dilute).
+  bool dense_ = false;
+  std::vector<double> rate_, length_, alpha_;
+  std::vector<PairTransferMoments> transfer_;
+  std::vector<double> dchi_, pressure_derivative_;
+  double pressure_ = 1;
+};
+
+MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order)
     : dimension_(mixture.dimension), max_order_(max_order), s_(mixture.size()) {
   mixture.validate();
   if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
@@ -143,9 +209,9 @@ MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
     }
 }
 
-MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, const Eigen::MatrixXd& self,
-                                                                   const Eigen::MatrixXd& cross,
-                                                                   bool per_particle) const {
+MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(int order, const Eigen::MatrixXd& self,
+                                                                               const Eigen::MatrixXd& cross,
+                                                                               bool per_particle) const {
   // Standard scaling (17.4)–(17.7): rows as integrated, unknowns φ̃, cross part weighted by the row's
   // x_i, ℬ^j per ∇n_j. Per particle (17.13): rows / x_i, unknowns φ = φ̃/x_i, so the cross part carries
   // the column's x_j, the 𝒜 source loses x_i, the constraint weights x_k and ℬ^j is per ∇ln n_j
@@ -220,7 +286,8 @@ MixtureNavierStokes::VectorModes MixtureNavierStokes::vector_modes(int order, co
   return out;
 }
 
-MixtureNavierStokes::TransferSources MixtureNavierStokes::transfer_sources(int order, bool per_particle) const {
+MixtureNavierStokes::Impl::TransferSources MixtureNavierStokes::Impl::transfer_sources(int order,
+                                                                                       bool per_particle) const {
   // (18.4): the K_i of the Enskog operator's gradient expansion projected on c_i S_p(X_i), per pair
   // L_ij R_ij x_i x_j ⟨⟨σ̂·Δ[c1 S_p]·(∂ ln f_j + ½ ∂ ln χ_ij)⟩⟩; per particle the rows are divided by x_i
   // and the density modes are per ∇ln n_l (× x_l).
@@ -252,7 +319,7 @@ MixtureNavierStokes::TransferSources MixtureNavierStokes::transfer_sources(int o
   return out;
 }
 
-MixtureNavierStokes::ScalarMode MixtureNavierStokes::scalar_mode(int order) const {
+MixtureNavierStokes::Impl::ScalarMode MixtureNavierStokes::Impl::scalar_mode(int order) const {
   // Unknowns δ_iq (q = 1 … N+1, 𝒟_i = f̂_i Σ_q δ_iq S_q(X_i)) and ζ_U; rows S_p(X_i) of
   // (ℒ + ζ D⁰) 𝒟 = x_i (X − d/2)[2(p* − 1)/d + ζ_U + Σ_l x_l ∂_l ln γ_i] f̂_i + (1/d) Σ_j K^scalar (18.6);
   // the S_1 row of the most abundant species is the total-energy constraint Σ_i γ_i δ_i1 = 0, and the
@@ -315,7 +382,7 @@ MixtureNavierStokes::ScalarMode MixtureNavierStokes::scalar_mode(int order) cons
   return out;
 }
 
-MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
+MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order) const {
   if (order < 1 || order > max_order_)
     throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(max_order_) + "]");
   const int d = dimension_;
@@ -472,8 +539,8 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
   return out;
 }
 
-void MixtureNavierStokes::species_drift(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
-                                        MixtureTransportValues& out) const {
+void MixtureNavierStokes::Impl::species_drift(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
+                                              MixtureTransportValues& out) const {
   // (17.13): every quantity stays finite as a species becomes a tracer.
   const int d = dimension_;
   const int n = order + 1;
@@ -511,5 +578,22 @@ void MixtureNavierStokes::species_drift(int order, const Eigen::MatrixXd& self, 
     out.segregation_gravity[i] = -a * c - 1 / pk;
   }
 }
+
+MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
+    : impl_(std::make_unique<Impl>(mixture, max_order)) {}
+MixtureNavierStokes::~MixtureNavierStokes() = default;
+MixtureNavierStokes::MixtureNavierStokes(const MixtureNavierStokes& other)
+    : impl_(other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr) {}
+MixtureNavierStokes& MixtureNavierStokes::operator=(const MixtureNavierStokes& other) {
+  if (this != &other) impl_ = other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr;
+  return *this;
+}
+MixtureNavierStokes::MixtureNavierStokes(MixtureNavierStokes&&) noexcept = default;
+MixtureNavierStokes& MixtureNavierStokes::operator=(MixtureNavierStokes&&) noexcept = default;
+
+MixtureTransportValues MixtureNavierStokes::coefficients(int order) const { return impl_->coefficients(order); }
+int MixtureNavierStokes::max_order() const { return impl_->max_order_; }
+const MixtureCoolingState& MixtureNavierStokes::cooling_state() const { return impl_->state_; }
+const MixtureCoolingSensitivity& MixtureNavierStokes::cooling_sensitivity() const { return impl_->sensitivity_; }
 
 }  // namespace gkt

@@ -1,6 +1,8 @@
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -35,37 +37,67 @@ FirstSonineHcs first_sonine_hcs(int dimension) {
   return out;
 }
 
+/// The exact tensors T(p; k, l), E(k, l), C(k, l) as polynomials in α, coefficients rounded to
+/// long double, and the first-Sonine closed forms, built on first use.
+struct HomogeneousCoolingState::Impl {
+  explicit Impl(int d) : dimension(d) {}
+  /// Builds the tables for cumulants up to at least a_K (with headroom).
+  void ensure_tables(int k_max);
+  struct Tables {
+    int k_max = 0;
+    std::vector<std::vector<long double>> t, e, c;  // T(p; k, l), E(k, l), C(k, l): coefficients of α^j
+  };
+  int dimension;
+  std::optional<FirstSonineHcs> first_sonine;
+  Tables tables;
+  std::vector<std::vector<double>> derivative_weights;  // ⟨x S_p' S_k⟩, p, k ≤ tables.k_max
+};
+
 HomogeneousCoolingState::HomogeneousCoolingState(int dimension) : dimension_(dimension) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  impl_ = std::make_unique<Impl>(dimension);
 }
 
-void HomogeneousCoolingState::ensure_tables(int k_max) {
-  if (tables_.k_max >= k_max) return;
-  const int target = std::max(k_max, tables_.k_max + 4);
-  const auto m = bilinear_collision_moments<RationalPolynomial>(dimension_, RationalPolynomial::variable(), target);
-  tables_.k_max = target;
-  derivative_weights_.assign(static_cast<std::size_t>(target) + 1, std::vector<double>(target + 1));
+HomogeneousCoolingState::~HomogeneousCoolingState() = default;
+HomogeneousCoolingState::HomogeneousCoolingState(const HomogeneousCoolingState& other)
+    : dimension_(other.dimension_), impl_(other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr) {}
+HomogeneousCoolingState& HomogeneousCoolingState::operator=(const HomogeneousCoolingState& other) {
+  if (this != &other) {
+    dimension_ = other.dimension_;
+    impl_ = other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr;
+  }
+  return *this;
+}
+HomogeneousCoolingState::HomogeneousCoolingState(HomogeneousCoolingState&&) noexcept = default;
+HomogeneousCoolingState& HomogeneousCoolingState::operator=(HomogeneousCoolingState&&) noexcept = default;
+
+void HomogeneousCoolingState::Impl::ensure_tables(int k_max) {
+  if (tables.k_max >= k_max) return;
+  const int target = std::max(k_max, tables.k_max + 4);
+  const auto m = bilinear_collision_moments<RationalPolynomial>(dimension, RationalPolynomial::variable(), target);
+  tables.k_max = target;
+  derivative_weights.assign(static_cast<std::size_t>(target) + 1, std::vector<double>(target + 1));
   for (int p = 0; p <= target; ++p)
-    for (int k = 0; k <= target; ++k) derivative_weights_[p][k] = scaling_weight(dimension_, p, k).to_double();
-  tables_.t.clear();
-  tables_.e.clear();
-  for (const auto& p : m.sonine) tables_.t.push_back(detail::to_alpha_polynomial(p));
-  for (const auto& p : m.energy) tables_.e.push_back(detail::to_alpha_polynomial(p));
-  tables_.c.clear();
-  for (const auto& p : m.frequency) tables_.c.push_back(detail::to_alpha_polynomial(p));
+    for (int k = 0; k <= target; ++k) derivative_weights[p][k] = scaling_weight(dimension, p, k).to_double();
+  tables.t.clear();
+  tables.e.clear();
+  for (const auto& p : m.sonine) tables.t.push_back(detail::to_alpha_polynomial(p));
+  for (const auto& p : m.energy) tables.e.push_back(detail::to_alpha_polynomial(p));
+  tables.c.clear();
+  for (const auto& p : m.frequency) tables.c.push_back(detail::to_alpha_polynomial(p));
 }
 
 HcsState HomogeneousCoolingState::solve(const Rational& alpha, int k_max, HcsScheme scheme) {
   detail::require_restitution(alpha);
   if (k_max < 2) throw std::invalid_argument("hcs order: the highest cumulant must be >= 2");
-  if (!first_sonine_) first_sonine_ = first_sonine_hcs(dimension_);
-  const Rational a2_lin = first_sonine_->a2.evaluate(alpha);
+  if (!impl_->first_sonine) impl_->first_sonine = first_sonine_hcs(dimension_);
+  const Rational a2_lin = impl_->first_sonine->a2.evaluate(alpha);
   HcsState state;
   if (scheme == HcsScheme::linear) {
     if (k_max != 2) throw std::invalid_argument("hcs: \"linear\" keeps a2 only (first Sonine)");
     state.exact_a2 = a2_lin;
-    state.exact_cooling_rate = first_sonine_->cooling_rate.evaluate(alpha);
+    state.exact_cooling_rate = impl_->first_sonine->cooling_rate.evaluate(alpha);
     state.a = {1.0, 0.0, a2_lin.to_double()};
     state.cooling_rate = state.exact_cooling_rate->to_double();
     return state;
@@ -113,97 +145,28 @@ HcsState HomogeneousCoolingState::solve(const Rational& alpha, int k_max, HcsSch
 CumulantHierarchy HomogeneousCoolingState::hierarchy(const Rational& alpha, int k_max) {
   detail::require_restitution(alpha);
   if (k_max < 2) throw std::invalid_argument("hcs order: the highest cumulant must be >= 2");
-  ensure_tables(k_max);
-  const int n = tables_.k_max + 1;
+  impl_->ensure_tables(k_max);
+  const int n = impl_->tables.k_max + 1;
   const long double x = alpha.to_double();
   const int kn = k_max + 1;
   std::vector<double> t(static_cast<std::size_t>(kn) * kn * kn), e(static_cast<std::size_t>(kn) * kn), c(e.size());
   for (int p = 0; p < kn; ++p)
     for (int k = 0; k < kn; ++k) {
-      e[static_cast<std::size_t>(p) * kn + k] = detail::evaluate(tables_.e[static_cast<std::size_t>(p) * n + k], x);
-      c[static_cast<std::size_t>(p) * kn + k] = detail::evaluate(tables_.c[static_cast<std::size_t>(p) * n + k], x);
+      e[static_cast<std::size_t>(p) * kn + k] =
+          detail::evaluate(impl_->tables.e[static_cast<std::size_t>(p) * n + k], x);
+      c[static_cast<std::size_t>(p) * kn + k] =
+          detail::evaluate(impl_->tables.c[static_cast<std::size_t>(p) * n + k], x);
       for (int l = 0; l < kn; ++l)
         t[(static_cast<std::size_t>(p) * kn + k) * kn + l] =
-            detail::evaluate(tables_.t[(static_cast<std::size_t>(p) * n + k) * n + l], x);
+            detail::evaluate(impl_->tables.t[(static_cast<std::size_t>(p) * n + k) * n + l], x);
     }
   std::vector<std::vector<double>> w(static_cast<std::size_t>(kn), std::vector<double>(static_cast<std::size_t>(kn)));
   std::vector<double> norms(static_cast<std::size_t>(kn));
   for (int p = 0; p < kn; ++p) {
     norms[static_cast<std::size_t>(p)] = sonine_norm(sonine_twice_m(dimension_, 0), p).to_double();
-    for (int k = 0; k < kn; ++k) w[p][k] = derivative_weights_[p][k];
+    for (int k = 0; k < kn; ++k) w[p][k] = impl_->derivative_weights[p][k];
   }
   return CumulantHierarchy(dimension_, k_max, std::move(t), std::move(e), std::move(c), std::move(w), std::move(norms));
-}
-
-CumulantHierarchy::CumulantHierarchy(int dimension, int k_max, std::vector<double> t, std::vector<double> e,
-                                     std::vector<double> c, std::vector<std::vector<double>> w,
-                                     std::vector<double> norms)
-    : dimension_(dimension),
-      k_max_(k_max),
-      t_(std::move(t)),
-      e_(std::move(e)),
-      c_(std::move(c)),
-      w_(std::move(w)),
-      norms_(std::move(norms)) {}
-
-double CumulantHierarchy::energy_moment(const std::vector<double>& a) const {
-  const int kn = k_max_ + 1;
-  double r = 0;
-  for (int k = 0; k < kn; ++k)
-    for (int l = 0; l < kn; ++l) r += a[k] * a[l] * e_[static_cast<std::size_t>(k) * kn + l];
-  return r;
-}
-
-double CumulantHierarchy::collision_rate(const std::vector<double>& a) const {
-  const int kn = k_max_ + 1;
-  double r = 0;
-  for (int k = 0; k < kn; ++k)
-    for (int l = 0; l < kn; ++l) r += a[k] * a[l] * c_[static_cast<std::size_t>(k) * kn + l];
-  return r;
-}
-
-void CumulantHierarchy::gradients(const std::vector<double>& a, std::vector<double>& energy,
-                                  std::vector<double>& rate) const {
-  const int kn = k_max_ + 1;
-  energy.assign(static_cast<std::size_t>(kn), 0.0);
-  rate.assign(static_cast<std::size_t>(kn), 0.0);
-  for (int k = 0; k < kn; ++k)
-    for (int l = 0; l < kn; ++l) {
-      energy[k] += a[l] * (e_[static_cast<std::size_t>(k) * kn + l] + e_[static_cast<std::size_t>(l) * kn + k]);
-      rate[k] += a[l] * (c_[static_cast<std::size_t>(k) * kn + l] + c_[static_cast<std::size_t>(l) * kn + k]);
-    }
-}
-
-void CumulantHierarchy::residual(const std::vector<double>& a, std::vector<double>& f,
-                                 std::vector<double>* jacobian) const {
-  // theory.md (9.3): F_p = R[S_p](a) − (2/d) R_1(a) ⟨x S_p'⟩_a, p = 2..K.
-  const int kn = k_max_ + 1, unknowns = k_max_ - 1;
-  auto t = [&](int p, int k, int l) { return t_[(static_cast<std::size_t>(p) * kn + k) * kn + l]; };
-  auto e = [&](int k, int l) { return e_[static_cast<std::size_t>(k) * kn + l]; };
-  const double two_over_d = 2.0 / dimension_;
-  double r1 = 0;
-  std::vector<double> dr1(static_cast<std::size_t>(kn), 0.0);
-  for (int k = 0; k < kn; ++k)
-    for (int l = 0; l < kn; ++l) {
-      r1 += a[k] * a[l] * e(k, l);
-      dr1[k] += a[l] * (e(k, l) + e(l, k));
-    }
-  f.assign(static_cast<std::size_t>(unknowns), 0.0);
-  for (int p = 2; p <= k_max_; ++p) {
-    double rp = 0, wp = 0;
-    for (int k = 0; k < kn; ++k) {
-      wp += a[k] * w_[p][k];
-      for (int l = 0; l < kn; ++l) rp += a[k] * a[l] * t(p, k, l);
-    }
-    f[static_cast<std::size_t>(p - 2)] = rp - two_over_d * r1 * wp;
-    if (jacobian != nullptr)
-      for (int q = 2; q <= k_max_; ++q) {
-        double drp = 0;
-        for (int l = 0; l < kn; ++l) drp += a[l] * (t(p, q, l) + t(p, l, q));
-        (*jacobian)[static_cast<std::size_t>(p - 2) * unknowns + (q - 2)] =
-            drp - two_over_d * (dr1[q] * wp + r1 * w_[p][q]);
-      }
-  }
 }
 
 }  // namespace gkt

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include <Eigen/Dense>
 
+#include "gkt/algebra/dense_matrix.hpp"
 #include "gkt/algebra/sonine.hpp"
 #include "gkt/operators/collisional_transfer.hpp"
 #include "gkt/operators/linearized_operator.hpp"
@@ -60,14 +63,67 @@ FirstSonineNavierStokes first_sonine_navier_stokes(int dimension) {
   return out;
 }
 
-NavierStokesSolver::NavierStokesSolver(int dimension) : dimension_(dimension) {
-  if (dimension != 2 && dimension != 3)
-    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+/// The solver's state: the exact operators as α-polynomials (long double coefficients), built
+/// lazily and grown with headroom, and the α-independent Galerkin pieces rounded once.
+struct NavierStokesSolver::Impl {
+  explicit Impl(int dimension);
+  struct PolynomialMatrices {
+    int n_max = -1, k_max = -1;
+    std::vector<DenseMatrix<std::vector<long double>>> by_weight;  // [k](p, q): coefficients of α^j
+  };
+  using Pieces = detail::GalerkinPieces<double>;
+  /// Builds the exact operators for `order` trial functions plus `extra_columns` more (the
+  /// modified scheme's trial functions reach degree order + K).
+  void ensure_built(int order, int k_max, int extra_columns, bool dense);
+  /// NavierStokesSolver::solve.
+  NavierStokesValues solve(const Rational& alpha, int order, const std::vector<double>& hcs_a, SonineScheme scheme,
+                           const EnskogState& dense);
+  /// Collisional-transfer tensors (theory.md §15) as α-polynomials, built on the first dense call.
+  struct DensePieces {
+    int n_max = -1, k_max = -1, n_test = -1;
+    std::vector<std::vector<long double>> shear_source, shear_flux, shear_gradient, heat_source_temperature,
+        heat_source_density, heat_flux, heat_gradient_temperature, heat_gradient_density, scalar_source,
+        cooling_gradient, cooling_scalar;
+  };
+  DensePieces dense_;
+  Pieces vector_pieces_, tensor_pieces_, scalar_pieces_;
+  int dimension_;
+  double transfer_factor_ = 0, gradient_factor_ = 0;             // e_d and g_d of theory.md (15.3), (15.8)
+  PolynomialMatrices vector_, tensor_, scalar_;                  // scalar: built on the first dense call
+  std::optional<std::vector<std::vector<long double>>> energy_;  // E(k, l) polynomials
+  int energy_k_ = -1;
+};
+
+NavierStokesSolver::Impl::Impl(int dimension) : dimension_(dimension) {
   transfer_factor_ = collisional_transfer_factor(dimension);
   gradient_factor_ = collisional_gradient_factor(dimension);
 }
 
-void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, bool dense) {
+NavierStokesSolver::NavierStokesSolver(int dimension) : dimension_(dimension) {
+  if (dimension != 2 && dimension != 3)
+    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  impl_ = std::make_unique<Impl>(dimension);
+}
+
+NavierStokesSolver::~NavierStokesSolver() = default;
+NavierStokesSolver::NavierStokesSolver(const NavierStokesSolver& other)
+    : dimension_(other.dimension_), impl_(other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr) {}
+NavierStokesSolver& NavierStokesSolver::operator=(const NavierStokesSolver& other) {
+  if (this != &other) {
+    dimension_ = other.dimension_;
+    impl_ = other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr;
+  }
+  return *this;
+}
+NavierStokesSolver::NavierStokesSolver(NavierStokesSolver&&) noexcept = default;
+NavierStokesSolver& NavierStokesSolver::operator=(NavierStokesSolver&&) noexcept = default;
+
+NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
+                                             SonineScheme scheme, const EnskogState& dense) {
+  return impl_->solve(alpha, order, hcs_a, scheme, dense);
+}
+
+void NavierStokesSolver::Impl::ensure_built(int order, int k_max, int extra_columns, bool dense) {
   const auto alpha = RationalPolynomial::variable();
   auto build = [&](PolynomialMatrices& target, int rank, int n_max) {
     if (target.n_max >= n_max && target.k_max >= k_max) return;
@@ -139,8 +195,8 @@ void NavierStokesSolver::ensure_built(int order, int k_max, int extra_columns, b
   }
 }
 
-NavierStokesValues NavierStokesSolver::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
-                                             SonineScheme scheme, const EnskogState& dense) {
+NavierStokesValues NavierStokesSolver::Impl::solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
+                                                   SonineScheme scheme, const EnskogState& dense) {
   if (order < 1) throw std::invalid_argument("order: must be >= 1");
   detail::require_restitution(alpha);
   const int k_max = static_cast<int>(hcs_a.size()) - 1;

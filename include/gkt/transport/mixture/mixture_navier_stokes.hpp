@@ -9,9 +9,8 @@
 // m̄ = Σ x_i m_i and diameter σ̄ = Σ x_i σ_i at the same n and T.
 #pragma once
 
+#include <memory>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "gkt/operators/mixture_collisional_transfer.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
@@ -58,72 +57,25 @@ class MixtureNavierStokes {
   /// scalar ones S_1 … S_{max_order+1} per species. Throws std::invalid_argument naming the field
   /// on bad input.
   MixtureNavierStokes(const Mixture& mixture, int max_order);
+  /// Copies carry the built operator (deep copy); a moved-from solver may only be assigned to or destroyed.
+  ~MixtureNavierStokes();
+  MixtureNavierStokes(const MixtureNavierStokes& other);
+  MixtureNavierStokes& operator=(const MixtureNavierStokes& other);
+  MixtureNavierStokes(MixtureNavierStokes&&) noexcept;
+  MixtureNavierStokes& operator=(MixtureNavierStokes&&) noexcept;
 
   /// Returns the coefficients at Sonine order N (vector modes c S_0 … c S_N, shear Y_2 S_0 …
   /// Y_2 S_{N−1}, scalar S_1 … S_{N+1}), 1 ≤ N ≤ max_order.
   [[nodiscard]] MixtureTransportValues coefficients(int order) const;
-  [[nodiscard]] int max_order() const { return max_order_; }
+  [[nodiscard]] int max_order() const;
   /// Returns the Maxwellian HCS the coefficients are built about.
-  [[nodiscard]] const MixtureCoolingState& cooling_state() const { return state_; }
+  [[nodiscard]] const MixtureCoolingState& cooling_state() const;
   /// Returns the HCS density derivatives used in the sources (theory.md §16.6).
-  [[nodiscard]] const MixtureCoolingSensitivity& cooling_sensitivity() const { return sensitivity_; }
+  [[nodiscard]] const MixtureCoolingSensitivity& cooling_sensitivity() const;
 
  private:
-  /// The vector modes' solutions: heat = 𝒜 (∇ln T), density[j] = ℬ^j, each as the unknowns φ̃ of
-  /// (17.5)–(17.7) (ℬ^j per ∇n_j) or, per_particle, φ = φ̃/x_i of (17.13) (ℬ^j per ∇ln n_j).
-  struct VectorModes {
-    Eigen::VectorXd heat;
-    std::vector<Eigen::VectorXd> density;
-    std::vector<Eigen::VectorXd> force;  ///< per external force F_j (standard scaling only; (18.14))
-  };
-  /// Solves both vector systems at `order` with the leading blocks of the operator's two parts.
-  [[nodiscard]] VectorModes vector_modes(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
-                                         bool per_particle) const;
-  /// Fills out.drift, out.thermal_drift and, for a binary, out.segregation* from the vector modes
-  /// solved per particle (theory.md (17.13)).
-  void species_drift(int order, const Eigen::MatrixXd& self, const Eigen::MatrixXd& cross,
-                     MixtureTransportValues& out) const;
-
-  /// The dense gas's additions to the vector sources (theory.md (18.4)): heat[i·n + p] (∇ln T)
-  /// and density[l][i·n + p] (∇n_l), standard scaling; empty in the dilute gas.
-  struct TransferSources {
-    Eigen::VectorXd heat;
-    std::vector<Eigen::VectorXd> density;
-  };
-  [[nodiscard]] TransferSources transfer_sources(int order, bool per_particle) const;
-  /// The ∇·u mode (theory.md (18.6)–(18.8)) in the units of the solver: ζ_U, the bulk viscosity's
-  /// part from the scalar components of f^(1), and the S_1 coefficients δ_i1 of every species.
-  struct ScalarMode {
-    double cooling_rate = 0, bulk_viscosity = 0;
-    std::vector<double> temperature;
-  };
-  [[nodiscard]] ScalarMode scalar_mode(int order) const;
-  [[nodiscard]] std::size_t pair_index(std::size_t i, std::size_t j) const { return i * s_ + j; }
-
-  int dimension_;
-  MixtureCoolingState state_;
-  MixtureCoolingSensitivity sensitivity_;
-  int max_order_;
-  std::size_t s_;
-  std::size_t major_ = 0;  // the first most abundant species: its rows carry the conservation constraints
-  double nu0_ = 0;         // ν0 = nT/η0 = 4√2 c_d/(d+2) in the units n = σ̄ = m̄ = √(2T/m̄) = 1
-  double zeta_ = 0;        // ζ = ζ* ν0 in those units
-  std::vector<double> theta_, mass_, fraction_;  // θ_k = m_k/γ_k, m_k/m̄, x_k
-  // Rows (i, p), columns (k, q), index i·n + p. The vector operator is kept in two parts: the
-  // species-diagonal one (X_i against f_j, weight x_j) and the cross one (f_i against X_j) without its
-  // weight, x_i per particle of the unknown's species or x_j per particle of the row's (17.4), (17.13).
-  Eigen::MatrixXd vector_self_, vector_cross_, tensor_operator_, scalar_operator_;
-  Eigen::MatrixXd vector_d_, vector_m_, tensor_d_, scalar_d_;  // one-species ζ pieces D(p, q), M(p, q)
-  Eigen::VectorXd vector_flux_, tensor_flux_;                  // ⟨x² S_q⟩ of the two modes
-  // Dense gas (theory.md §18), per ordered pair i·s + j: rate_ = σ_ij^{d−1} χ_ij c_d w_ij (the operator's
-  // collision rate), length_ = n σ̄^d σ_ij/σ̄ (the transfer length in the solver's units), the pair's
-  // restitution and transfer averages; dchi_ = n ∂ln χ_ij/∂n_l at (i·s + j)·s + l; p* and
-  // pressure_derivative_[l] = ∂p/∂n_l/T (1 when dilute).
-  bool dense_ = false;
-  std::vector<double> rate_, length_, alpha_;
-  std::vector<PairTransferMoments> transfer_;
-  std::vector<double> dchi_, pressure_derivative_;
-  double pressure_ = 1;
+  struct Impl;  // the operator blocks (Eigen) and the dense gas's pair tables (mixture_navier_stokes.cpp)
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace gkt

@@ -6,11 +6,13 @@
 //   R[ψ](a) = Σ_{k,l} a_k a_l ⟨S_k(X1) S_l(X2)[ψ(X1') − ψ(X1)]⟩/J0,  R_1 = R[x].
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
 #include "gkt/algebra/rational_function.hpp"
+#include "gkt/operators/cumulant_hierarchy.hpp"
 #include "gkt/operators/nonlinear_collision_moments.hpp"
 
 namespace gkt {
@@ -40,35 +42,6 @@ struct HcsState {
   std::optional<Rational> exact_a2, exact_cooling_rate;  ///< linear scheme only
 };
 
-/// The cumulant (moment) hierarchy of the scaled Boltzmann equation at one α, truncated at a_K
-/// (theory.md (9.2)–(9.3)), in double: the equations the HCS solver zeroes and the time
-/// evolution integrates. Vectors a hold a_0 = 1, a_1 = 0, a_2 … a_K.
-class CumulantHierarchy {
- public:
-  CumulantHierarchy(int dimension, int k_max, std::vector<double> t, std::vector<double> e, std::vector<double> c,
-                    std::vector<std::vector<double>> w, std::vector<double> norms);
-  [[nodiscard]] int dimension() const { return dimension_; }
-  [[nodiscard]] int k_max() const { return k_max_; }
-  /// Returns R_1(a) = Σ a_k a_l E(k, l); ζ* = −((d+2)/(2d)) R_1 (9.4).
-  [[nodiscard]] double energy_moment(const std::vector<double>& a) const;
-  /// Returns ⟨1⟩_a = Σ a_k a_l C(k, l): the collision rate relative to the Maxwellian one.
-  [[nodiscard]] double collision_rate(const std::vector<double>& a) const;
-  /// Returns ∂R_1/∂a_q and ∂⟨1⟩_a/∂a_q for q = 0..K.
-  void gradients(const std::vector<double>& a, std::vector<double>& energy, std::vector<double>& rate) const;
-  /// Writes F_p(a), p = 2..K, to f[p − 2] and, if jacobian is not null, ∂F_p/∂a_q to
-  /// (*jacobian)[(p − 2)(K − 1) + q − 2].
-  void residual(const std::vector<double>& a, std::vector<double>& f, std::vector<double>* jacobian) const;
-  /// Returns N_p = ⟨S_p S_p⟩ under the Maxwellian (the mass matrix of ∂_t a_p).
-  [[nodiscard]] double norm(int p) const { return norms_[static_cast<std::size_t>(p)]; }
-
- private:
-  friend class ViscoelasticHierarchy;  // refreshes t_, e_ in place as δ' changes
-  int dimension_, k_max_;
-  std::vector<double> t_, e_, c_;
-  std::vector<std::vector<double>> w_;
-  std::vector<double> norms_;
-};
-
 /// HCS solver for one dimension. The collision moments are built once, exactly, as polynomials
 /// in α (Q[α]); each restitution evaluates them in long double (relative error ≤ 4e-14 measured,
 /// K ≤ 10) and solves in double.
@@ -76,6 +49,12 @@ class HomogeneousCoolingState {
  public:
   /// Throws std::invalid_argument unless dimension is 2 or 3.
   explicit HomogeneousCoolingState(int dimension);
+  /// Copies carry the tables built so far (deep copy); a moved-from solver may only be assigned to or destroyed.
+  ~HomogeneousCoolingState();
+  HomogeneousCoolingState(const HomogeneousCoolingState& other);
+  HomogeneousCoolingState& operator=(const HomogeneousCoolingState& other);
+  HomogeneousCoolingState(HomogeneousCoolingState&&) noexcept;
+  HomogeneousCoolingState& operator=(HomogeneousCoolingState&&) noexcept;
 
   /// Returns the HCS at restitution alpha ∈ (0, 1] keeping a_2..a_K (K ≥ 2; linear: K = 2).
   HcsState solve(const Rational& alpha, int k_max, HcsScheme scheme);
@@ -86,16 +65,9 @@ class HomogeneousCoolingState {
   [[nodiscard]] int dimension() const { return dimension_; }
 
  private:
-  /// The exact tensors as polynomials in α, coefficients rounded to long double.
-  struct Tables {
-    int k_max = 0;
-    std::vector<std::vector<long double>> t, e, c;  // T(p; k, l), E(k, l), C(k, l): coefficients of α^j
-  };
-  void ensure_tables(int k_max);
+  struct Impl;  // the exact tensors as α-polynomials, built lazily (homogeneous_cooling_state.cpp)
   int dimension_;
-  std::optional<FirstSonineHcs> first_sonine_;
-  Tables tables_;
-  std::vector<std::vector<double>> derivative_weights_;  // ⟨x S_p' S_k⟩, p, k ≤ tables_.k_max
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace gkt

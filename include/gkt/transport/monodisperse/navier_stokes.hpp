@@ -7,10 +7,9 @@
 // (η0, κ0 the dilute elastic first-Sonine values).
 #pragma once
 
-#include <optional>
+#include <memory>
 #include <vector>
 
-#include "gkt/algebra/dense_matrix.hpp"
 #include "gkt/algebra/rational.hpp"
 #include "gkt/algebra/rational_polynomial.hpp"
 #include "gkt/transport/common/enskog_state.hpp"
@@ -46,21 +45,6 @@ struct NavierStokesValues {
   double cooling_rate_first_order = 0;
 };
 
-namespace detail {
-/// The α-independent pieces of one mode's Galerkin system (theory.md (10.4)–(10.7)): exact
-/// (T = Rational, for the closed forms) or rounded to double (the solver).
-template <class T>
-struct GalerkinPieces {
-  std::vector<std::vector<T>> d, m;        ///< D(p, q), M(p, q)
-  std::vector<std::vector<T>> u, u2;       ///< source projections per HCS weight S_k (u2: density)
-  std::vector<std::vector<T>> u_pressure;  ///< ⟨((d/2)S_p + xS_p') S_k⟩: the part ∝ p* (vector)
-  std::vector<T> flux;                     ///< ⟨x² S_q⟩
-  /// product[k](q, r) = ⟨w S_k S_q S_r⟩/⟨w S_r²⟩ (w the mode's weight; S_k scalar index), the
-  /// expansion of S_k S_q in the mode's basis (modified scheme, theory.md (10.9)).
-  std::vector<std::vector<std::vector<T>>> product;
-};
-}  // namespace detail
-
 /// Solver for orders N ≥ 1: the operator (and, on the first dense call, the collisional-transfer
 /// tables) are built once per dimension as exact polynomials in α; each call evaluates them at
 /// α (long double) and solves in double.
@@ -68,6 +52,12 @@ class NavierStokesSolver {
  public:
   /// Throws std::invalid_argument unless dimension is 2 or 3.
   explicit NavierStokesSolver(int dimension);
+  /// Copies carry the operators built so far (deep copy); a moved-from solver may only be assigned to or destroyed.
+  ~NavierStokesSolver();
+  NavierStokesSolver(const NavierStokesSolver& other);
+  NavierStokesSolver& operator=(const NavierStokesSolver& other);
+  NavierStokesSolver(NavierStokesSolver&&) noexcept;
+  NavierStokesSolver& operator=(NavierStokesSolver&&) noexcept;
 
   /// Returns η*, κ*, μ* at Sonine order `order` (N polynomials per mode) about the HCS with
   /// cumulants hcs_a (a[0] = 1, a[1] = 0, a[2..K]); α in (0, 1]. The modified scheme multiplies
@@ -78,28 +68,9 @@ class NavierStokesSolver {
   [[nodiscard]] int dimension() const { return dimension_; }
 
  private:
-  struct PolynomialMatrices {
-    int n_max = -1, k_max = -1;
-    std::vector<DenseMatrix<std::vector<long double>>> by_weight;  // [k](p, q): coefficients of α^j
-  };
-  using Pieces = detail::GalerkinPieces<double>;
-  /// Builds the exact operators for `order` trial functions plus `extra_columns` more (the
-  /// modified scheme's trial functions reach degree order + K).
-  void ensure_built(int order, int k_max, int extra_columns, bool dense);
-  /// Collisional-transfer tensors (theory.md §15) as α-polynomials, built on the first dense call.
-  struct DensePieces {
-    int n_max = -1, k_max = -1, n_test = -1;
-    std::vector<std::vector<long double>> shear_source, shear_flux, shear_gradient, heat_source_temperature,
-        heat_source_density, heat_flux, heat_gradient_temperature, heat_gradient_density, scalar_source,
-        cooling_gradient, cooling_scalar;
-  };
-  DensePieces dense_;
-  Pieces vector_pieces_, tensor_pieces_, scalar_pieces_;
+  struct Impl;  // the exact operators as α-polynomials and their rounded Galerkin pieces (navier_stokes.cpp)
   int dimension_;
-  double transfer_factor_ = 0, gradient_factor_ = 0;             // e_d and g_d of theory.md (15.3), (15.8)
-  PolynomialMatrices vector_, tensor_, scalar_;                  // scalar: built on the first dense call
-  std::optional<std::vector<std::vector<long double>>> energy_;  // E(k, l) polynomials
-  int energy_k_ = -1;
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace gkt
