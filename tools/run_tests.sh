@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Every test: install dependencies, check formatting, build warning-free (Release) and run the
 # whole suite, install into a temporary prefix and build examples/consumer/ against it
-# (tools/check_install.sh), then rebuild with AddressSanitizer + UndefinedBehaviorSanitizer and
-# run the suite again.
+# (tools/check_install.sh), check the shipped tables against their scenes (tools/check_tables.sh),
+# then rebuild with AddressSanitizer + UndefinedBehaviorSanitizer and run the suite again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh
@@ -19,6 +19,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGKT_BUILD_TESTS=ON -DCMAKE_COMP
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure --no-tests=error -j"$jobs"
 bash tools/check_install.sh build
+bash tools/check_tables.sh build
 
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGKT_SANITIZE=ON -DGKT_BUILD_TESTS=ON \
   -DGKT_BUILD_BENCHMARKS=OFF -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
