@@ -32,6 +32,17 @@ config=$(find "$prefix" -name gktConfig.cmake -print -quit)
 pc=$(find "$prefix" -name gkt.pc -print -quit)
 [[ -n $config && -n $pc ]] || { echo "check_install: gktConfig.cmake or gkt.pc not installed" >&2; exit 1; }
 
+# 0. Every public header is installed, and all of them compile with only the installed tree and
+#    the dependencies' flags (no include of a private lib/ header).
+if ! diff <(cd include && find gkt -name '*.hpp' | sort) <(cd "$prefix/include" && find gkt -name '*.hpp' | sort); then
+  echo "check_install: the installed headers differ from include/gkt/ (< source, > installed)" >&2
+  exit 1
+fi
+(cd "$prefix/include" && find gkt -name '*.hpp' | sort | sed 's/.*/#include "&"/') >"$work/all_headers.cpp"
+# shellcheck disable=SC2046  # the flags are words
+"${CXX:-c++}" -std=c++20 -fsyntax-only -Wall -Wextra -Wpedantic -Werror "$work/all_headers.cpp" \
+  $(PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --cflags gkt)
+
 # 1. CMake: the consumer sees only the installed prefix.
 cmake -S examples/consumer -B "$work/consumer-cmake" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
   -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON >/dev/null
@@ -40,6 +51,30 @@ cmake --build "$work/consumer-cmake" -j"$jobs" >/dev/null
 pkg_flags=$(PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --cflags --libs gkt)
 # shellcheck disable=SC2086  # the flags are words
 "${CXX:-c++}" -std=c++20 -O2 examples/consumer/main.cpp $pkg_flags -o "$work/consumer-pkg-config"
+
+# 3. libgkt's private dependencies come along: a program that pulls in the CVODE (time evolution)
+#    and GSL (viscoelastic contact) parts of the static library links both ways.
+mkdir -p "$work/private-deps"
+cat >"$work/private-deps/main.cpp" <<'CPP'
+#include <cstdio>
+
+#include "gkt/collision/viscoelastic_contact.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+
+int main() {
+  const auto evolve = &gkt::evolve_homogeneous_cooling;
+  std::printf("%d %g\n", evolve != nullptr, gkt::viscoelastic_restitution_c1());
+}
+CPP
+printf '%s\n' 'cmake_minimum_required(VERSION 3.24)' 'project(private_deps LANGUAGES C CXX)' \
+  'find_package(gkt CONFIG REQUIRED)' 'add_executable(private_deps main.cpp)' \
+  'target_link_libraries(private_deps PRIVATE gkt::gkt)' >"$work/private-deps/CMakeLists.txt"
+cmake -S "$work/private-deps" -B "$work/private-deps/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/private-deps/build" >/dev/null
+"$work/private-deps/build/private_deps" >/dev/null
+# shellcheck disable=SC2086  # the flags are words
+"${CXX:-c++}" -std=c++20 "$work/private-deps/main.cpp" $pkg_flags -o "$work/private-deps/pkg-config"
+"$work/private-deps/pkg-config" >/dev/null
 
 # Every numeric column the consumer prints must equal the same column of `gkt table`.
 compare() {  # consumer.csv table.csv label
@@ -69,4 +104,5 @@ for state in "3 0.8" "2 0.5" "3 1"; do
     compare "$work/consumer.csv" "$work/table.csv" "$(basename "$consumer") d=$d alpha=$a"
   done
 done
-echo "check_install: installed headers, libgkt, gktConfig.cmake and gkt.pc; consumer built with CMake and pkg-config, values equal gkt table (3 states)"
+echo "check_install: $(wc -l <"$work/all_headers.cpp") headers (compiled against the installed tree), libgkt, gkt, gktConfig.cmake and gkt.pc installed;" \
+  "consumer built with CMake and pkg-config, values equal gkt table (3 states); CVODE and GSL users link"
