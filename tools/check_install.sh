@@ -11,7 +11,6 @@
 # of tools/run_tests.sh; without it a Release tree is configured in the temporary directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-root=$PWD
 work=$(mktemp -d "${TMPDIR:-/tmp}/gkt_check_install.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 jobs=$(nproc)
