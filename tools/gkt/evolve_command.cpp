@@ -132,11 +132,17 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   }
 
   EvolutionResult result;
-  if (viscoelastic) {
-    result = evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {a2}, times, rtol, atol);
-  } else {
-    HomogeneousCoolingState hcs(d);
-    result = evolve_homogeneous_cooling(hcs.hierarchy(alpha, k_max), temperature, {a2}, times, rtol, atol);
+  try {
+    if (viscoelastic) {
+      result = evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {a2}, times, rtol, atol);
+    } else {
+      HomogeneousCoolingState hcs(d);
+      result = evolve_homogeneous_cooling(hcs.hierarchy(alpha, k_max), temperature, {a2}, times, rtol, atol);
+    }
+  } catch (const EvolutionFailure& e) {  // "times: …" is the scene's t_end unless it lists times
+    const std::string message = e.what();
+    if (e.tolerances() || t.contains("times")) throw;
+    throw error("t_end" + message.substr(message.find(':')));
   }
   Table table;
   table.model = table_model(viscoelastic);
