@@ -208,6 +208,16 @@ TEST(CliOutput, FullStandardOutputIsAnError) {
   fs::remove_all(dir);
 }
 
+// What --help and --version print is checked too.
+TEST(CliOutput, FullStandardOutputForHelpAndVersion) {
+  if (!fs::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  for (const char* args : {"--help", "--version", "table --help"}) {
+    const CliRun r = run_gkt(args, "/dev/full");
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("gkt: error: standard output: write failed"), std::string::npos) << args << ": " << r.err;
+  }
+}
+
 // ---- scene values ---------------------------------------------------------------------------
 
 TEST(CliScene, NonFiniteNumberNamesTheKey) {
@@ -269,6 +279,18 @@ TEST(CliEvolveHardening, SolverFailureNamesTheKey) {
   const CliRun tight = run_gkt("evolve " + scene + " --set rtol=1e-300 --set atol=1e-300");
   expect_one_line_error(tight, "gkt: error: rtol: CVODE: ");
   EXPECT_NE(tight.err.find("too much accuracy"), std::string::npos) << tight.err;
+  fs::remove_all(dir);
+}
+
+// The output times of gkt evolve are capped like its points.
+TEST(CliEvolveHardening, TimesListIsCapped) {
+  const fs::path dir = scratch("times");
+  std::string text = "model = \"smooth-inelastic\"\nalpha = 0.9\ntimes = [1";
+  for (int i = 2; i <= 1000001; ++i) text += ", " + std::to_string(i);
+  text += "]\n";
+  const CliRun r = run_gkt("evolve " + write_scene(dir, text));
+  expect_one_line_error(r, "times: at most 1000000 output times, got 1000001");
+  EXPECT_LT(r.seconds, 30);
   fs::remove_all(dir);
 }
 

@@ -96,6 +96,9 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     if (t.contains("t_end") || t.contains("points")) throw error("times: give either times or t_end/points");
     const auto* array = list->as_array();
     if (array == nullptr || array->empty()) throw error("times: must be a non-empty list of increasing times > 0");
+    if (array->size() > static_cast<std::size_t>(kMaxPoints))
+      throw error("times: at most " + std::to_string(kMaxPoints) + " output times, got " +
+                  std::to_string(array->size()));
     for (const auto& item : *array) {
       const double v = scene_number(item, "times").to_double();
       if (!(v > 0) || (!times.empty() && !(v > times.back())))

@@ -1,5 +1,6 @@
 // gkt: command-line front end. Exit codes: 0 success, 2 bad input or usage, 1 internal error.
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -94,6 +95,15 @@ void check_subcommand(int argc, char** argv, const CLI::App& app) {
                               ")");
 }
 
+/// Returns `status` if standard output took what --help or --version printed, else reports the
+/// loss (e.g. `gkt --help > /dev/full`) and returns the bad-input status.
+int printed(int status) {
+  std::cout.flush();
+  if (std::cout && std::fflush(stdout) == 0 && std::ferror(stdout) == 0) return status;
+  std::cerr << "gkt: error: standard output: write failed\n";
+  return kBadInput;
+}
+
 /// Returns `message` as one line of bounded length: control characters (a newline in a value)
 /// become spaces and anything beyond 400 characters is cut with "…".
 std::string one_line(std::string message) {
@@ -162,11 +172,11 @@ int run(int argc, char** argv) {
     check_subcommand(argc, argv, app);
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::ParseError& e) {
     std::cerr << "gkt: error: " << one_line(e.what()) << " (see gkt --help)\n";
     return kBadInput;
