@@ -190,6 +190,25 @@ TEST(CliOutput, RegularFileKeepsPermissionsAndSurvivesFailure) {
   fs::remove_all(dir);
 }
 
+// The temporary file is created before the computation; a run ended by SIGTERM removes it (a
+// guard for that early creation: builds that created it only at the end never left one either).
+TEST(CliOutput, TerminatedRunLeavesNoTemporaryFile) {
+  const fs::path dir = scratch("terminated");
+  const std::string scene = write_scene(dir,
+                                        "model = \"mixture\"\norder = 1\n"
+                                        "alpha = { from = 0.5, to = 1, points = 1000000 }\n"
+                                        "[[species]]\nmass = 1\ndiameter = 1\nfraction = 0.5\n"
+                                        "[[species]]\nmass = 2\ndiameter = 1\nfraction = 0.5\n");
+  const std::string cmd =
+      "timeout 1 " + gkt_binary() + " table " + scene + " --output " + (dir / "table.csv").string() + " 2>/dev/null";
+  const int raw = std::system(cmd.c_str());
+  EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 124);  // still computing when terminated
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1U);  // the scene only
+  fs::remove_all(dir);
+}
+
 // A full standard output loses the output: every subcommand says so and exits 2.
 TEST(CliOutput, FullStandardOutputIsAnError) {
   if (!fs::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full";

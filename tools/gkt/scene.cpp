@@ -314,27 +314,22 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     throw error("order: give exactly one of 'order' (an integer in [1, " + std::to_string(model->max_order()) +
                 "]) or 'tolerance' (a number in (0, 1])");
   check_row_count(table, specs);
-  // Ranges that depend on a fixed dimension (packing fraction) are quoted for that dimension.
+  // Ranges that depend on a fixed dimension (packing fraction) are quoted for that dimension:
+  // the scene's spec of a key whose range differs between d = 2 and d = 3.
   const auto scene_specs = model->scene_parameters(fixed);
-  auto in_dimension = [&](int d, const std::string& name) {
+  std::vector<ParameterSpec> per_dimension[2];
+  for (int d : {2, 3}) {
     ParameterPoint point;
     point.numbers["dimension"] = Rational(d);
-    for (const auto& s : model->scene_parameters(point))
-      if (s.name == name) return std::make_pair(s.min, s.max);
-    return std::make_pair(Rational(0), Rational(0));
+    per_dimension[d - 2] = model->scene_parameters(point);
+  }
+  auto find = [](const std::vector<ParameterSpec>& list, const std::string& name) {
+    return std::find_if(list.begin(), list.end(), [&](const ParameterSpec& s) { return s.name == name; });
   };
-  auto check = [&](const ParameterSpec& spec, const Rational& v) {
-    const auto it = std::find_if(scene_specs.begin(), scene_specs.end(),
-                                 [&](const ParameterSpec& s) { return s.name == spec.name; });
-    if (it == scene_specs.end() || !fixed.numbers.contains("dimension") ||
-        in_dimension(2, spec.name) == in_dimension(3, spec.name))
-      return it == scene_specs.end() ? spec.check(v) : it->check(v);
-    try {
-      it->check(v);
-    } catch (const std::invalid_argument&) {
-      throw error(spec.name + ": must be " + it->allowed() + " for dimension = " +
-                  fixed.number("dimension", Rational(3)).to_decimal_string() + ", got " + v.to_decimal_string());
-    }
+  auto dimension_dependent = [&](const std::string& name) {
+    const auto a = find(per_dimension[0], name), b = find(per_dimension[1], name);
+    return fixed.numbers.contains("dimension") && a != per_dimension[0].end() && b != per_dimension[1].end() &&
+           (a->min != b->min || a->max != b->max);
   };
   for (const auto& spec : specs) {
     const auto* node = table.get(spec.name);
@@ -350,7 +345,18 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     if (node->is_string())
       throw error(spec.name + ": must be a number, a list of numbers or { from = a, to = b, points = k }");
     Axis axis = read_axis(spec.name, *node);
-    for (const auto& v : axis.values) check(spec, v);
+    const auto scene_spec = find(scene_specs, spec.name);
+    const ParameterSpec& range = scene_spec == scene_specs.end() ? spec : *scene_spec;
+    const bool per_dimension_range = dimension_dependent(spec.name);
+    for (const auto& v : axis.values) {
+      try {
+        range.check(v);
+      } catch (const std::invalid_argument&) {
+        if (!per_dimension_range) throw;
+        throw error(spec.name + ": must be " + range.allowed() + " for dimension = " +
+                    fixed.number("dimension", Rational(3)).to_decimal_string() + ", got " + v.to_decimal_string());
+      }
+    }
     scene.axes.push_back(std::move(axis));
   }
   return scene;

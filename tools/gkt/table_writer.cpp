@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -84,6 +85,26 @@ std::invalid_argument output_error(const std::string& path, const std::string& w
 
 std::string reason(int error_number) { return std::strerror(error_number); }
 
+/// The temporary file of the running command, removed if SIGINT, SIGTERM or SIGHUP ends it (the
+/// handler may only use async-signal-safe calls: unlink on a fixed buffer, then the default action).
+char pending_temporary[4096];
+volatile std::sig_atomic_t pending = 0;
+
+extern "C" void remove_pending_temporary(int signal_number) {
+  if (pending != 0) ::unlink(pending_temporary);
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+void guard_temporary(const std::string& path) {
+  if (path.size() >= sizeof pending_temporary) return;  // cannot happen within PATH_MAX; then unguarded
+  std::memcpy(pending_temporary, path.c_str(), path.size() + 1);
+  pending = 1;
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal_number, remove_pending_temporary);
+}
+
+void release_temporary() { pending = 0; }
+
 /// Writes all of `content` to `descriptor`; returns 0 or the errno of the failure.
 int write_all(int descriptor, const std::string& content) {
   std::size_t done = 0;
@@ -148,11 +169,13 @@ OutputTarget::OutputTarget(std::string path) : path_(std::move(path)) {
   if (descriptor_ < 0)
     throw output_error(path_, "cannot create a file in folder '" + folder + "' (" + reason(errno) + ")");
   temporary_ = pattern;
+  guard_temporary(temporary_);
 }
 
 OutputTarget::~OutputTarget() {
   if (descriptor_ >= 0) ::close(descriptor_);
   if (!temporary_.empty()) ::unlink(temporary_.c_str());
+  release_temporary();
 }
 
 void OutputTarget::write(const std::string& content) {
@@ -186,6 +209,7 @@ void OutputTarget::write(const std::string& content) {
       if (failure != 0) throw output_error(path_, "write failed (" + reason(failure) + "); the file is unchanged");
       if (::rename(temporary_.c_str(), path_.c_str()) != 0)
         throw output_error(path_, "cannot replace (" + reason(errno) + "); the file is unchanged");
+      release_temporary();
       temporary_.clear();
       return;
     }
