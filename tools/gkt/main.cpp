@@ -1,4 +1,4 @@
-// gkt: command-line front end. Exit codes: 0 success, 2 bad input or usage, 1 internal error.
+// gkt: command-line front end. Exit codes: 0 success, 2 bad input, usage or lost output, 1 internal error.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>

@@ -206,9 +206,9 @@ void OutputTarget::write(const std::string& content) {
       const int closed = ::close(descriptor_) == 0 ? 0 : errno;
       descriptor_ = -1;
       if (failure == 0) failure = closed;
-      if (failure != 0) throw output_error(path_, "write failed (" + reason(failure) + "); the file is unchanged");
+      if (failure != 0) throw output_error(path_, "write failed (" + reason(failure) + "); nothing was written");
       if (::rename(temporary_.c_str(), path_.c_str()) != 0)
-        throw output_error(path_, "cannot replace (" + reason(errno) + "); the file is unchanged");
+        throw output_error(path_, "cannot replace (" + reason(errno) + "); nothing was written");
       release_temporary();
       temporary_.clear();
       return;
