@@ -619,7 +619,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "model = \"smooth-inelastic\"\ndimension = 2\npacking_fraction = 0.71\norder = 1\n", "",
                  "packing_fraction: must be a number in [0, 0.7]"},
         BadInput{"packing_fraction_negative", "model = \"smooth-inelastic\"\npacking_fraction = -0.1\norder = 1\n", "",
-                 "packing_fraction: must be a number in [0, 0.7], got -0.1"},
+                 "packing_fraction: must be a number in [0, 0.5] for dimension = 3, got -0.1"},
         BadInput{"unknown_pair_correlation",
                  "model = \"smooth-inelastic\"\npacking_fraction = 0.2\npair_correlation = \"py\"\norder = 1\n", "",
                  "pair_correlation: must be one of \"carnahan-starling\", got \"py\""},

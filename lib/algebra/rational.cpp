@@ -1,6 +1,7 @@
 #include "gkt/algebra/rational.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <ostream>
 #include <stdexcept>
@@ -66,6 +67,14 @@ std::string Rational::to_string() const {
 }
 
 std::string Rational::to_decimal_string() const {
+  constexpr long kMaxEchoBits = 80;  // about 24 decimal digits
+  if (bits() > kMaxEchoBits) {
+    // 1e300 is "1e+300", not 301 digits: the shortest decimal that reads back as the same double,
+    // which is what the user typed when the number came from a scene.
+    char buffer[32];
+    const auto r = std::to_chars(buffer, buffer + sizeof buffer, to_double());
+    return {buffer, r.ptr};
+  }
   // q = 2^a 5^b  ⇒  |p|/q = |p| 2^(k−a) 5^(k−b) / 10^k with k = max(a, b).
   fmpz_t rest, factor;
   fmpz_init(rest);

@@ -107,6 +107,17 @@ void check(int flag, const char* what) {
   if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + what + " failed (flag " + std::to_string(flag) + ")");
 }
 
+/// CVODE's error handler: keeps the last error message (one line) instead of printing it.
+void keep_message(int error_code, const char*, const char*, char* message, void* data) {
+  if (error_code >= 0) return;  // warnings: the counters and the result tell the story
+  std::string& kept = *static_cast<std::string*>(data);
+  kept = message;
+  kept.erase(0, kept.find_first_not_of(" \n"));
+  for (char& c : kept)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!kept.empty() && (kept.back() == ' ' || kept.back() == '.')) kept.pop_back();
+}
+
 }  // namespace
 
 namespace {
@@ -132,6 +143,8 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
 
   const std::unique_ptr<void, CvodeDeleter> cvode(CVodeCreate(CV_BDF, raw_context));
   if (!cvode) throw std::runtime_error("CVODE: CVodeCreate failed");
+  std::string cvode_message;
+  check(CVodeSetErrHandlerFn(cvode.get(), keep_message, &cvode_message), "CVodeSetErrHandlerFn");
   check(CVodeInit(cvode.get(), rates, 0.0, y.get()), "CVodeInit");
   check(CVodeSStolerances(cvode.get(), rtol, atol), "CVodeSStolerances");
   check(CVodeSetUserData(cvode.get(), &problem), "CVodeSetUserData");
@@ -145,7 +158,13 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
   EvolutionResult result;
   for (double target : times) {
     sunrealtype reached = 0;
-    check(CVode(cvode.get(), target, y.get(), &reached, CV_NORMAL), "CVode");
+    const int flag = CVode(cvode.get(), target, y.get(), &reached, CV_NORMAL);
+    if (flag < 0) {
+      const std::string what =
+          "CVODE: " + (cvode_message.empty() ? "CVode failed (flag " + std::to_string(flag) + ")" : cvode_message);
+      if (flag == CV_TOO_MUCH_ACC) throw EvolutionFailure("rtol: " + what + "; use rtol >= 1e-14", flag, reached);
+      throw EvolutionFailure("times: " + what + "; integrate to an earlier time or use a smaller atol", flag, reached);
+    }
     EvolutionSample s;
     s.time = reached;
     s.temperature = yv[0];
@@ -170,6 +189,8 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
 }
 
 }  // namespace
+
+bool EvolutionFailure::tolerances() const { return flag_ == CV_TOO_MUCH_ACC; }
 
 EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
                                            const std::vector<double>& initial_a, const std::vector<double>& times,

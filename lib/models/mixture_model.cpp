@@ -116,6 +116,15 @@ class MixtureModel final : public TransportModel {
                          "restitution coefficient of the pair (i, j)"));
     return p;
   }
+  /// At a fixed dimension the packing fraction is limited to that dimension's range.
+  [[nodiscard]] std::vector<ParameterSpec> scene_parameters(const ParameterPoint& fixed) const override {
+    auto specs = parameters();
+    const Rational dim = fixed.number("dimension", Rational(0));
+    if (dim == Rational(2) || dim == Rational(3))
+      for (auto& spec : specs)
+        if (spec.name == "packing_fraction") spec.max = max_packing_fraction(dim == Rational(2) ? 2 : 3);
+    return specs;
+  }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,

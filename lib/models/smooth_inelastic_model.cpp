@@ -117,6 +117,13 @@ class SmoothInelasticModel final : public TransportModel {
             {"pair_correlation", ParameterSpec::Kind::choice, Rational(0), Rational(0), true, true, Rational(0),
              "contact value chi(phi) of the pair correlation", pair_correlation_names()}};
   }
+  /// At a fixed dimension the packing fraction is limited to that dimension's range.
+  [[nodiscard]] std::vector<ParameterSpec> scene_parameters(const ParameterPoint& fixed) const override {
+    auto specs = parameters();
+    const Rational dim = fixed.number("dimension", Rational(0));
+    if (dim == Rational(2) || dim == Rational(3)) specs[4].max = max_packing_fraction(dim == Rational(2) ? 2 : 3);
+    return specs;
+  }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,

@@ -96,6 +96,9 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
     if (t.contains("t_end") || t.contains("points")) throw error("times: give either times or t_end/points");
     const auto* array = list->as_array();
     if (array == nullptr || array->empty()) throw error("times: must be a non-empty list of increasing times > 0");
+    if (array->size() > static_cast<std::size_t>(kMaxPoints))
+      throw error("times: at most " + std::to_string(kMaxPoints) + " output times, got " +
+                  std::to_string(array->size()));
     for (const auto& item : *array) {
       const double v = scene_number(item, "times").to_double();
       if (!(v > 0) || (!times.empty() && !(v > times.back())))
@@ -132,11 +135,17 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   }
 
   EvolutionResult result;
-  if (viscoelastic) {
-    result = evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {a2}, times, rtol, atol);
-  } else {
-    HomogeneousCoolingState hcs(d);
-    result = evolve_homogeneous_cooling(hcs.hierarchy(alpha, k_max), temperature, {a2}, times, rtol, atol);
+  try {
+    if (viscoelastic) {
+      result = evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {a2}, times, rtol, atol);
+    } else {
+      HomogeneousCoolingState hcs(d);
+      result = evolve_homogeneous_cooling(hcs.hierarchy(alpha, k_max), temperature, {a2}, times, rtol, atol);
+    }
+  } catch (const EvolutionFailure& e) {  // "times: …" is the scene's t_end unless it lists times
+    const std::string message = e.what();
+    if (e.tolerances() || t.contains("times")) throw;
+    throw error("t_end" + message.substr(message.find(':')));
   }
   Table table;
   table.model = table_model(viscoelastic);

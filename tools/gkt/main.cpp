@@ -1,7 +1,9 @@
-// gkt: command-line front end. Exit codes: 0 success, 2 bad input or usage, 1 internal error.
+// gkt: command-line front end. Exit codes: 0 success, 2 bad input, usage or lost output, 1 internal error.
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -25,6 +27,7 @@ const std::vector<std::string> kStabilityCoefficients{"critical_wavenumber_shear
 
 int run_table(const std::string& scene_path, const std::vector<std::string>& overrides, const std::string& format,
               const std::string& output, bool exact, bool stability = false) {
+  gkt::cli::OutputTarget target(output);  // refused before any work if it cannot be written
   auto scene = gkt::cli::load_scene(scene_path, overrides);
   if (stability && !scene.coefficients_given) {
     const auto names = gkt::make_transport_model(scene.model)->coefficient_names();
@@ -35,22 +38,85 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
   }
   std::vector<std::string> warnings;
   const auto table = gkt::cli::compute_table(scene, {exact}, warnings);
-  const std::string content = format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table);
-  gkt::cli::write_output(output, content);
+  target.write(format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table));
   for (const auto& w : warnings) std::cerr << "gkt: warning: " << w << "\n";
   return 0;
 }
 
 int run_models() {
+  std::ostringstream out;
   for (const auto& name : gkt::transport_model_names()) {
     const auto model = gkt::make_transport_model(name);
-    std::cout << name << ": " << model->description() << "\n  coefficients:";
-    for (const auto& c : model->coefficient_names()) std::cout << " " << c;
-    std::cout << "\n  parameters:";
-    for (const auto& p : model->parameters()) std::cout << " " << p.name << " (" << p.allowed() << ")";
-    std::cout << "\n  order: an integer in [1, " << model->max_order() << "] or tolerance in (0, 1]\n";
+    out << name << ": " << model->description() << "\n  coefficients:";
+    for (const auto& c : model->coefficient_names()) out << " " << c;
+    out << "\n  parameters:";
+    for (const auto& p : model->parameters()) out << " " << p.name << " (" << p.allowed() << ")";
+    out << "\n  order: an integer in [1, " << model->max_order() << "] or tolerance in (0, 1]\n";
   }
+  gkt::cli::OutputTarget("").write(out.str());
   return 0;
+}
+
+/// Returns the number of single-character edits (Levenshtein) between a and b.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+/// Throws "unknown subcommand '<word>'" (with the nearest name if it is a likely typo) when the
+/// first argument is neither an option nor a subcommand: CLI11 would say "A subcommand is required".
+void check_subcommand(int argc, char** argv, const CLI::App& app) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  const std::string word = argv[1];
+  std::string nearest;
+  std::size_t best = 3;  // suggest only within two edits
+  for (const auto* sub : app.get_subcommands({})) {
+    if (sub->get_name() == word) return;
+    const std::size_t d = edit_distance(word, sub->get_name());
+    if (d < best) {
+      best = d;
+      nearest = sub->get_name();
+    }
+  }
+  std::string names;
+  for (const auto* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
+  throw std::invalid_argument("unknown subcommand '" + gkt::cli::quote_short(word) + "'" +
+                              (nearest.empty() ? "" : "; did you mean '" + nearest + "'?") + " (subcommands: " + names +
+                              ")");
+}
+
+/// Returns `status` if standard output took what --help or --version printed, else reports the
+/// loss (e.g. `gkt --help > /dev/full`) and returns the bad-input status.
+int printed(int status) {
+  std::cout.flush();
+  if (std::cout && std::fflush(stdout) == 0 && std::ferror(stdout) == 0) return status;
+  std::cerr << "gkt: error: standard output: write failed\n";
+  return kBadInput;
+}
+
+/// Returns `message` as one line of bounded length: control characters (a newline in a value)
+/// become spaces and anything beyond 400 characters is cut with "…".
+std::string one_line(std::string message) {
+  for (char& c : message)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  constexpr std::size_t kMaxLength = 400;
+  if (message.size() > kMaxLength) {
+    std::size_t cut = kMaxLength;
+    while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+    message.resize(cut);
+    message += "…";
+  }
+  return message;
 }
 
 int run(int argc, char** argv) {
@@ -103,15 +169,19 @@ int run(int argc, char** argv) {
   app.add_subcommand("models", "List the models with their coefficients and parameters");
 
   try {
+    check_subcommand(argc, argv, app);
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return printed(app.exit(e));
   } catch (const CLI::ParseError& e) {
-    std::cerr << "gkt: error: " << e.what() << " (see gkt --help)\n";
+    std::cerr << "gkt: error: " << one_line(e.what()) << " (see gkt --help)\n";
+    return kBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "gkt: error: " << one_line(e.what()) << " (see gkt --help)\n";
     return kBadInput;
   }
 
@@ -120,21 +190,21 @@ int run(int argc, char** argv) {
     if (stability->parsed())
       return run_table(stability_scene, stability_overrides, stability_format, stability_output, false, true);
     if (evolve->parsed()) {
+      gkt::cli::OutputTarget target(evolve_output);
       std::string counters;
       const auto table = gkt::cli::evolve(evolve_scene, evolve_overrides, counters);
-      gkt::cli::write_output(evolve_output,
-                             evolve_format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table));
+      target.write(evolve_format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table));
       std::cerr << "gkt: " << counters << "\n";
       return 0;
     }
     if (formula->parsed()) {
-      gkt::cli::write_output(formula_output, gkt::cli::formula(formula_scene, formula_overrides, coefficient,
-                                                               formula_order, formula_format));
+      gkt::cli::OutputTarget target(formula_output);
+      target.write(gkt::cli::formula(formula_scene, formula_overrides, coefficient, formula_order, formula_format));
       return 0;
     }
     return run_models();
   } catch (const std::invalid_argument& e) {
-    std::cerr << "gkt: error: " << e.what() << "\n";
+    std::cerr << "gkt: error: " << one_line(e.what()) << "\n";
     return kBadInput;
   }
 }
@@ -145,7 +215,7 @@ int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {  // anything but bad input is a defect
-    std::cerr << "gkt: internal error: " << e.what() << "\n";
+    std::cerr << "gkt: internal error: " << one_line(e.what()) << "\n";
     return 1;
   }
 }

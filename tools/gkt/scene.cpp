@@ -3,11 +3,13 @@
 #include "table_writer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 #include <toml++/toml.h>
@@ -16,7 +18,8 @@ namespace gkt::cli {
 
 namespace {
 
-constexpr long kMaxSweepPoints = 1000000;
+constexpr long kMaxSweepPoints = 1000000;  // rows of a table: the product over every swept key
+constexpr std::size_t kMaxSceneBytes = 64UL << 20;
 
 std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
 
@@ -69,8 +72,12 @@ Axis read_axis(const std::string& key, const toml::node& node) {
 }
 
 void apply_override(toml::table& scene, const std::string& assignment) {
+  if (assignment.find_first_of("\n\r") != std::string::npos)
+    throw error("--set: KEY=VALUE must be one line (a second line would be dropped), got '" + quote_short(assignment) +
+                "'");
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0) throw error("--set: expected KEY=VALUE, got '" + assignment + "'");
+  if (eq == std::string::npos || eq == 0)
+    throw error("--set: expected KEY=VALUE, got '" + quote_short(assignment) + "'");
   std::string key = assignment.substr(0, eq);
   while (!key.empty() && key.back() == ' ') key.pop_back();
   const std::string value = assignment.substr(eq + 1);
@@ -152,16 +159,74 @@ void flatten_mixture(toml::table& scene) {
   scene.erase("alpha");
 }
 
+/// Returns the keys with their species/pair indices collapsed: mass_1 … mass_4 become mass_i,
+/// alpha_1_2 … alpha_4_4 become alpha_i_j (a short list of valid keys).
+std::vector<std::string> indexed_keys_collapsed(const std::set<std::string>& keys) {
+  std::vector<std::string> out;
+  for (const auto& key : keys) {
+    std::string base = key;
+    int indices = 0;
+    for (;;) {
+      const auto underscore = base.rfind('_');
+      if (underscore == std::string::npos || underscore + 1 == base.size() ||
+          base.find_first_not_of("0123456789", underscore + 1) != std::string::npos)
+        break;
+      base.resize(underscore);
+      ++indices;
+    }
+    if (indices == 1) base += "_i";
+    if (indices == 2) base += "_i_j";
+    if (indices > 2) base = key;
+    if (std::find(out.begin(), out.end(), base) == out.end()) out.push_back(base);
+  }
+  return out;
+}
+
+/// Refuses, before any value is read, a scene whose sweeps make more than kMaxSweepPoints rows:
+/// the product over every swept key (lists and ranges), not each key alone.
+void check_row_count(const toml::table& table, const std::vector<ParameterSpec>& specs) {
+  double rows = 1;
+  std::string keys, factors;
+  for (const auto& spec : specs) {
+    const auto* node = table.get(spec.name);
+    if (node == nullptr || spec.kind == ParameterSpec::Kind::choice) continue;
+    double count = 1;
+    if (const auto* array = node->as_array()) count = static_cast<double>(array->size());
+    if (const auto* range = node->as_table())
+      if (const auto* points = range->get("points"); points != nullptr && points->is_integer())
+        count = std::max<double>(1, static_cast<double>(points->as_integer()->get()));
+    if (count <= 1) continue;
+    rows *= count;
+    keys += (keys.empty() ? "" : ", ") + spec.name;
+    factors += (factors.empty() ? "" : " x ") + std::to_string(static_cast<long long>(count));
+  }
+  if (rows > static_cast<double>(kMaxSweepPoints)) {
+    char total[32];
+    std::snprintf(total, sizeof total, "%.3g", rows);
+    throw error(keys + ": the sweep makes " + total + " rows (" + factors + "); at most " +
+                std::to_string(kMaxSweepPoints) + " rows per table");
+  }
+}
+
 }  // namespace
 
 toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored))
+    throw error("scene: '" + path + "' is a directory, not a scene file (TOML)");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw error("scene: cannot open '" + path + "'");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;  // read in bounded pieces: /dev/zero or a huge file is refused, not read forever
+  std::array<char, 1 << 16> piece{};
+  while (in.read(piece.data(), piece.size()) || in.gcount() > 0) {
+    text.append(piece.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSceneBytes)
+      throw error("scene: '" + path + "' is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MB");
+  }
+  if (in.bad()) throw error("scene: cannot read '" + path + "'");
   toml::table table;
   try {
-    table = toml::parse(text.str(), path);
+    table = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     throw error("scene: " + path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
   }
@@ -178,7 +243,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     throw error("model: required string; valid models: " + join(transport_model_names(), "\""));
   }
   scene.model = model_node->as_string()->get();
-  const auto model = make_transport_model(scene.model);  // throws on unknown names
+  const auto models = transport_model_names();
+  if (std::find(models.begin(), models.end(), scene.model) == models.end())
+    throw error("model: unknown model \"" + quote_short(scene.model) + "\"; valid models: " + join(models, "\""));
+  const auto model = make_transport_model(scene.model);
 
   std::vector<ParameterSpec> specs = model->parameters();
   specs.push_back({"order",
@@ -200,20 +268,24 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                    "target estimated truncation error",
                    {}});
 
+  // The number of species first: a fifth [[species]] table is "at most 4 species", not an
+  // unknown key diameter_5.
+  for (const auto& spec : specs)
+    if (spec.name == "species" && table.contains("species")) spec.check(scene_number(*table.get("species"), "species"));
   std::set<std::string> valid_keys{"model", "coefficients"};
   for (const auto& s : specs) valid_keys.insert(s.name);
   for (const auto& [key, value] : table) {
     const std::string k(key.str());
     if (!valid_keys.contains(k)) {
-      throw error(k + ": unknown key for model \"" + scene.model +
-                  "\"; valid keys: " + join({valid_keys.begin(), valid_keys.end()}));
+      throw error(quote_short(k) + ": unknown key for model \"" + scene.model +
+                  "\"; valid keys: " + join(indexed_keys_collapsed(valid_keys)));
     }
   }
 
   ParameterPoint fixed;  // single-valued numbers: what the model's coefficient list may depend on
   for (const auto& [key, value] : table)
     if (value.is_integer() || value.is_floating_point())
-      fixed.numbers[std::string(key.str())] = scene_number(value, "");
+      fixed.numbers[std::string(key.str())] = scene_number(value, std::string(key.str()));
   for (const auto& spec : specs)  // a key not given is single-valued too: its default
     if (spec.kind != ParameterSpec::Kind::choice && !table.contains(spec.name))
       fixed.numbers[spec.name] = spec.default_value;
@@ -225,9 +297,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (!item.is_string()) throw error("coefficients: must be a list of strings");
       const std::string name = item.as_string()->get();
       if (std::find(names.begin(), names.end(), name) == names.end()) {
-        throw error("coefficients: unknown coefficient '" + name + "' for model \"" + scene.model +
+        throw error("coefficients: unknown coefficient '" + quote_short(name) + "' for model \"" + scene.model +
                     "\"; valid: " + join(names));
       }
+      if (std::find(scene.coefficients.begin(), scene.coefficients.end(), name) != scene.coefficients.end())
+        throw error("coefficients: '" + name + "' is listed twice");
       scene.coefficients.push_back(name);
     }
     scene.coefficients_given = true;
@@ -239,20 +313,50 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if ((has_order && has_tolerance) || (require_order && !has_order && !has_tolerance))
     throw error("order: give exactly one of 'order' (an integer in [1, " + std::to_string(model->max_order()) +
                 "]) or 'tolerance' (a number in (0, 1])");
+  check_row_count(table, specs);
+  // Ranges that depend on a fixed dimension (packing fraction) are quoted for that dimension:
+  // the scene's spec of a key whose range differs between d = 2 and d = 3.
+  const auto scene_specs = model->scene_parameters(fixed);
+  std::vector<ParameterSpec> per_dimension[2];
+  for (int d : {2, 3}) {
+    ParameterPoint point;
+    point.numbers["dimension"] = Rational(d);
+    per_dimension[d - 2] = model->scene_parameters(point);
+  }
+  auto find = [](const std::vector<ParameterSpec>& list, const std::string& name) {
+    return std::find_if(list.begin(), list.end(), [&](const ParameterSpec& s) { return s.name == name; });
+  };
+  auto dimension_dependent = [&](const std::string& name) {
+    const auto a = find(per_dimension[0], name), b = find(per_dimension[1], name);
+    return fixed.numbers.contains("dimension") && a != per_dimension[0].end() && b != per_dimension[1].end() &&
+           (a->min != b->min || a->max != b->max);
+  };
   for (const auto& spec : specs) {
     const auto* node = table.get(spec.name);
     if (node == nullptr) continue;
     if (spec.kind == ParameterSpec::Kind::choice) {
       if (!node->is_string()) throw error(spec.name + ": must be " + spec.allowed());
       const std::string value = node->as_string()->get();
-      spec.check(value);
+      if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end())
+        throw error(spec.name + ": must be " + spec.allowed() + ", got \"" + quote_short(value) + "\"");
       scene.choices[spec.name] = value;
       continue;
     }
     if (node->is_string())
       throw error(spec.name + ": must be a number, a list of numbers or { from = a, to = b, points = k }");
     Axis axis = read_axis(spec.name, *node);
-    for (const auto& v : axis.values) spec.check(v);
+    const auto scene_spec = find(scene_specs, spec.name);
+    const ParameterSpec& range = scene_spec == scene_specs.end() ? spec : *scene_spec;
+    const bool per_dimension_range = dimension_dependent(spec.name);
+    for (const auto& v : axis.values) {
+      try {
+        range.check(v);
+      } catch (const std::invalid_argument&) {
+        if (!per_dimension_range) throw;
+        throw error(spec.name + ": must be " + range.allowed() + " for dimension = " +
+                    fixed.number("dimension", Rational(3)).to_decimal_string() + ", got " + v.to_decimal_string());
+      }
+    }
     scene.axes.push_back(std::move(axis));
   }
   return scene;

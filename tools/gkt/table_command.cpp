@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <stdexcept>
@@ -44,9 +45,19 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
   table.columns.push_back("order");
   table.numeric.push_back(true);
 
+  // Values whose estimated error exceeds their magnitude: counted per coefficient, the worst
+  // (largest error/|value|) kept, one warning line each at the end.
+  struct Unreliable {
+    std::size_t rows = 0;
+    double ratio = -1, value = 0, error = 0;
+    std::string where;
+  };
+  std::vector<Unreliable> unreliable(scene.coefficients.size());
+  std::size_t row_count = 0;
+
   // Cartesian product of the axes, last axis fastest.
   std::vector<std::size_t> index(scene.axes.size(), 0);
-  for (;;) {
+  for (bool more = true; more;) {
     ParameterPoint parameters;
     parameters.choices = scene.choices;
     OrderRequest request;
@@ -101,18 +112,45 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
     }
     for (const auto& v : values)
       row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double()) : "nan");
-    row.push_back(std::to_string(values.empty() ? request.order : values.front().order));
+    const int row_order = values.empty() ? request.order : values.front().order;
+    row.push_back(std::to_string(row_order));
     table.rows.push_back(std::move(row));
-
-    std::size_t a = scene.axes.size();
-    while (a > 0) {
-      --a;
-      if (++index[a] < scene.axes[a].values.size()) break;
-      index[a] = 0;
-      if (a == 0) return table;
+    ++row_count;
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      const auto& v = values[k];
+      if (!v.defined || !v.error_estimated || !(v.error > v.value.abs())) continue;
+      auto& u = unreliable[k];
+      ++u.rows;
+      const double value = v.value.to_double(), error = v.error.to_double();
+      const double ratio = value == 0 ? HUGE_VAL : error / std::abs(value);
+      if (ratio > u.ratio) {
+        u.ratio = ratio;
+        u.value = value;
+        u.error = error;
+        u.where.clear();
+        for (std::size_t a = 0; a < scene.axes.size(); ++a)
+          if (scene.axes[a].swept && scene.axes[a].key != "order")
+            u.where += scene.axes[a].key + "=" + format_parameter(scene.axes[a].values[index[a]]) + ", ";
+        u.where += "order " + std::to_string(row_order);
+      }
     }
-    if (scene.axes.empty()) return table;
+
+    more = false;
+    for (std::size_t a = scene.axes.size(); a > 0 && !more;) {
+      --a;
+      more = ++index[a] < scene.axes[a].values.size();
+      if (!more) index[a] = 0;
+    }
   }
+  for (std::size_t k = 0; k < unreliable.size(); ++k) {
+    const auto& u = unreliable[k];
+    if (u.rows == 0) continue;
+    warnings.push_back(scene.coefficients[k] + ": estimated error above the value in " + std::to_string(u.rows) +
+                       " of " + std::to_string(row_count) + (row_count == 1 ? " row" : " rows") +
+                       " (worst: " + format_error(u.value) + " +- " + format_error(u.error) + " at " + u.where +
+                       "); raise the order or read these values as unknown");
+  }
+  return table;
 }
 
 }  // namespace gkt::cli

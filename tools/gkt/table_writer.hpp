@@ -21,13 +21,47 @@ std::string format_number(double x);
 /// Returns the items joined by ", ", each wrapped in `quote` (e.g. "\"" for names).
 std::string join(const std::vector<std::string>& items, const std::string& quote = "");
 
+/// Returns `text` as it is echoed in a message: at most 40 characters, then "…" (a 1 MB value
+/// never comes back whole).
+std::string quote_short(const std::string& text);
+
 /// Returns the table as CSV (header line, one line per row).
 std::string to_csv(const Table& t);
 /// Returns the table as JSON: {"model": …, "columns": […], "rows": [{column: value, …}, …]}.
 std::string to_json(const Table& t);
 
-/// Writes `content` to `path` atomically (temporary file in the same directory, then
-/// rename), or to standard output if `path` is empty. Throws std::runtime_error on failure.
-void write_output(const std::string& path, const std::string& content);
+/// Where a command's output goes: standard output (empty path) or the file `path`. Built before
+/// any computation, so that a path that cannot be written is refused first:
+/// - a regular file or a new name: a temporary file beside it, created now, renamed over the
+///   target only when the whole content is written (the target keeps its permissions);
+/// - a FIFO or a character device (/dev/null, a terminal; also through a symbolic link such as
+///   /dev/stdout): written directly, never replaced;
+/// - anything else (a symbolic link to a file, a directory, a block device, a socket, a missing
+///   or unwritable folder): refused.
+/// Every error is std::invalid_argument "<path>: …" (one line, the user's path; never the
+/// temporary file's); on any error the target is untouched and the temporary file removed.
+class OutputTarget {
+ public:
+  explicit OutputTarget(std::string path);
+  ~OutputTarget();
+  OutputTarget(const OutputTarget&) = delete;
+  OutputTarget& operator=(const OutputTarget&) = delete;
+  OutputTarget(OutputTarget&&) = delete;
+  OutputTarget& operator=(OutputTarget&&) = delete;
+
+  /// Writes `content` and commits it (flushes standard output, or renames the temporary file into
+  /// place). Throws std::invalid_argument "<path>: write failed (<reason>)" or "standard output:
+  /// write failed (<reason>)" when anything is lost (a full disk, /dev/full, a closed stream).
+  void write(const std::string& content);
+
+ private:
+  enum class Kind { standard_output, replace, direct };
+  std::string path_;
+  Kind kind_ = Kind::standard_output;
+  std::string temporary_;  ///< Kind::replace: the temporary file beside the target
+  int descriptor_ = -1;    ///< Kind::replace: open on temporary_
+  unsigned mode_ = 0;      ///< permissions the committed file gets
+  long owner_ = -1, group_ = -1;
+};
 
 }  // namespace gkt::cli

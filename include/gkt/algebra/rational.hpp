@@ -89,7 +89,9 @@ class Rational {
   /// "p/q" or "p" in lowest terms.
   [[nodiscard]] std::string to_string() const;
   /// The exact terminating decimal ("0.5001", "-1.25", "3") when the denominator is 2^a 5^b, else
-  /// "p/q": how a number the user typed as a decimal is echoed back in messages.
+  /// "p/q": how a number the user typed as a decimal is echoed back in messages. Numbers of more
+  /// than 80 bits (numerator plus denominator) are written as the shortest decimal of the nearest
+  /// double ("1e+300", "1e-30"), never as hundreds of digits.
   [[nodiscard]] std::string to_decimal_string() const;
   /// Number of bits of numerator plus denominator (a measure of size).
   [[nodiscard]] long bits() const;

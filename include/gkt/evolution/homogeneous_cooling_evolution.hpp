@@ -6,6 +6,8 @@
 // (ν of theory.md (5.3)); `collisions` counts collisions per particle.
 #pragma once
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
@@ -26,6 +28,27 @@ struct EvolutionCounters {
   long steps = 0, rhs_evaluations = 0, jacobian_evaluations = 0, error_test_failures = 0, nonlinear_iterations = 0;
 };
 
+/// CVODE stopped before a requested time: the times or tolerances asked for are beyond what it
+/// resolves in double precision (an input error, hence std::invalid_argument). what() is one line
+/// naming the parameter ("rtol: …" when rtol/atol ask for more accuracy than double precision
+/// gives, CV_TOO_MUCH_ACC; "times: …" when a time cannot be reached, e.g. because the temperature
+/// fell below what atol resolves) with CVODE's own message; CVODE itself prints nothing.
+class EvolutionFailure : public std::invalid_argument {
+ public:
+  EvolutionFailure(const std::string& message, int flag, double time)
+      : std::invalid_argument(message), flag_(flag), time_(time) {}
+  /// Returns CVODE's return code (negative).
+  [[nodiscard]] int flag() const { return flag_; }
+  /// Returns τ where the integration stopped.
+  [[nodiscard]] double time() const { return time_; }
+  /// Returns true if the tolerances were the cause (too much accuracy requested).
+  [[nodiscard]] bool tolerances() const;
+
+ private:
+  int flag_;
+  double time_;
+};
+
 /// The samples at the requested times and the counters.
 struct EvolutionResult {
   std::vector<EvolutionSample> samples;
@@ -41,7 +64,8 @@ EvolutionResult evolve_viscoelastic_cooling(const class ViscoelasticHierarchy& h
 
 /// Returns the trajectory from T/T0 = temperature0 and cumulants initial_a (a_2 … a_K; missing
 /// ones 0) at the increasing positive `times`, with CVODE tolerances rtol (relative) and atol
-/// (absolute). Throws std::invalid_argument on bad input, std::runtime_error if CVODE fails.
+/// (absolute). Throws std::invalid_argument on bad input, EvolutionFailure (an invalid_argument) if
+/// CVODE stops early, std::runtime_error if CVODE cannot even be set up.
 EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
                                            const std::vector<double>& initial_a, const std::vector<double>& times,
                                            double rtol, double atol);

@@ -81,6 +81,12 @@ class TransportModel {
   }
   /// Returns the model's parameters (scene keys) with their ranges.
   [[nodiscard]] virtual std::vector<ParameterSpec> parameters() const = 0;
+  /// Returns the parameters with the ranges that hold at a scene's fixed parameters (e.g. the
+  /// packing-fraction limit of a fixed dimension); by default parameters().
+  [[nodiscard]] virtual std::vector<ParameterSpec> scene_parameters(const ParameterPoint& fixed) const {
+    static_cast<void>(fixed);
+    return parameters();
+  }
   /// Returns the highest Sonine order accepted.
   [[nodiscard]] virtual int max_order() const = 0;
   /// Returns the requested coefficients at one parameter point (reduced as in
