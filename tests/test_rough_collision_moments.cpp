@@ -2,7 +2,7 @@
 //  (1) Monte Carlo with error bars, the collision applied in vector form from the impulse
 //      (tests/rough_monte_carlo.hpp), d = 3 and d = 2, moments up to degree 4 in the velocities;
 //  (2) the smooth engine at β = −1 (exact equality);
-//  (3) closed forms of the energy change per collision derived by hand (theory.md (19.8)–(19.10)),
+//  (3) closed forms of the energy change per collision derived by hand (theory.md (19.6)–(19.8)),
 //      numeric and with θ symbolic.
 #include <gtest/gtest.h>
 
@@ -199,7 +199,7 @@ std::vector<RoughForm> energy_change_forms(const Rational& kappa) {
 
 }  // namespace
 
-// Hand-derived (theory.md (19.8)–(19.10)), with η_n = (1+α)/2, η_t = (1+β)κ/(2(1+κ)), τ = θ/κ:
+// Hand-derived (theory.md (19.6)–(19.8)), with η_n = (1+α)/2, η_t = (1+β)κ/(2(1+κ)), τ = θ/κ:
 //   ⟨ΔE⟩    = −(1 − α²) − ½ (1 − β²) (κ/(1+κ)) (d−1)(1 + τ),
 //   ⟨Δv1²⟩  = −2η_n(1−η_n) − (d−1) η_t (1 − η_t) + (d−1) η_t² τ,
 //   ⟨Δw1²⟩  = (d−1)(η_t/κ) [−τ + (η_t/κ)(1 + τ)].
@@ -254,4 +254,16 @@ TEST(RoughCollisionMoments, SymbolicTemperatureRatio) {
       }
     }
   }
+}
+
+TEST(RoughCollisionMoments, RejectsBadParametersAndMixedForms) {
+  EXPECT_THROW(gkt::rough_parameters(3, Rational(1, 2), Rational(3, 2), Rational(2, 5), Rational(1)),
+               std::invalid_argument);
+  EXPECT_THROW(gkt::rough_parameters(3, Rational(1, 2), Rational(0), Rational(0), Rational(1)), std::invalid_argument);
+  EXPECT_THROW(gkt::rough_parameters(3, Rational(0), Rational(0), Rational(2, 5), Rational(1)), std::invalid_argument);
+  EXPECT_THROW(gkt::rough_parameters(4, Rational(1), Rational(0), Rational(2, 5), Rational(1)), std::invalid_argument);
+  EXPECT_THROW(gkt::rough_parameters(3, Rational(1), Rational(0), Rational(2, 5), Rational(0)), std::invalid_argument);
+  const auto p = gkt::rough_parameters(3, Rational(1), Rational(0), Rational(2, 5), Rational(1));
+  EXPECT_THROW(RoughCollisionMoments<Rational>(p, {rough_dot_form(RoughSlot::v1, RoughSlot::w1)}, {1}),
+               std::invalid_argument);
 }

@@ -23,7 +23,7 @@ Rational eta_t(const Rational& beta, const Rational& kappa) {
 
 }  // namespace
 
-// τ·(ζ_r − ζ_t)/(2ν) = c0 + c1 τ + c2 τ², τ = θ/κ, η = η_t, with (theory.md (19.11))
+// τ·(ζ_r − ζ_t)/(2ν) = c0 + c1 τ + c2 τ², τ = θ/κ, η = η_t, with (theory.md (19.12))
 //   c0 = −((d−1)/d_r)(η/κ)²,  c1 = ((d−1)/d_r)(η/κ)(1 − η/κ) − [(1−α²)/2 + (d−1)η(1−η)]/d,
 //   c2 = (d−1)η²/d.
 TEST(RoughHomogeneousCoolingState, MaxwellianTemperatureEquationMatchesHandDerivation) {
@@ -54,7 +54,7 @@ TEST(RoughHomogeneousCoolingState, HuthmannZippeliusClosedForm3d) {
                                                    Rational(static_cast<long>(std::lround(kappa * 100)), 100),
                                                    RoughHcsScheme::maxwellian);
     EXPECT_NEAR(s.temperature_ratio, theta, 1e-12 * theta);
-    // ζ = (4/3)ν(A − Bθ) per (19.9) with ν of theory.md (5.3); ζ* = ((d+2)/4) ζ/ν = (5/3)(A − Bθ).
+    // ζ = (4/3)ν(A − Bθ) per (19.12) with ν of theory.md (5.3); ζ* = ((d+2)/4) ζ/ν = (5/3)(A − Bθ).
     EXPECT_NEAR(s.cooling_rate, 5.0 / 3 * (a - b * theta), 1e-12);
   }
 }

@@ -116,7 +116,7 @@ RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameter
   using Poly = detail::SmallPolynomial<Ring>;
   PolyMatrix2<Ring> mv, mw;
   PolyMatrix4<Ring> mt;
-  // The reference Gaussians exp(−v1² − v2² − s(ŵ1² + ŵ2²)) (theory.md (19.3)).
+  // The reference Gaussians exp(−v1² − v2² − s(ŵ1² + ŵ2²)) (theory.md §19.2).
   const Ring one(1L), width(parameters.spin_width);
   for (int r = 0; r < 2; ++r) {
     mv[r][r].add(detail::Exponents{}, one);

@@ -13,11 +13,11 @@ void check_parameters(int dimension, const Rational& alpha, const Rational& beta
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
   if (alpha.sign() <= 0 || alpha > Rational(1))
-    throw std::invalid_argument("alpha: must be in (0, 1], got " + alpha.to_decimal_string());
+    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
   if (beta < Rational(-1) || beta > Rational(1))
-    throw std::invalid_argument("beta: must be in [-1, 1], got " + beta.to_decimal_string());
+    throw std::invalid_argument("beta: must be a number in [-1, 1], got " + beta.to_decimal_string());
   if (kappa.sign() <= 0 || kappa > Rational(1))
-    throw std::invalid_argument("moment_of_inertia: must be in (0, 1], got " + kappa.to_decimal_string());
+    throw std::invalid_argument("moment_of_inertia: must be a number in (0, 1], got " + kappa.to_decimal_string());
 }
 
 }  // namespace

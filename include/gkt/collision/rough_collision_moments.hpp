@@ -7,7 +7,7 @@
 // with w = λŵ, s = spin_width (rough_collision_rule.hpp). At fixed σ̂ the spin enters the
 // collision only through the tangential part of (w1 + w2) × σ̂, so the integrand is Gaussian in
 // the normal components and in the tangential components separately; the closed form is
-//   J = const · a^{1/2} n_v^{−1} n_w^{−1/2 (d = 3 only)} t^{−(d−1)/2}     (theory.md (19.6)),
+//   J = const · a^{1/2} n_v^{−1} n_w^{−1/2 (d = 3 only)} t^{−(d−1)/2}     (theory.md (19.5)),
 // a, n_v, n_w, t determinants of the normal-velocity, normal-spin and tangential blocks, and
 // every moment is a Taylor coefficient of it (the Euler recurrence of theory.md §3).
 #pragma once

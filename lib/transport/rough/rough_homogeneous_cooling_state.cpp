@@ -70,7 +70,7 @@ Polynomial product(const Polynomial& a, const Polynomial& b) {
   return r;
 }
 
-/// The collision averages of the linear scheme (theory.md (19.12)), exact in τ: R_0[ψ] =
+/// The collision averages of the linear scheme (theory.md (19.10)), exact in τ: R_0[ψ] =
 /// ⟨ψ(1') − ψ(1)⟩/⟨1⟩ and R_X[ψ] = ⟨(Φ_X(1) + Φ_X(2))(ψ(1') − ψ(1))⟩/⟨1⟩ for the weights
 /// Φ_X ∈ {S2(x), S2(y), S1(x)S1(y)} and tests ψ ∈ {x, y, x², y², xy}.
 class CollisionalProduction {
@@ -115,7 +115,7 @@ class CollisionalProduction {
   std::array<std::array<Laurent, 5>, 4> table_;
 };
 
-/// The balances at τ and a = (a20, a02, a11) (theory.md (19.13)): G_0 = R[x]/d − R[y]/d_r
+/// The balances at τ and a = (a20, a02, a11) (theory.md (19.11)): G_0 = R[x]/d − R[y]/d_r
 /// (ζ_t = ζ_r) and, for ψ = x², y², xy, G_p = 2 z(a)⟨ψ⟩_a + R[ψ](a) linearised in a, with
 /// z(a) = −(2/d) R[x](a) the reduced cooling rate ζ/(nσ^{d−1}v_t ν).
 struct Balances {
@@ -158,7 +158,7 @@ std::vector<Rational> rough_maxwellian_temperature_equation(int dimension, const
                                                             const Rational& kappa) {
   check(dimension, alpha, beta, kappa);
   const CollisionalProduction r(dimension, alpha, beta, kappa);
-  // τ·(R[x]/d − R[y]/d_r) = 0: R[x] = c0 + c1 τ, R[y] = c'/τ + c'' (theory.md (19.9)–(19.10)).
+  // τ·(R[x]/d − R[y]/d_r) = 0: R[x] = c0 + c1 τ, R[y] = c'/τ + c'' (theory.md (19.7)–(19.8), (19.12)).
   Laurent f = r(0, 0), g = r(0, 1), eq;
   f.shift -= 1;  // × τ
   g.shift -= 1;
