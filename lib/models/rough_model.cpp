@@ -1,11 +1,13 @@
 // The "rough" model: rough inelastic hard spheres (d = 3) or disks (d = 2) with constant normal
 // and tangential restitution α, β and reduced moment of inertia κ = 4I/(mσ²). Provides the
 // homogeneous cooling state in the Maxwellian or the linear first-Sonine approximation
-// (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11.
+// (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11; and the
+// shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7).
 #include <cmath>
 #include <stdexcept>
 
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
+#include "gkt/transport/rough/rough_shear_viscosity.hpp"
 #include "models/models.hpp"
 
 namespace gkt::detail {
@@ -18,10 +20,10 @@ class RoughModel final : public TransportModel {
   [[nodiscard]] std::string description() const override {
     return "rough inelastic hard spheres (d = 3) or disks (d = 2), constant normal and tangential restitution "
            "alpha, beta and reduced moment of inertia: homogeneous cooling state (temperature ratio, cooling "
-           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine";
+           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; first-Sonine shear viscosity";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11"};
+    return {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11", "shear_viscosity"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     return {{"dimension",
@@ -85,11 +87,12 @@ class RoughModel final : public TransportModel {
     specs[3].check(kappa);
     const std::string scheme = point.choice("hcs", "linear");
     specs[4].check(scheme);
-    if (order.tolerance || order.order != 1)
-      throw std::invalid_argument("order: the rough model has the first approximation only: use order = 1");
-    const RoughCoolingState s =
-        rough_homogeneous_cooling_state(dim == Rational(2) ? 2 : 3, alpha, beta, kappa,
-                                        scheme == "linear" ? RoughHcsScheme::linear : RoughHcsScheme::maxwellian);
+    if (order.tolerance)
+      throw std::invalid_argument("tolerance: the rough model has the first approximation only: use order = 1");
+    if (order.order != 1) throw std::invalid_argument("order: must be exactly 1, got " + std::to_string(order.order));
+    const int d = dim == Rational(2) ? 2 : 3;
+    const RoughCoolingState s = rough_homogeneous_cooling_state(
+        d, alpha, beta, kappa, scheme == "linear" ? RoughHcsScheme::linear : RoughHcsScheme::maxwellian);
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
       double x = 0;
@@ -103,6 +106,9 @@ class RoughModel final : public TransportModel {
         x = s.a02;
       } else if (name == "a11") {
         x = s.a11;
+      } else if (name == "shear_viscosity") {
+        // First Sonine with Maxwellian weights at the Maxwellian θ, whatever `hcs` (theory.md §19.7).
+        x = rough_shear_viscosity(d, alpha, beta, kappa);
       } else {
         throw std::invalid_argument("coefficients: unknown coefficient '" + name +
                                     "' for model rough; valid: " + join(coefficient_names()));
