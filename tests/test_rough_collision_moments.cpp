@@ -264,6 +264,50 @@ TEST(RoughCollisionMoments, RejectsBadParametersAndMixedForms) {
   EXPECT_THROW(gkt::rough_parameters(4, Rational(1), Rational(0), Rational(2, 5), Rational(1)), std::invalid_argument);
   EXPECT_THROW(gkt::rough_parameters(3, Rational(1), Rational(0), Rational(2, 5), Rational(0)), std::invalid_argument);
   const auto p = gkt::rough_parameters(3, Rational(1), Rational(0), Rational(2, 5), Rational(1));
-  EXPECT_THROW(RoughCollisionMoments<Rational>(p, {rough_dot_form(RoughSlot::v1, RoughSlot::w1)}, {1}),
+  const auto disks = gkt::rough_parameters(2, Rational(1), Rational(0), Rational(1, 2), Rational(1));
+  EXPECT_THROW(RoughCollisionMoments<Rational>(disks, {rough_dot_form(RoughSlot::v1, RoughSlot::w1)}, {1}),
                std::invalid_argument);
+  (void)p;
+}
+
+// Forms coupling v and w (3D): the normal block couples, the tangential block becomes Hermitian
+// (theory.md (19.5a)). Moments of (v1·w1)², (v1'·w1')², (v1'·w2)(v2·w1'), … against Monte Carlo.
+TEST(RoughCollisionMoments, TranslationSpinCouplingAgainstMonteCarlo) {
+  const Rational alpha(7, 10), beta(1, 2), kappa(2, 5), theta(3, 2);
+  const auto params = gkt::rough_parameters(3, alpha, beta, kappa, theta);
+  const std::vector<RoughForm> forms{
+      rough_dot_form(RoughSlot::v1_post, RoughSlot::w1_post), rough_dot_form(RoughSlot::v1, RoughSlot::w1),
+      rough_dot_form(RoughSlot::v1_post, RoughSlot::v1_post),
+      rough_dot_form(RoughSlot::v2, RoughSlot::w1_post) + rough_dot_form(RoughSlot::w2_post, RoughSlot::w2_post)};
+  const RoughCollisionMoments<Rational> engine(params, forms, {2, 2, 1, 2});
+  const std::vector<std::array<int, 4>> exponents{{1, 0, 0, 0}, {2, 0, 0, 0}, {0, 2, 0, 0}, {1, 1, 0, 0}, {2, 0, 1, 0},
+                                                  {0, 0, 0, 1}, {1, 0, 0, 1}, {0, 0, 0, 2}, {2, 2, 0, 0}, {0, 1, 0, 1}};
+  gkt::test::RoughCollisionSampler sampler(3, 0.7, 0.5, 0.4, 1.5, 4242);
+  const long samples = 300000;
+  std::vector<double> swh(exponents.size(), 0), sw2h2(exponents.size(), 0), sw2h(exponents.size(), 0);
+  double w_sum = 0, w2_sum = 0;
+  for (long s = 0; s < samples; ++s) {
+    const RoughCollision c = sampler.draw();
+    if (c.weight == 0) continue;
+    w_sum += c.weight;
+    w2_sum += c.weight * c.weight;
+    const std::array<double, 4> values{
+        mc_dot(c, RoughSlot::v1_post, RoughSlot::w1_post), mc_dot(c, RoughSlot::v1, RoughSlot::w1),
+        mc_dot(c, RoughSlot::v1_post, RoughSlot::v1_post),
+        mc_dot(c, RoughSlot::v2, RoughSlot::w1_post) + mc_dot(c, RoughSlot::w2_post, RoughSlot::w2_post)};
+    for (std::size_t e = 0; e < exponents.size(); ++e) {
+      double h = 1;
+      for (std::size_t v = 0; v < 4; ++v) h *= std::pow(values[v], exponents[e][v]);
+      swh[e] += c.weight * h;
+      sw2h2[e] += c.weight * c.weight * h * h;
+      sw2h[e] += c.weight * c.weight * h;
+    }
+  }
+  for (std::size_t e = 0; e < exponents.size(); ++e) {
+    const double mean = swh[e] / w_sum;
+    const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+    const double exact = engine.moment(exponents[e]).to_double();
+    EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
+    EXPECT_LT(error, 0.04 * (std::abs(exact) + 1)) << "moment " << e;
+  }
 }

@@ -54,23 +54,50 @@ SlotRows<Ring> slot_rows(const RoughCollisionParameters<Ring>& p) {
 }
 
 template <class Ring>
-using PolyMatrix2 = std::array<std::array<detail::SmallPolynomial<Ring>, 2>, 2>;
-template <class Ring>
 using PolyMatrix4 = std::array<std::array<detail::SmallPolynomial<Ring>, 4>, 4>;
 
-/// Returns det of a 4×4 matrix of polynomials by the Leibniz formula, truncated to the box.
+/// Returns det of the submatrix m[rows][cols] by the Leibniz formula, truncated to the box.
 template <class Ring>
-detail::SmallPolynomial<Ring> determinant4(const PolyMatrix4<Ring>& m, const detail::Exponents& box) {
-  std::array<int, 4> perm{0, 1, 2, 3};
+detail::SmallPolynomial<Ring> determinant(const PolyMatrix4<Ring>& m, const std::vector<int>& rows,
+                                          const std::vector<int>& cols, const detail::Exponents& box) {
+  std::vector<int> perm(cols.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = static_cast<int>(i);
   detail::SmallPolynomial<Ring> det;
+  do {
+    int inversions = 0;
+    for (std::size_t i = 0; i < perm.size(); ++i)
+      for (std::size_t j = i + 1; j < perm.size(); ++j)
+        if (perm[i] > perm[j]) ++inversions;
+    detail::SmallPolynomial<Ring> term = m[rows[0]][cols[perm[0]]];
+    for (std::size_t i = 1; i < perm.size() && !term.terms.empty(); ++i)
+      term = detail::truncated_product(term, m[rows[i]][cols[perm[i]]], box);
+    det = inversions % 2 == 0 ? det + term : det - term;
+  } while (std::next_permutation(perm.begin(), perm.end()));
+  return det;
+}
+
+/// Returns det(A + iB) (real for A symmetric, B antisymmetric: a Hermitian matrix) by Leibniz.
+template <class Ring>
+detail::SmallPolynomial<Ring> hermitian_determinant(const PolyMatrix4<Ring>& a, const PolyMatrix4<Ring>& b,
+                                                    const detail::Exponents& box) {
+  using Poly = detail::SmallPolynomial<Ring>;
+  std::array<int, 4> perm{0, 1, 2, 3};
+  Poly det;
   do {
     int inversions = 0;
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j)
         if (perm[i] > perm[j]) ++inversions;
-    detail::SmallPolynomial<Ring> term = m[0][perm[0]];
-    for (int i = 1; i < 4 && !term.terms.empty(); ++i) term = detail::truncated_product(term, m[i][perm[i]], box);
-    det = inversions % 2 == 0 ? det + term : det - term;
+    Poly re = a[0][perm[0]], im = b[0][perm[0]];
+    for (int i = 1; i < 4; ++i) {
+      const Poly& x = a[i][perm[i]];
+      const Poly& y = b[i][perm[i]];
+      Poly next_re = detail::truncated_product(re, x, box) - detail::truncated_product(im, y, box);
+      Poly next_im = detail::truncated_product(re, y, box) + detail::truncated_product(im, x, box);
+      re = std::move(next_re);
+      im = std::move(next_im);
+    }
+    det = inversions % 2 == 0 ? det + re : det - re;
   } while (std::next_permutation(perm.begin(), perm.end()));
   return det;
 }
@@ -114,15 +141,16 @@ RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameter
   }
   const auto rows = slot_rows(parameters);
   using Poly = detail::SmallPolynomial<Ring>;
-  PolyMatrix2<Ring> mv, mw;
-  PolyMatrix4<Ring> mt;
+  // Normal block over (v1n, v2n, ŵ1n, ŵ2n) (the spin part only for d = 3), tangential block A over
+  // (v1t, v2t, ŝ1, ŝ2) and, for forms coupling v and w, its rotation part B (theory.md (19.5a)).
+  PolyMatrix4<Ring> mn, mt, mb;
   // The reference Gaussians exp(−v1² − v2² − s(ŵ1² + ŵ2²)) (theory.md §19.2).
   const Ring one(1L), width(parameters.spin_width);
-  for (int r = 0; r < 2; ++r) {
-    mv[r][r].add(detail::Exponents{}, one);
-    mw[r][r].add(detail::Exponents{}, width);
+  for (int r = 0; r < 4; ++r) {
+    mn[r][r].add(detail::Exponents{}, r < 2 ? one : width);
+    mt[r][r].add(detail::Exponents{}, r < 2 ? one : width);
   }
-  for (int r = 0; r < 4; ++r) mt[r][r].add(detail::Exponents{}, r < 2 ? one : width);
+  bool mixed = false;
   // exp(+Σ x_v F_v): each form subtracts x_v Σ_ab F_ab (row_a row_bᵀ) from the blocks.
   for (std::size_t v = 0; v < forms.size(); ++v) {
     detail::Exponents e{};
@@ -131,27 +159,50 @@ RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameter
       for (int b = 0; b < 8; ++b) {
         const Rational& f = forms[v][a][b];
         if (f.is_zero()) continue;
-        const auto sa = static_cast<RoughSlot>(a), sb = static_cast<RoughSlot>(b);
-        if (is_spin_slot(sa) != is_spin_slot(sb))
+        const bool spin_a = is_spin_slot(static_cast<RoughSlot>(a)), spin_b = is_spin_slot(static_cast<RoughSlot>(b));
+        if (spin_a != spin_b && d == 2)
           throw std::invalid_argument(
-              "RoughCollisionMoments: a form pairs a translational with a spin slot (not implemented)");
+              "RoughCollisionMoments: v·w vanishes for disks (the spin is normal to the plane)");
         const Ring c(-f);
-        auto& normal_block = is_spin_slot(sa) ? mw : mv;
+        const int oa = spin_a ? 2 : 0, ob = spin_b ? 2 : 0;
         for (int r = 0; r < 2; ++r)
-          for (int s = 0; s < 2; ++s) normal_block[r][s].add(e, c * rows.normal[a][r] * rows.normal[b][s]);
+          for (int s = 0; s < 2; ++s) mn[oa + r][ob + s].add(e, c * rows.normal[a][r] * rows.normal[b][s]);
+        if (spin_a == spin_b) {
+          for (int r = 0; r < 4; ++r)
+            for (int s = 0; s < 4; ++s) mt[r][s].add(e, c * rows.tangential[a][r] * rows.tangential[b][s]);
+          continue;
+        }
+        // v_t·w_t = v_t·(σ̂ × s): X_rᵀ J X_s with J the rotation by +π/2 (sign − when w comes first);
+        // only the antisymmetric part in (r, s) survives.
+        mixed = true;
+        Ring half = spin_a ? -c : c;
+        detail::divide(half, Rational(2));
         for (int r = 0; r < 4; ++r)
-          for (int s = 0; s < 4; ++s) mt[r][s].add(e, c * rows.tangential[a][r] * rows.tangential[b][s]);
+          for (int s = 0; s < 4; ++s) {
+            const Ring k = half * rows.tangential[a][r] * rows.tangential[b][s];
+            mb[r][s].add(e, k);
+            mb[s][r].add(e, -k);
+          }
       }
   }
-  // a = ℓᵀ adj(M_v) ℓ with ℓ = (1, −1) (u = v1n − v2n), n_v = det M_v, n_w = det M_w, t = det M_t.
+  std::vector<detail::PowerFactor<Ring>> factors;
   const Ring two(2L);
-  Poly a = mv[0][0] + mv[1][1] + two * mv[0][1];
-  Poly nv = detail::truncated_product(mv[0][0], mv[1][1], box) - detail::truncated_product(mv[0][1], mv[0][1], box);
-  Poly nw = detail::truncated_product(mw[0][0], mw[1][1], box) - detail::truncated_product(mw[0][1], mw[0][1], box);
-  Poly t = determinant4(mt, box);
-  std::vector<detail::PowerFactor<Ring>> factors{{a, Rational(1, 2)}, {nv, Rational(-1)}};
-  if (d == 3) factors.push_back({nw, Rational(-1, 2)});
-  factors.push_back({t, Rational(-(d - 1), 2)});
+  if (!mixed) {
+    // a = ℓᵀ adj(M_v) ℓ with ℓ = (1, −1) (u = v1n − v2n), n_v = det M_v, n_w = det M_w, t = det M_t.
+    Poly a = mn[0][0] + mn[1][1] + two * mn[0][1];
+    factors.push_back({a, Rational(1, 2)});
+    factors.push_back({determinant(mn, {0, 1}, {0, 1}, box), Rational(-1)});
+    if (d == 3) factors.push_back({determinant(mn, {2, 3}, {2, 3}, box), Rational(-1, 2)});
+    factors.push_back({determinant(mt, {0, 1, 2, 3}, {0, 1, 2, 3}, box), Rational(-(d - 1), 2)});
+  } else {
+    // d = 3 with v·w forms: a = ℓᵀ adj(M_N) ℓ, n = det M_N over the whole normal block, and the two
+    // tangential copies give det(A⊗I + B⊗J)^{−1/2} = det(A + iB)^{−1}.
+    const Poly c00 = determinant(mn, {1, 2, 3}, {1, 2, 3}, box), c11 = determinant(mn, {0, 2, 3}, {0, 2, 3}, box);
+    const Poly c01 = determinant(mn, {1, 2, 3}, {0, 2, 3}, box);  // (−1)^{0+1}·this = adj_01
+    factors.push_back({c00 + c11 + two * c01, Rational(1, 2)});
+    factors.push_back({determinant(mn, {0, 1, 2, 3}, {0, 1, 2, 3}, box), Rational(-1)});
+    factors.push_back({hermitian_determinant(mt, mb, box), Rational(-1)});
+  }
   auto f = detail::expand_power_product(std::move(factors), box);
   box_ = {box[0], box[1], box[2], box[3]};
   values_.reserve(f.size());
