@@ -18,9 +18,10 @@
 
 namespace gkt::test {
 
-/// Batch means and standard errors of θ = T_r/T_t and the cumulants a20, a02, a11.
+/// Batch means and standard errors of θ = T_r/T_t, the cumulants a20, a02, a11 and C.
 struct RoughHcsSample {
   double theta = 0, theta_error = 0, a20 = 0, a20_error = 0, a02 = 0, a02_error = 0, a11 = 0, a11_error = 0;
+  double orientation = 0, orientation_error = 0;  ///< C = ⟨(v·w)²/(v²w²)⟩ (d = 3)
 };
 
 inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, double kappa, double theta_start,
@@ -87,10 +88,10 @@ inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, doubl
     }
   };
   collide(relax);
-  std::vector<double> thetas, a20s, a02s, a11s;
+  std::vector<double> thetas, a20s, a02s, a11s, cs;
   for (int b = 0; b < batches; ++b) {
     collide(per_batch);
-    double v2 = 0, v4 = 0, w2 = 0, w4 = 0, vw = 0;
+    double v2 = 0, v4 = 0, w2 = 0, w4 = 0, vw = 0, c = 0;
     for (std::size_t p = 0; p < v.size(); ++p) {
       const double x = dot3(v[p], v[p]), y = dot3(w[p], w[p]);
       v2 += x / particles;
@@ -98,7 +99,10 @@ inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, doubl
       w2 += y / particles;
       w4 += y * y / particles;
       vw += x * y / particles;
+      const double proj = dot3(v[p], w[p]);
+      if (x > 0 && y > 0) c += proj * proj / (x * y) / particles;
     }
+    cs.push_back(c);
     thetas.push_back((kappa * w2 / dr) / (v2 / d));
     a20s.push_back(v4 / (v2 * v2) * d / (d + 2) - 1);
     a02s.push_back(w4 / (w2 * w2) * dr / (dr + 2) - 1);
@@ -110,6 +114,7 @@ inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, doubl
   batch_mean(a20s, s.a20, s.a20_error);
   batch_mean(a02s, s.a02, s.a02_error);
   batch_mean(a11s, s.a11, s.a11_error);
+  batch_mean(cs, s.orientation, s.orientation_error);
   return s;
 }
 

@@ -2,11 +2,13 @@
 // and tangential restitution α, β and reduced moment of inertia κ = 4I/(mσ²). Provides the
 // homogeneous cooling state in the Maxwellian or the linear first-Sonine approximation
 // (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11; and the
-// shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7).
+// shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7) and the orientational
+// correlation C (rough_orientation_correlation.hpp, §19.8).
 #include <cmath>
 #include <stdexcept>
 
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
+#include "gkt/transport/rough/rough_orientation_correlation.hpp"
 #include "gkt/transport/rough/rough_shear_viscosity.hpp"
 #include "models/models.hpp"
 
@@ -20,10 +22,12 @@ class RoughModel final : public TransportModel {
   [[nodiscard]] std::string description() const override {
     return "rough inelastic hard spheres (d = 3) or disks (d = 2), constant normal and tangential restitution "
            "alpha, beta and reduced moment of inertia: homogeneous cooling state (temperature ratio, cooling "
-           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; first-Sonine shear viscosity";
+           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; first-Sonine shear viscosity; "
+           "translation-rotation correlation (3D)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11", "shear_viscosity"};
+    return {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11", "shear_viscosity",
+            "orientation_correlation"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     return {{"dimension",
@@ -106,6 +110,11 @@ class RoughModel final : public TransportModel {
         x = s.a02;
       } else if (name == "a11") {
         x = s.a11;
+      } else if (name == "orientation_correlation") {
+        if (d != 3)
+          throw std::invalid_argument(
+              "coefficients: orientation_correlation needs dimension = 3 (disks spin normal to the plane)");
+        x = rough_orientation_correlation(alpha, beta, kappa).correlation;  // theory.md §19.8
       } else if (name == "shear_viscosity") {
         // First Sonine with Maxwellian weights at the Maxwellian θ, whatever `hcs` (theory.md §19.7).
         x = rough_shear_viscosity(d, alpha, beta, kappa);
