@@ -9,7 +9,9 @@
 // the normal components and in the tangential components separately; the closed form is
 //   J = const · a^{1/2} n_v^{−1} n_w^{−1/2 (d = 3 only)} t^{−(d−1)/2}     (theory.md (19.5)),
 // a, n_v, n_w, t determinants of the normal-velocity, normal-spin and tangential blocks, and
-// every moment is a Taylor coefficient of it (the Euler recurrence of theory.md §3).
+// every moment is a Taylor coefficient of it (the Euler recurrence of theory.md §3). Forms
+// coupling v and w (d = 3) join the normal blocks and add a Hermitian part to the tangential one:
+//   J = const · a^{1/2} n^{−1} det(A + iB)^{−1}                             (theory.md (19.5a)).
 #pragma once
 
 #include <array>
@@ -22,7 +24,7 @@
 namespace gkt {
 
 /// A quadratic form Σ_ab F_ab W_a·W_b in the eight vectors W of RoughSlot (symmetric 8×8).
-/// Entries may pair translational with translational and spin with spin slots only.
+/// Entries pairing a translational with a spin slot (v·w) are allowed for d = 3 (theory.md (19.5a)).
 using RoughForm = std::array<std::array<Rational, 8>, 8>;
 
 /// Returns the form W_a·W_b (symmetrised).
@@ -37,7 +39,7 @@ template <class Ring>
 class RoughCollisionMoments {
  public:
   /// Throws std::invalid_argument for more than four forms, mismatched sizes, negative degrees or
-  /// a form that pairs a translational with a spin slot.
+  /// a form that pairs a translational with a spin slot when d = 2 (v·w vanishes for disks).
   RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters, const std::vector<RoughForm>& forms,
                         const std::vector<int>& degrees);
   /// Returns ⟨Π F_v^{k_v}⟩/⟨1⟩ (velocities in units of √(2T_t/m)); throws std::out_of_range
