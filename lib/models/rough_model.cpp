@@ -10,6 +10,7 @@
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_orientation_correlation.hpp"
 #include "gkt/transport/rough/rough_shear_viscosity.hpp"
+#include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 #include "models/models.hpp"
 
 namespace gkt::detail {
@@ -26,8 +27,8 @@ class RoughModel final : public TransportModel {
            "translation-rotation correlation (3D)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11", "shear_viscosity",
-            "orientation_correlation"};
+    return {"rotational_temperature_ratio", "cooling_rate",           "a20", "a02", "a11", "shear_viscosity",
+            "thermal_conductivity",         "orientation_correlation"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     return {{"dimension",
@@ -115,6 +116,10 @@ class RoughModel final : public TransportModel {
           throw std::invalid_argument(
               "coefficients: orientation_correlation needs dimension = 3 (disks spin normal to the plane)");
         x = rough_orientation_correlation(alpha, beta, kappa).correlation;  // theory.md §19.8
+      } else if (name == "thermal_conductivity") {
+        if (d != 3)
+          throw std::invalid_argument("coefficients: thermal_conductivity of the rough model needs dimension = 3");
+        x = rough_thermal_conductivity(alpha, beta, kappa).total;  // theory.md §19.7; NaN at β = −1
       } else if (name == "shear_viscosity") {
         // First Sonine with Maxwellian weights at the Maxwellian θ, whatever `hcs` (theory.md §19.7).
         x = rough_shear_viscosity(d, alpha, beta, kappa);
