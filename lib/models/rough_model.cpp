@@ -120,6 +120,10 @@ class RoughModel final : public TransportModel {
         if (d != 3)
           throw std::invalid_argument("coefficients: thermal_conductivity of the rough model needs dimension = 3");
         x = rough_thermal_conductivity(alpha, beta, kappa).total;  // theory.md §19.7; NaN at β = −1
+      } else if (name == "density_heat_coefficient") {
+        if (d != 3)
+          throw std::invalid_argument("coefficients: density_heat_coefficient of the rough model needs dimension = 3");
+        x = rough_thermal_conductivity(alpha, beta, kappa).density_heat_total;  // theory.md (19.16)
       } else if (name == "shear_viscosity") {
         // First Sonine with Maxwellian weights at the Maxwellian θ, whatever `hcs` (theory.md §19.7).
         x = rough_shear_viscosity(d, alpha, beta, kappa);

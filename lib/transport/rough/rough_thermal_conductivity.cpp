@@ -52,16 +52,26 @@ RoughThermalConductivity solve(const Rational& alpha, const Rational& beta, cons
   const double m11 = operator_element(p, 1, 1, tau) - 2 * z * n1, m12 = operator_element(p, 1, 2, tau),
                m21 = operator_element(p, 2, 1, tau), m22 = operator_element(p, 2, 2, tau) - 2 * z * n2;
   RoughThermalConductivity out;
-  if (spin_decoupled) {  // β = −1: m12 = m21 = 0, the translational channel alone
-    out.translational = n1 * (n1 / m11) / (n1 * n1 / 2);
-    out.total = std::numeric_limits<double>::quiet_NaN();
+  const double reference = n1 * n1 / 2;  // the smooth elastic flux n1²/L11, L11 = d − 1 = 2
+  if (spin_decoupled) {                  // β = −1: m12 = m21 = 0, the translational channel alone
+    const double x1 = n1 / m11;
+    out.translational = n1 * x1 / reference;
+    out.density_heat_translational = n1 * (z * n1 * x1 / (m11 + 0.5 * z * n1)) / reference;
+    out.total = out.density_heat_total = std::numeric_limits<double>::quiet_NaN();
     return out;
   }
-  const double det = m11 * m22 - m12 * m21;
-  const double x1 = (m22 * n1 - m12 * n2) / det, x2 = (m11 * n2 - m21 * n1) / det;  // 𝔄 = x1 ψ1 + x2 ψ2
-  // Flux ⟨c(c² + θŵ²)·𝔄⟩ = n1 x1 + θ n2 x2, against the smooth elastic n1²/2 (L11 = d − 1 = 2).
-  out.translational = n1 * x1 / (n1 * n1 / 2);
-  out.total = (n1 * x1 + theta * n2 * x2) / (n1 * n1 / 2);
+  const auto solve2 = [](double a11, double a12, double a21, double a22, double r1, double r2) {
+    const double det = a11 * a22 - a12 * a21;
+    return std::array<double, 2>{(a22 * r1 - a12 * r2) / det, (a11 * r2 - a21 * r1) / det};
+  };
+  const auto x = solve2(m11, m12, m21, m22, n1, n2);  // 𝔄 = x1 ψ1 + x2 ψ2
+  // Flux ⟨c(c² + θŵ²)·𝔄⟩ = n1 x1 + θ n2 x2, against the smooth elastic n1²/2.
+  out.translational = n1 * x[0] / reference;
+  out.total = (n1 * x[0] + theta * n2 * x[1]) / reference;
+  // (𝓛 − (3/2)ζ)𝔅 = ζ𝔄: M + (1/2)z diag(n1, n2) on the left, z diag(n1, n2) x on the right.
+  const auto y = solve2(m11 + 0.5 * z * n1, m12, m21, m22 + 0.5 * z * n2, z * n1 * x[0], z * n2 * x[1]);
+  out.density_heat_translational = n1 * y[0] / reference;
+  out.density_heat_total = (n1 * y[0] + theta * n2 * y[1]) / reference;
   return out;
 }
 

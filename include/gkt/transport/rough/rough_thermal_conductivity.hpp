@@ -1,7 +1,8 @@
 // Thermal conductivity of the dilute rough gas (3D) in the first Sonine approximation with
 // Maxwellian weights at the Maxwellian HCS θ (docs/theory.md §19.7): translational and
 // rotational heat-flux trial functions ψ1 = c(c² − 5/2), ψ2 = c(ŵ² − 3/2), the Chapman–Enskog
-// equation (𝓛 − 2ζ)𝔄 = ψ1 + ψ2 and the total energy flux q = −κ∇T_t.
+// equation (𝓛 − 2ζ)𝔄 = ψ1 + ψ2 and the total energy flux q = −κ∇T_t − μ∇n; μ from
+// (𝓛 − (3/2)ζ)𝔅 = ζ𝔄.
 #pragma once
 
 #include "gkt/algebra/rational.hpp"
@@ -12,6 +13,9 @@ namespace gkt {
 struct RoughThermalConductivity {
   double total = 0;          ///< κ/κ0(T_t), q = total energy flux (translational + rotational)
   double translational = 0;  ///< the translational flux alone, same reduction
+  /// μ* = nμ/(T_t κ0) in q = −κ∇T_t − μ∇n, from (𝓛 − (3/2)ζ)𝔅 = ζ𝔄 (theory.md (19.16))
+  double density_heat_total = 0;
+  double density_heat_translational = 0;  ///< its translational flux alone
 };
 
 /// Returns κ* for spheres with α ∈ (0, 1], β ∈ (−1, 1], κ ∈ (0, 1] at the Maxwellian HCS θ. At
