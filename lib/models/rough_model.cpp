@@ -27,8 +27,15 @@ class RoughModel final : public TransportModel {
            "translation-rotation correlation (3D)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"rotational_temperature_ratio", "cooling_rate",           "a20", "a02", "a11", "shear_viscosity",
-            "thermal_conductivity",         "orientation_correlation"};
+    return {"rotational_temperature_ratio",
+            "cooling_rate",
+            "a20",
+            "a02",
+            "a11",
+            "shear_viscosity",
+            "thermal_conductivity",
+            "density_heat_coefficient",
+            "orientation_correlation"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     return {{"dimension",
