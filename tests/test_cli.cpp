@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstdio>
@@ -507,6 +508,40 @@ TEST(CliViscoelastic, StabilityAndBadInput) {
     EXPECT_EQ(bad.status, 2) << command << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
     EXPECT_TRUE(bad.out.empty());
+  }
+}
+
+// The rough model (docs/theory.md §19; golden file rough_hcs.csv in tests/golden/manifest.tsv): the β = −1 limit
+// against the smooth-inelastic model's first Sonine a2 and cooling rate, and bad input.
+TEST(CliRough, SmoothLimitAndBadInput) {
+  const CliRun rough = run_gkt("table " + scene_path("rough_hcs.toml") +
+                               " --set beta=-1 --set 'coefficients=[\"cooling_rate\", \"a20\", "
+                               "\"rotational_temperature_ratio\"]'");
+  const CliRun smooth = run_gkt("table " + scene_path("hcs_first_sonine.toml"));  // the same alphas
+  ASSERT_EQ(rough.status, 0) << rough.err;
+  ASSERT_EQ(smooth.status, 0) << smooth.err;
+  const auto rt = parse_csv(rough.out), st = parse_csv(smooth.out);
+  ASSERT_EQ(rt.size(), st.size());
+  for (std::size_t row = 1; row < rt.size(); ++row) {
+    EXPECT_NEAR(std::stod(rt[row][1]), std::stod(st[row][2]), 1e-14);  // cooling_rate
+    EXPECT_NEAR(std::stod(rt[row][2]), std::stod(st[row][1]), 1e-14);  // a20 = a2
+    EXPECT_EQ(rt[row][3], "nan");                                      // no rotational cooling state at beta = -1
+  }
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"beta=1.5", "beta: must be a number in [-1, 1], got 1.5"},
+           {"beta=-1.25", "beta: must be a number in [-1, 1], got -1.25"},
+           {"moment_of_inertia=0", "moment_of_inertia: must be a number in (0, 1], got 0"},
+           {"moment_of_inertia=1.5", "moment_of_inertia: must be a number in (0, 1], got 1.5"},
+           {"alpha=0", "alpha: must be a number in (0, 1], got 0"},
+           {"dimension=4", "dimension: must be 2 or 3, got 4"},
+           {"order=2", "order: must be exactly 1, got 2"},
+           {"dimension=2", "coefficients: thermal_conductivity of the rough model needs dimension = 3"},
+           {"'hcs=\"nonlinear\"'", "hcs: must be one of"}}) {
+    const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
+    EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
   }
 }
 

@@ -1,0 +1,236 @@
+#include "gkt/collision/rough_collision_moments.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "collision/power_product_series.hpp"
+
+namespace gkt {
+
+namespace {
+
+// Coordinates at fixed σ̂ (theory.md §19.2): normal velocity block (v1n, v2n), normal spin block
+// (ŵ1n, ŵ2n) (d = 3), and, per tangential direction, (v1t, v2t, ŝ1, ŝ2) with ŝ = ŵ × σ̂
+// (disks: ŝ = ŵ ẑ × σ̂), a rotation of the tangential spin, so that g_c,t = v1t − v2t + λ(ŝ1 + ŝ2).
+template <class Ring>
+struct SlotRows {
+  std::array<std::array<Ring, 2>, 8> normal;  // velocity slots: over (v1n, v2n); spin: over (ŵ1n, ŵ2n)
+  std::array<std::array<Ring, 4>, 8> tangential;
+};
+
+template <class Ring>
+SlotRows<Ring> slot_rows(const RoughCollisionParameters<Ring>& p) {
+  const Ring zero(0L), one(1L);
+  const Ring en = p.normal_factor(), et = p.tangential_factor();
+  Ring et_over_kappa = et;
+  detail::divide(et_over_kappa, p.kappa);
+  const Ring& lambda = p.spin_scale;
+  SlotRows<Ring> r;
+  for (auto& row : r.normal) row.fill(zero);
+  for (auto& row : r.tangential) row.fill(zero);
+  // Pre-collisional slots.
+  r.normal[0] = {one, zero};
+  r.normal[1] = {zero, one};
+  r.normal[2] = {lambda, zero};
+  r.normal[3] = {zero, lambda};
+  r.tangential[0][0] = one;
+  r.tangential[1][1] = one;
+  r.tangential[2][2] = lambda;
+  r.tangential[3][3] = lambda;
+  // Post-collisional: normal parts (u = v1n − v2n), spin normal parts unchanged.
+  r.normal[4] = {one - en, en};
+  r.normal[5] = {en, one - en};
+  r.normal[6] = r.normal[2];
+  r.normal[7] = r.normal[3];
+  // Tangential parts: g_c,t = (1, −1, λ, λ); Δv1 = −η_t g_c,t, Δv2 = +η_t g_c,t, Δŝ_k·λ = −(η_t/κ) g_c,t.
+  const std::array<Ring, 4> gct{one, -one, lambda, lambda};
+  for (int c = 0; c < 4; ++c) {
+    r.tangential[4][c] = r.tangential[0][c] - et * gct[c];
+    r.tangential[5][c] = r.tangential[1][c] + et * gct[c];
+    r.tangential[6][c] = r.tangential[2][c] - et_over_kappa * gct[c];
+    r.tangential[7][c] = r.tangential[3][c] - et_over_kappa * gct[c];
+  }
+  return r;
+}
+
+template <class Ring>
+using PolyMatrix4 = std::array<std::array<detail::SmallPolynomial<Ring>, 4>, 4>;
+
+/// Returns det of the submatrix m[rows][cols] by the Leibniz formula, truncated to the box.
+template <class Ring>
+detail::SmallPolynomial<Ring> determinant(const PolyMatrix4<Ring>& m, const std::vector<int>& rows,
+                                          const std::vector<int>& cols, const detail::Exponents& box) {
+  std::vector<int> perm(cols.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = static_cast<int>(i);
+  detail::SmallPolynomial<Ring> det;
+  do {
+    int inversions = 0;
+    for (std::size_t i = 0; i < perm.size(); ++i)
+      for (std::size_t j = i + 1; j < perm.size(); ++j)
+        if (perm[i] > perm[j]) ++inversions;
+    detail::SmallPolynomial<Ring> term = m[rows[0]][cols[perm[0]]];
+    for (std::size_t i = 1; i < perm.size() && !term.terms.empty(); ++i)
+      term = detail::truncated_product(term, m[rows[i]][cols[perm[i]]], box);
+    det = inversions % 2 == 0 ? det + term : det - term;
+  } while (std::next_permutation(perm.begin(), perm.end()));
+  return det;
+}
+
+/// Returns det(A + iB) (real for A symmetric, B antisymmetric: a Hermitian matrix) by Leibniz.
+template <class Ring>
+detail::SmallPolynomial<Ring> hermitian_determinant(const PolyMatrix4<Ring>& a, const PolyMatrix4<Ring>& b,
+                                                    const detail::Exponents& box) {
+  using Poly = detail::SmallPolynomial<Ring>;
+  std::array<int, 4> perm{0, 1, 2, 3};
+  Poly det;
+  do {
+    int inversions = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        if (perm[i] > perm[j]) ++inversions;
+    Poly re = a[0][perm[0]], im = b[0][perm[0]];
+    for (int i = 1; i < 4; ++i) {
+      const Poly& x = a[i][perm[i]];
+      const Poly& y = b[i][perm[i]];
+      Poly next_re = detail::truncated_product(re, x, box) - detail::truncated_product(im, y, box);
+      Poly next_im = detail::truncated_product(re, y, box) + detail::truncated_product(im, x, box);
+      re = std::move(next_re);
+      im = std::move(next_im);
+    }
+    det = inversions % 2 == 0 ? det + re : det - re;
+  } while (std::next_permutation(perm.begin(), perm.end()));
+  return det;
+}
+
+}  // namespace
+
+RoughForm rough_dot_form(RoughSlot a, RoughSlot b) {
+  RoughForm f{};
+  const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+  f[i][j] += Rational(1, 2);
+  f[j][i] += Rational(1, 2);
+  return f;
+}
+
+RoughForm scaled(const RoughForm& f, const Rational& c) {
+  RoughForm r = f;
+  for (auto& row : r)
+    for (auto& x : row) x *= c;
+  return r;
+}
+
+RoughForm operator+(const RoughForm& f, const RoughForm& g) {
+  RoughForm r = f;
+  for (std::size_t a = 0; a < 8; ++a)
+    for (std::size_t b = 0; b < 8; ++b) r[a][b] += g[a][b];
+  return r;
+}
+
+template <class Ring>
+RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters,
+                                                   const std::vector<RoughForm>& forms,
+                                                   const std::vector<int>& degrees) {
+  if (forms.size() > 4 || forms.size() != degrees.size())
+    throw std::invalid_argument("RoughCollisionMoments: at most four forms, one degree each");
+  const int d = parameters.dimension;
+  if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3");
+  detail::Exponents box{};
+  for (std::size_t v = 0; v < forms.size(); ++v) {
+    if (degrees[v] < 0) throw std::invalid_argument("RoughCollisionMoments: negative degree");
+    box[v] = degrees[v];
+  }
+  const auto rows = slot_rows(parameters);
+  using Poly = detail::SmallPolynomial<Ring>;
+  // Normal block over (v1n, v2n, ŵ1n, ŵ2n) (the spin part only for d = 3), tangential block A over
+  // (v1t, v2t, ŝ1, ŝ2) and, for forms coupling v and w, its rotation part B (theory.md (19.5a)).
+  PolyMatrix4<Ring> mn, mt, mb;
+  // The reference Gaussians exp(−v1² − v2² − s(ŵ1² + ŵ2²)) (theory.md §19.2).
+  const Ring one(1L), width(parameters.spin_width);
+  for (int r = 0; r < 4; ++r) {
+    mn[r][r].add(detail::Exponents{}, r < 2 ? one : width);
+    mt[r][r].add(detail::Exponents{}, r < 2 ? one : width);
+  }
+  bool mixed = false;
+  // exp(+Σ x_v F_v): each form subtracts x_v Σ_ab F_ab (row_a row_bᵀ) from the blocks.
+  for (std::size_t v = 0; v < forms.size(); ++v) {
+    detail::Exponents e{};
+    e[v] = 1;
+    for (int a = 0; a < 8; ++a)
+      for (int b = 0; b < 8; ++b) {
+        const Rational& f = forms[v][a][b];
+        if (f.is_zero()) continue;
+        const bool spin_a = is_spin_slot(static_cast<RoughSlot>(a)), spin_b = is_spin_slot(static_cast<RoughSlot>(b));
+        if (spin_a != spin_b && d == 2)
+          throw std::invalid_argument(
+              "RoughCollisionMoments: v·w vanishes for disks (the spin is normal to the plane)");
+        const Ring c(-f);
+        const int oa = spin_a ? 2 : 0, ob = spin_b ? 2 : 0;
+        for (int r = 0; r < 2; ++r)
+          for (int s = 0; s < 2; ++s) mn[oa + r][ob + s].add(e, c * rows.normal[a][r] * rows.normal[b][s]);
+        if (spin_a == spin_b) {
+          for (int r = 0; r < 4; ++r)
+            for (int s = 0; s < 4; ++s) mt[r][s].add(e, c * rows.tangential[a][r] * rows.tangential[b][s]);
+          continue;
+        }
+        // v_t·w_t = v_t·(σ̂ × s): X_rᵀ J X_s with J the rotation by +π/2 (sign − when w comes first);
+        // only the antisymmetric part in (r, s) survives.
+        mixed = true;
+        Ring half = spin_a ? -c : c;
+        detail::divide(half, Rational(2));
+        for (int r = 0; r < 4; ++r)
+          for (int s = 0; s < 4; ++s) {
+            const Ring k = half * rows.tangential[a][r] * rows.tangential[b][s];
+            mb[r][s].add(e, k);
+            mb[s][r].add(e, -k);
+          }
+      }
+  }
+  std::vector<detail::PowerFactor<Ring>> factors;
+  const Ring two(2L);
+  if (!mixed) {
+    // a = ℓᵀ adj(M_v) ℓ with ℓ = (1, −1) (u = v1n − v2n), n_v = det M_v, n_w = det M_w, t = det M_t.
+    Poly a = mn[0][0] + mn[1][1] + two * mn[0][1];
+    factors.push_back({a, Rational(1, 2)});
+    factors.push_back({determinant(mn, {0, 1}, {0, 1}, box), Rational(-1)});
+    if (d == 3) factors.push_back({determinant(mn, {2, 3}, {2, 3}, box), Rational(-1, 2)});
+    factors.push_back({determinant(mt, {0, 1, 2, 3}, {0, 1, 2, 3}, box), Rational(-(d - 1), 2)});
+  } else {
+    // d = 3 with v·w forms: a = ℓᵀ adj(M_N) ℓ, n = det M_N over the whole normal block, and the two
+    // tangential copies give det(A⊗I + B⊗J)^{−1/2} = det(A + iB)^{−1}.
+    const Poly c00 = determinant(mn, {1, 2, 3}, {1, 2, 3}, box), c11 = determinant(mn, {0, 2, 3}, {0, 2, 3}, box);
+    const Poly c01 = determinant(mn, {1, 2, 3}, {0, 2, 3}, box);  // (−1)^{0+1}·this = adj_01
+    factors.push_back({c00 + c11 + two * c01, Rational(1, 2)});
+    factors.push_back({determinant(mn, {0, 1, 2, 3}, {0, 1, 2, 3}, box), Rational(-1)});
+    factors.push_back({hermitian_determinant(mt, mb, box), Rational(-1)});
+  }
+  auto f = detail::expand_power_product(std::move(factors), box);
+  box_ = {box[0], box[1], box[2], box[3]};
+  values_.reserve(f.size());
+  std::size_t i = 0;
+  for (int k0 = 0; k0 <= box[0]; ++k0)
+    for (int k1 = 0; k1 <= box[1]; ++k1)
+      for (int k2 = 0; k2 <= box[2]; ++k2)
+        for (int k3 = 0; k3 <= box[3]; ++k3, ++i) {
+          Ring value = std::move(f[i]);
+          detail::scale(value, Rational::factorial(static_cast<unsigned long>(k0)) *
+                                   Rational::factorial(static_cast<unsigned long>(k1)) *
+                                   Rational::factorial(static_cast<unsigned long>(k2)) *
+                                   Rational::factorial(static_cast<unsigned long>(k3)));
+          values_.push_back(std::move(value));
+        }
+}
+
+template <class Ring>
+Ring RoughCollisionMoments<Ring>::moment(const std::array<int, 4>& k) const {
+  std::size_t index = 0;
+  for (std::size_t v = 0; v < 4; ++v) {
+    if (k[v] < 0 || k[v] > box_[v]) throw std::out_of_range("RoughCollisionMoments: degree outside the expanded box");
+    index = index * static_cast<std::size_t>(box_[v] + 1) + static_cast<std::size_t>(k[v]);
+  }
+  return values_[index];
+}
+
+template class RoughCollisionMoments<Rational>;
+template class RoughCollisionMoments<RationalPolynomial>;
+
+}  // namespace gkt

@@ -1,0 +1,159 @@
+// The "rough" model: rough inelastic hard spheres (d = 3) or disks (d = 2) with constant normal
+// and tangential restitution α, β and reduced moment of inertia κ = 4I/(mσ²). Provides the
+// homogeneous cooling state in the Maxwellian or the linear first-Sonine approximation
+// (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11; and the
+// shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7) and the orientational
+// correlation C (rough_orientation_correlation.hpp, §19.8).
+#include <cmath>
+#include <stdexcept>
+
+#include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
+#include "gkt/transport/rough/rough_orientation_correlation.hpp"
+#include "gkt/transport/rough/rough_shear_viscosity.hpp"
+#include "gkt/transport/rough/rough_thermal_conductivity.hpp"
+#include "models/models.hpp"
+
+namespace gkt::detail {
+
+namespace {
+
+class RoughModel final : public TransportModel {
+ public:
+  [[nodiscard]] std::string name() const override { return "rough"; }
+  [[nodiscard]] std::string description() const override {
+    return "rough inelastic hard spheres (d = 3) or disks (d = 2), constant normal and tangential restitution "
+           "alpha, beta and reduced moment of inertia: homogeneous cooling state (temperature ratio, cooling "
+           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; first-Sonine shear viscosity; "
+           "translation-rotation correlation (3D)";
+  }
+  [[nodiscard]] std::vector<std::string> coefficient_names() const override {
+    return {"rotational_temperature_ratio",
+            "cooling_rate",
+            "a20",
+            "a02",
+            "a11",
+            "shear_viscosity",
+            "thermal_conductivity",
+            "density_heat_coefficient",
+            "orientation_correlation"};
+  }
+  [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
+    return {{"dimension",
+             ParameterSpec::Kind::integer,
+             Rational(2),
+             Rational(3),
+             true,
+             true,
+             Rational(3),
+             "spatial dimension (3: spheres, three rotational degrees of freedom; 2: disks, one)",
+             {}},
+            {"alpha",
+             ParameterSpec::Kind::real,
+             Rational(0),
+             Rational(1),
+             false,
+             true,
+             Rational(1),
+             "normal restitution coefficient",
+             {}},
+            {"beta",
+             ParameterSpec::Kind::real,
+             Rational(-1),
+             Rational(1),
+             true,
+             true,
+             Rational(1),
+             "tangential restitution coefficient (-1 smooth, +1 perfectly rough)",
+             {}},
+            {"moment_of_inertia",
+             ParameterSpec::Kind::real,
+             Rational(0),
+             Rational(1),
+             false,
+             true,
+             Rational(2, 5),
+             "reduced moment of inertia kappa = 4I/(m sigma^2) (2/5 uniform spheres, 1/2 uniform disks)",
+             {}},
+            {"hcs",
+             ParameterSpec::Kind::choice,
+             Rational(0),
+             Rational(0),
+             true,
+             true,
+             Rational(0),
+             "approximation of the homogeneous cooling state: first Sonine (cumulants linear) or Maxwellian",
+             {"linear", "maxwellian"}}};
+  }
+  [[nodiscard]] int max_order() const override { return 1; }
+
+  std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
+                                         const OrderRequest& order) override {
+    const auto specs = parameters();
+    const Rational dim = point.number("dimension", Rational(3));
+    specs[0].check(dim);
+    const Rational alpha = point.number("alpha", Rational(1));
+    specs[1].check(alpha);
+    const Rational beta = point.number("beta", Rational(1));
+    specs[2].check(beta);
+    const Rational kappa = point.number("moment_of_inertia", Rational(2, 5));
+    specs[3].check(kappa);
+    const std::string scheme = point.choice("hcs", "linear");
+    specs[4].check(scheme);
+    if (order.tolerance)
+      throw std::invalid_argument("tolerance: the rough model has the first approximation only: use order = 1");
+    if (order.order != 1) throw std::invalid_argument("order: must be exactly 1, got " + std::to_string(order.order));
+    const int d = dim == Rational(2) ? 2 : 3;
+    const RoughCoolingState s = rough_homogeneous_cooling_state(
+        d, alpha, beta, kappa, scheme == "linear" ? RoughHcsScheme::linear : RoughHcsScheme::maxwellian);
+    std::vector<CoefficientValue> out;
+    for (const auto& name : coefficients) {
+      double x = 0;
+      if (name == "rotational_temperature_ratio") {
+        x = s.temperature_ratio;
+      } else if (name == "cooling_rate") {
+        x = s.cooling_rate;
+      } else if (name == "a20") {
+        x = s.a20;
+      } else if (name == "a02") {
+        x = s.a02;
+      } else if (name == "a11") {
+        x = s.a11;
+      } else if (name == "orientation_correlation") {
+        if (d != 3)
+          throw std::invalid_argument(
+              "coefficients: orientation_correlation needs dimension = 3 (disks spin normal to the plane)");
+        x = rough_orientation_correlation(alpha, beta, kappa).correlation;  // theory.md §19.8
+      } else if (name == "thermal_conductivity") {
+        if (d != 3)
+          throw std::invalid_argument("coefficients: thermal_conductivity of the rough model needs dimension = 3");
+        x = rough_thermal_conductivity(alpha, beta, kappa).total;  // theory.md §19.7; NaN at β = −1
+      } else if (name == "density_heat_coefficient") {
+        if (d != 3)
+          throw std::invalid_argument("coefficients: density_heat_coefficient of the rough model needs dimension = 3");
+        x = rough_thermal_conductivity(alpha, beta, kappa).density_heat_total;  // theory.md (19.16)
+      } else if (name == "shear_viscosity") {
+        // First Sonine with Maxwellian weights at the Maxwellian θ, whatever `hcs` (theory.md §19.7).
+        x = rough_shear_viscosity(d, alpha, beta, kappa);
+      } else {
+        throw std::invalid_argument("coefficients: unknown coefficient '" + name +
+                                    "' for model rough; valid: " + join(coefficient_names()));
+      }
+      CoefficientValue v;
+      v.order = 1;
+      v.exact = false;
+      v.error_estimated = false;  // a first approximation: no higher order to estimate from
+      // θ = inf at β = −1 (no spin cooling state), NaN where the linear scheme has no root.
+      v.defined = std::isfinite(x);
+      v.converged = v.defined;
+      v.value = v.defined ? Rational::from_double(x) : Rational(0);
+      out.push_back(v);
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<TransportModel> make_rough_model() { return std::make_unique<RoughModel>(); }
+
+}  // namespace gkt::detail

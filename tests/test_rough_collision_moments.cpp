@@ -1,0 +1,313 @@
+// The rough-sphere collision engine (docs/theory.md §19) against
+//  (1) Monte Carlo with error bars, the collision applied in vector form from the impulse
+//      (tests/rough_monte_carlo.hpp), d = 3 and d = 2, moments up to degree 4 in the velocities;
+//  (2) the smooth engine at β = −1 (exact equality);
+//  (3) closed forms of the energy change per collision derived by hand (theory.md (19.6)–(19.8)),
+//      numeric and with θ symbolic.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "gkt/collision/quadratic_form_moments.hpp"
+#include "gkt/collision/rough_collision_moments.hpp"
+#include "rough_monte_carlo.hpp"
+
+using gkt::Rational;
+using gkt::RationalPolynomial;
+using gkt::rough_dot_form;
+using gkt::RoughCollisionMoments;
+using gkt::RoughForm;
+using gkt::RoughSlot;
+using gkt::test::RoughCollision;
+
+namespace {
+
+double mc_dot(const RoughCollision& c, RoughSlot a, RoughSlot b) {
+  return gkt::test::dot3(c.w[static_cast<std::size_t>(a)], c.w[static_cast<std::size_t>(b)]);
+}
+
+struct RoughCase {
+  int d;
+  Rational alpha, beta, kappa, theta;
+};
+
+void PrintTo(const RoughCase& k, std::ostream* os) {
+  *os << "d=" << k.d << " alpha=" << k.alpha << " beta=" << k.beta << " kappa=" << k.kappa << " theta=" << k.theta;
+}
+
+}  // namespace
+
+TEST(RoughCollisionRule, MonteCarloRuleObeysTheContactLawAndConservation) {
+  // The test's own rule (impulse form) must reproduce the definition of α and β and conserve
+  // momentum and angular momentum; otherwise the Monte Carlo below checks nothing.
+  for (int d : {2, 3}) {
+    gkt::test::RoughCollisionSampler sampler(d, 0.7, 0.3, 0.4, 1.5, 7);
+    for (int s = 0; s < 200; ++s) {
+      const RoughCollision c = sampler.draw();
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(c.w[4][k] + c.w[5][k], c.w[0][k] + c.w[1][k], 1e-12);  // momentum
+        EXPECT_NEAR(c.w[6][k] - c.w[2][k], c.w[7][k] - c.w[3][k], 1e-12);  // equal spin changes
+      }
+    }
+  }
+  // Exact per-collision check with σ̂ = x̂ (contact law and angular momentum).
+  for (int d : {2, 3}) {
+    RoughCollision c;
+    c.w[0] = {0.3, -0.7, d == 3 ? 0.2 : 0.0};
+    c.w[1] = {-0.5, 0.4, d == 3 ? -0.1 : 0.0};
+    c.w[2] = {d == 3 ? 0.6 : 0.0, d == 3 ? -0.2 : 0.0, 0.9};
+    c.w[3] = {d == 3 ? -0.3 : 0.0, d == 3 ? 0.5 : 0.0, -0.4};
+    const gkt::test::Vec3 sigma{1, 0, 0};
+    const double alpha = 0.7, beta = 0.3, kappa = 0.4;
+    gkt::test::apply_rough_rule(c, sigma, alpha, beta, kappa);
+    auto contact = [&](int pre) {  // g_c = v1 − v2 + (w1 + w2) × σ̂
+      const int o = pre ? 0 : 4;
+      gkt::test::Vec3 ws{};
+      for (int k = 0; k < 3; ++k) ws[k] = c.w[o + 2][k] + c.w[o + 3][k];
+      const auto rim = gkt::test::cross(ws, sigma);
+      gkt::test::Vec3 g{};
+      for (int k = 0; k < 3; ++k) g[k] = c.w[o][k] - c.w[o + 1][k] + rim[k];
+      return g;
+    };
+    const auto g = contact(1), gp = contact(0);
+    EXPECT_NEAR(gp[0], -alpha * g[0], 1e-14);
+    EXPECT_NEAR(gp[1], -beta * g[1], 1e-14);
+    EXPECT_NEAR(gp[2], -beta * g[2], 1e-14);
+    // Angular momentum about the midpoint: r1 = −σ̂/2, r2 = +σ̂/2 (units σ = 1, m = 1), spin
+    // angular momentum I ω = (κ/4)·2w = (κ/2) w.
+    for (int k = 0; k < 3; ++k) {
+      auto l = [&](int o) {
+        const gkt::test::Vec3 r1{-0.5, 0, 0}, r2{0.5, 0, 0};
+        return gkt::test::cross(r1, c.w[o])[k] + gkt::test::cross(r2, c.w[o + 1])[k] +
+               0.5 * kappa * (c.w[o + 2][k] + c.w[o + 3][k]);
+      };
+      EXPECT_NEAR(l(4), l(0), 1e-14) << "d=" << d << " component " << k;
+    }
+  }
+}
+
+class RoughMomentsVsMonteCarlo : public ::testing::TestWithParam<RoughCase> {};
+
+TEST_P(RoughMomentsVsMonteCarlo, MixedMomentsToDegreeFour) {
+  const RoughCase k = GetParam();
+  const auto params = gkt::rough_parameters(k.d, k.alpha, k.beta, k.kappa, k.theta);
+  // Four forms touching every slot: v1'², w1'², v1·v2' + w1'·w2, w2'² − v2·v1.
+  const std::vector<RoughForm> forms{
+      rough_dot_form(RoughSlot::v1_post, RoughSlot::v1_post), rough_dot_form(RoughSlot::w1_post, RoughSlot::w1_post),
+      rough_dot_form(RoughSlot::v1, RoughSlot::v2_post) + rough_dot_form(RoughSlot::w1_post, RoughSlot::w2),
+      rough_dot_form(RoughSlot::w2_post, RoughSlot::w2_post) +
+          gkt::scaled(rough_dot_form(RoughSlot::v2, RoughSlot::v1), Rational(-1))};
+  const RoughCollisionMoments<Rational> engine(params, forms, {2, 2, 2, 1});
+  using F = std::function<double(const RoughCollision&)>;
+  const std::vector<F> mc_forms{
+      [](const RoughCollision& c) { return mc_dot(c, RoughSlot::v1_post, RoughSlot::v1_post); },
+      [](const RoughCollision& c) { return mc_dot(c, RoughSlot::w1_post, RoughSlot::w1_post); },
+      [](const RoughCollision& c) {
+        return mc_dot(c, RoughSlot::v1, RoughSlot::v2_post) + mc_dot(c, RoughSlot::w1_post, RoughSlot::w2);
+      },
+      [](const RoughCollision& c) {
+        return mc_dot(c, RoughSlot::w2_post, RoughSlot::w2_post) - mc_dot(c, RoughSlot::v2, RoughSlot::v1);
+      }};
+  const std::vector<std::array<int, 4>> exponents{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1},
+                                                  {1, 1, 0, 0}, {0, 2, 0, 0}, {2, 0, 0, 0}, {0, 0, 2, 0},
+                                                  {1, 0, 1, 1}, {0, 1, 1, 1}, {1, 1, 1, 0}};
+  gkt::test::RoughCollisionSampler sampler(k.d, k.alpha.to_double(), k.beta.to_double(), k.kappa.to_double(),
+                                           k.theta.to_double(), 20261201);
+  const long samples = 300000;
+  std::vector<double> sw(exponents.size(), 0), swh(exponents.size(), 0), sw2h2(exponents.size(), 0),
+      sw2h(exponents.size(), 0);
+  double w_sum = 0, w2_sum = 0;
+  for (long s = 0; s < samples; ++s) {
+    const RoughCollision c = sampler.draw();
+    if (c.weight == 0) continue;
+    w_sum += c.weight;
+    w2_sum += c.weight * c.weight;
+    std::array<double, 4> values{};
+    for (std::size_t v = 0; v < 4; ++v) values[v] = mc_forms[v](c);
+    for (std::size_t e = 0; e < exponents.size(); ++e) {
+      double h = 1;
+      for (std::size_t v = 0; v < 4; ++v) h *= std::pow(values[v], exponents[e][v]);
+      swh[e] += c.weight * h;
+      sw2h2[e] += c.weight * c.weight * h * h;
+      sw2h[e] += c.weight * c.weight * h;
+    }
+  }
+  for (std::size_t e = 0; e < exponents.size(); ++e) {
+    const double mean = swh[e] / w_sum;
+    const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+    const double exact = engine.moment(exponents[e]).to_double();
+    // 5 standard errors: a correct engine fails this with probability < 1e-6 per moment.
+    EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
+    EXPECT_LT(error, 0.04 * (std::abs(exact) + 1)) << "Monte Carlo too noisy to discriminate, moment " << e;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, RoughMomentsVsMonteCarlo,
+    ::testing::Values(RoughCase{3, Rational(7, 10), Rational(2, 5), Rational(2, 5), Rational(3, 2)},
+                      RoughCase{3, Rational(1), Rational(1), Rational(1, 4), Rational(1, 2)},
+                      RoughCase{2, Rational(3, 5), Rational(-3, 10), Rational(1, 2), Rational(1, 2)},
+                      RoughCase{2, Rational(9, 10), Rational(4, 5), Rational(1), Rational(2)}),
+    [](const auto& info) { return std::to_string(info.index); });
+
+// At β = −1 the spin decouples: moments of translational forms are the smooth engine's, exactly,
+// and the spin is unchanged by the collision.
+TEST(RoughCollisionMoments, SmoothLimitIsTheSmoothEngine) {
+  for (int d : {2, 3}) {
+    const Rational alpha(3, 5);
+    const auto params = gkt::rough_parameters(d, alpha, Rational(-1), Rational(2, 5), Rational(7, 3));
+    const std::vector<RoughForm> forms{rough_dot_form(RoughSlot::v1_post, RoughSlot::v1_post),
+                                       rough_dot_form(RoughSlot::v1, RoughSlot::v2_post),
+                                       rough_dot_form(RoughSlot::v2, RoughSlot::v2),
+                                       rough_dot_form(RoughSlot::w1_post, RoughSlot::w1_post) +
+                                           gkt::scaled(rough_dot_form(RoughSlot::w1, RoughSlot::w1), Rational(-1))};
+    const RoughCollisionMoments<Rational> rough(params, forms, {3, 2, 2, 2});
+    gkt::CollisionPair pair;
+    pair.dimension = d;
+    const std::vector<gkt::VelocityForm> smooth_forms{
+        gkt::dot_form(gkt::slot_vector(gkt::Slot::v1_post), gkt::slot_vector(gkt::Slot::v1_post)),
+        gkt::dot_form(gkt::slot_vector(gkt::Slot::v1), gkt::slot_vector(gkt::Slot::v2_post)),
+        gkt::dot_form(gkt::slot_vector(gkt::Slot::v2), gkt::slot_vector(gkt::Slot::v2))};
+    const gkt::QuadraticFormMoments<Rational> smooth(pair, alpha, smooth_forms, {3, 2, 2});
+    for (int a = 0; a <= 3; ++a)
+      for (int b = 0; b <= 2; ++b)
+        for (int c = 0; c <= 2; ++c) {
+          EXPECT_EQ(rough.moment({a, b, c, 0}), smooth.moment({a, b, c, 0})) << d << a << b << c;
+          EXPECT_TRUE(rough.moment({a, b, c, 1}).is_zero());
+          EXPECT_TRUE(rough.moment({a, b, c, 2}).is_zero());
+        }
+  }
+}
+
+namespace {
+
+/// The translational and rotational energy forms of particle 1 and the total, in units where
+/// E = v1² + v2² + κ(w1² + w2²): ΔE_t1 = v1'² − v1², ΔE_r1 = w1'² − w1², ΔE.
+std::vector<RoughForm> energy_change_forms(const Rational& kappa) {
+  const RoughForm dv1 = rough_dot_form(RoughSlot::v1_post, RoughSlot::v1_post) +
+                        gkt::scaled(rough_dot_form(RoughSlot::v1, RoughSlot::v1), Rational(-1));
+  const RoughForm dw1 = rough_dot_form(RoughSlot::w1_post, RoughSlot::w1_post) +
+                        gkt::scaled(rough_dot_form(RoughSlot::w1, RoughSlot::w1), Rational(-1));
+  const RoughForm dv2 = rough_dot_form(RoughSlot::v2_post, RoughSlot::v2_post) +
+                        gkt::scaled(rough_dot_form(RoughSlot::v2, RoughSlot::v2), Rational(-1));
+  const RoughForm dw2 = rough_dot_form(RoughSlot::w2_post, RoughSlot::w2_post) +
+                        gkt::scaled(rough_dot_form(RoughSlot::w2, RoughSlot::w2), Rational(-1));
+  return {dv1, dw1, dv1 + dv2 + gkt::scaled(dw1 + dw2, kappa)};
+}
+
+}  // namespace
+
+// Hand-derived (theory.md (19.6)–(19.8)), with η_n = (1+α)/2, η_t = (1+β)κ/(2(1+κ)), τ = θ/κ:
+//   ⟨ΔE⟩    = −(1 − α²) − ½ (1 − β²) (κ/(1+κ)) (d−1)(1 + τ),
+//   ⟨Δv1²⟩  = −2η_n(1−η_n) − (d−1) η_t (1 − η_t) + (d−1) η_t² τ,
+//   ⟨Δw1²⟩  = (d−1)(η_t/κ) [−τ + (η_t/κ)(1 + τ)].
+TEST(RoughCollisionMoments, EnergyChangePerCollisionClosedForms) {
+  for (int d : {2, 3})
+    for (const auto& [alpha, beta, kappa, theta] :
+         {std::array<Rational, 4>{Rational(7, 10), Rational(2, 5), Rational(2, 5), Rational(3, 2)},
+          std::array<Rational, 4>{Rational(1, 5), Rational(-4, 5), Rational(1), Rational(1, 3)},
+          std::array<Rational, 4>{Rational(1), Rational(1), Rational(1, 2), Rational(1)}}) {
+      const RoughCollisionMoments<Rational> m(gkt::rough_parameters(d, alpha, beta, kappa, theta),
+                                              energy_change_forms(kappa), {1, 1, 1});
+      const Rational one(1), tau = theta / kappa, dm1(d - 1);
+      const Rational en = (one + alpha) / Rational(2), et = (one + beta) * kappa / (Rational(2) * (one + kappa));
+      EXPECT_EQ(m.moment({0, 0, 1, 0}),
+                -(one - alpha * alpha) - (one - beta * beta) * kappa / (one + kappa) * dm1 * (one + tau) / Rational(2));
+      EXPECT_EQ(m.moment({1, 0, 0, 0}), -Rational(2) * en * (one - en) - dm1 * et * (one - et) + dm1 * et * et * tau);
+      EXPECT_EQ(m.moment({0, 1, 0, 0}), dm1 * (et / kappa) * (-tau + (et / kappa) * (one + tau)));
+    }
+}
+
+// θ symbolic (ring variable λ = √(θ/κ)): the energy change is 1 − α² plus a polynomial in λ²,
+// and evaluating any symbolic moment at λ² = θ/κ reproduces the numeric engine.
+TEST(RoughCollisionMoments, SymbolicTemperatureRatio) {
+  const Rational alpha(4, 5), beta(1, 2), kappa(2, 5);
+  for (int d : {2, 3}) {
+    const auto forms = energy_change_forms(kappa);
+    const RoughCollisionMoments<RationalPolynomial> symbolic(
+        gkt::rough_parameters_symbolic_temperature(d, alpha, beta, kappa), forms, {2, 2, 1});
+    const Rational one(1);
+    RationalPolynomial expected = RationalPolynomial::variable();
+    expected *= RationalPolynomial::variable();
+    expected += RationalPolynomial(one);
+    expected *= -(one - beta * beta) * kappa / (one + kappa) * Rational(d - 1) / Rational(2);
+    expected -= RationalPolynomial(one - alpha * alpha);
+    EXPECT_EQ(symbolic.moment({0, 0, 1, 0}), expected);
+    for (const Rational& theta : {Rational(1, 3), Rational(5, 4)}) {
+      const RoughCollisionMoments<Rational> numeric(gkt::rough_parameters(d, alpha, beta, kappa, theta), forms,
+                                                    {2, 2, 1});
+      // λ = √(θ/κ) is irrational in general; the moments are even in λ: evaluate at ±√ via λ² only.
+      for (const auto& k : {std::array<int, 4>{2, 0, 0, 0}, {1, 1, 0, 0}, {0, 2, 1, 0}, {2, 2, 1, 0}}) {
+        const RationalPolynomial p = symbolic.moment(k);
+        Rational value(0), power(1);
+        for (long j = 0; j <= p.degree(); ++j) {
+          if (j % 2 == 1) {
+            EXPECT_TRUE(p.coefficient(j).is_zero()) << "odd power of lambda";
+            continue;
+          }
+          value += p.coefficient(j) * power;
+          power *= theta / kappa;
+        }
+        EXPECT_EQ(value, numeric.moment(k)) << "d=" << d << " theta=" << theta;
+      }
+    }
+  }
+}
+
+TEST(RoughCollisionMoments, RejectsBadParametersAndMixedForms) {
+  EXPECT_THROW(gkt::rough_parameters(3, Rational(1, 2), Rational(3, 2), Rational(2, 5), Rational(1)),
+               std::invalid_argument);
+  EXPECT_THROW(gkt::rough_parameters(3, Rational(1, 2), Rational(0), Rational(0), Rational(1)), std::invalid_argument);
+  EXPECT_THROW(gkt::rough_parameters(3, Rational(0), Rational(0), Rational(2, 5), Rational(1)), std::invalid_argument);
+  EXPECT_THROW(gkt::rough_parameters(4, Rational(1), Rational(0), Rational(2, 5), Rational(1)), std::invalid_argument);
+  EXPECT_THROW(gkt::rough_parameters(3, Rational(1), Rational(0), Rational(2, 5), Rational(0)), std::invalid_argument);
+  const auto p = gkt::rough_parameters(3, Rational(1), Rational(0), Rational(2, 5), Rational(1));
+  const auto disks = gkt::rough_parameters(2, Rational(1), Rational(0), Rational(1, 2), Rational(1));
+  EXPECT_THROW(RoughCollisionMoments<Rational>(disks, {rough_dot_form(RoughSlot::v1, RoughSlot::w1)}, {1}),
+               std::invalid_argument);
+  (void)p;
+}
+
+// Forms coupling v and w (3D): the normal block couples, the tangential block becomes Hermitian
+// (theory.md (19.5a)). Moments of (v1·w1)², (v1'·w1')², (v1'·w2)(v2·w1'), … against Monte Carlo.
+TEST(RoughCollisionMoments, TranslationSpinCouplingAgainstMonteCarlo) {
+  const Rational alpha(7, 10), beta(1, 2), kappa(2, 5), theta(3, 2);
+  const auto params = gkt::rough_parameters(3, alpha, beta, kappa, theta);
+  const std::vector<RoughForm> forms{
+      rough_dot_form(RoughSlot::v1_post, RoughSlot::w1_post), rough_dot_form(RoughSlot::v1, RoughSlot::w1),
+      rough_dot_form(RoughSlot::v1_post, RoughSlot::v1_post),
+      rough_dot_form(RoughSlot::v2, RoughSlot::w1_post) + rough_dot_form(RoughSlot::w2_post, RoughSlot::w2_post)};
+  const RoughCollisionMoments<Rational> engine(params, forms, {2, 2, 1, 2});
+  const std::vector<std::array<int, 4>> exponents{{1, 0, 0, 0}, {2, 0, 0, 0}, {0, 2, 0, 0}, {1, 1, 0, 0}, {2, 0, 1, 0},
+                                                  {0, 0, 0, 1}, {1, 0, 0, 1}, {0, 0, 0, 2}, {2, 2, 0, 0}, {0, 1, 0, 1}};
+  gkt::test::RoughCollisionSampler sampler(3, 0.7, 0.5, 0.4, 1.5, 4242);
+  const long samples = 300000;
+  std::vector<double> swh(exponents.size(), 0), sw2h2(exponents.size(), 0), sw2h(exponents.size(), 0);
+  double w_sum = 0, w2_sum = 0;
+  for (long s = 0; s < samples; ++s) {
+    const RoughCollision c = sampler.draw();
+    if (c.weight == 0) continue;
+    w_sum += c.weight;
+    w2_sum += c.weight * c.weight;
+    const std::array<double, 4> values{
+        mc_dot(c, RoughSlot::v1_post, RoughSlot::w1_post), mc_dot(c, RoughSlot::v1, RoughSlot::w1),
+        mc_dot(c, RoughSlot::v1_post, RoughSlot::v1_post),
+        mc_dot(c, RoughSlot::v2, RoughSlot::w1_post) + mc_dot(c, RoughSlot::w2_post, RoughSlot::w2_post)};
+    for (std::size_t e = 0; e < exponents.size(); ++e) {
+      double h = 1;
+      for (std::size_t v = 0; v < 4; ++v) h *= std::pow(values[v], exponents[e][v]);
+      swh[e] += c.weight * h;
+      sw2h2[e] += c.weight * c.weight * h * h;
+      sw2h[e] += c.weight * c.weight * h;
+    }
+  }
+  for (std::size_t e = 0; e < exponents.size(); ++e) {
+    const double mean = swh[e] / w_sum;
+    const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+    const double exact = engine.moment(exponents[e]).to_double();
+    EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
+    EXPECT_LT(error, 0.04 * (std::abs(exact) + 1)) << "moment " << e;
+  }
+}
