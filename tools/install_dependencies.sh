@@ -3,7 +3,7 @@
 # Skips apt-get entirely when every package is already installed.
 set -euo pipefail
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config python3   # python3: tools/check_layers.py
   libflint-dev libgmp-dev libmpfr-dev   # exact arithmetic (FLINT fmpq/fmpq_poly/fmpq_mat, MPFR rounding)
   libeigen3-dev libgsl-dev              # floating-point linear algebra; GSL ODEs (viscoelastic contact), RNG (Monte Carlo checks)
   libsundials-dev                       # CVODE: time evolution of the cooling gas
