@@ -154,8 +154,8 @@ TEST(CApi, LastErrorIsPerThread) {
     theirs = gkt_last_error();
   });
   other.join();
-  EXPECT_EQ(mine, "alpha: must be a number in (0, 1]");
-  EXPECT_EQ(theirs, "dimension: must be 2 or 3, got 5");
+  EXPECT_EQ(mine.rfind("alpha: must be a number in (0, 1]", 0), 0u) << mine;
+  EXPECT_EQ(theirs.rfind("dimension: must be 2 or 3", 0), 0u) << theirs;
   EXPECT_EQ(std::string(gkt_last_error()), mine);
 }
 
