@@ -70,7 +70,7 @@ module gkt
   public :: gkt_enskog_first_sonine_values, gkt_enskog_first_sonine_values_at, gkt_enskog_first_sonine_physical
   public :: gkt_model_create, gkt_model_destroy, gkt_model_set_number, gkt_model_set_choice, gkt_model_evaluate
   public :: gkt_binary_table_create, gkt_binary_table_destroy, gkt_binary_table_interpolation_error
-  public :: gkt_binary_table_evaluate, gkt_binary_table_evaluate_reduced
+  public :: gkt_binary_table_evaluate, gkt_binary_table_evaluate_reduced, gkt_binary_table_evaluate_cells
 
   ! The per-cell calls bind directly: no conversion on the way.
   interface
@@ -112,6 +112,15 @@ module gkt
       real(c_double), value :: alpha
       type(gkt_enskog_state), intent(in) :: state
       type(gkt_enskog_first_sonine), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_binary_table_evaluate_cells(table, cells, fraction_1, number_density, temperature, out) &
+        bind(C, name="gkt_binary_table_evaluate_cells") result(status)
+      import :: c_ptr, c_size_t, c_double, c_int, gkt_binary_transport
+      type(c_ptr), value :: table
+      integer(c_size_t), value :: cells
+      real(c_double), intent(in) :: fraction_1(*), number_density(*), temperature(*)
+      type(gkt_binary_transport), intent(out) :: out(*)
       integer(c_int) :: status
     end function
     function gkt_enskog_first_sonine_physical(dimension, alpha, gas, out) &
@@ -333,6 +342,18 @@ contains
     type(gkt_binary_transport), intent(out) :: out
     integer(c_int) :: status
     status = c_binary_table_evaluate(table%handle, fraction_1, number_density, temperature, out)
+  end function
+
+  !> Evaluates the table at the states (fraction_1(i), number_density(i), temperature(i)) of
+  !> size(fraction_1) cells into out(i), physical units; every state is checked first (the message
+  !> of a bad one names its index, from 0).
+  function gkt_binary_table_evaluate_cells(table, fraction_1, number_density, temperature, out) result(status)
+    type(gkt_binary_table), intent(in) :: table
+    real(c_double), intent(in) :: fraction_1(:), number_density(size(fraction_1)), temperature(size(fraction_1))
+    type(gkt_binary_transport), intent(out) :: out(size(fraction_1))
+    integer(c_int) :: status
+    status = c_binary_table_evaluate_cells(table%handle, int(size(fraction_1), c_size_t), fraction_1, number_density, &
+                                           temperature, out)
   end function
 
   !> Evaluates the table at mole fraction x_1 and packing fraction phi in reduced units.

@@ -215,6 +215,14 @@ typedef struct gkt_binary_transport {
 gkt_status gkt_binary_table_evaluate(const gkt_binary_table* table, double fraction_1, double number_density,
                                      double temperature, gkt_binary_transport* out);
 
+/** Evaluates the table at `cells` states of the caller's arrays (out[i] from fraction_1[i],
+ *  number_density[i], temperature[i], physical units as gkt_binary_table_evaluate). Every state is
+ *  checked before any is evaluated: on a bad one nothing is written and the message names its
+ *  index ("fraction_1[3]: …"). Thread-safe, no allocation. */
+gkt_status gkt_binary_table_evaluate_cells(const gkt_binary_table* table, size_t cells, const double* fraction_1,
+                                           const double* number_density, const double* temperature,
+                                           gkt_binary_transport* out);
+
 /** Evaluates the table at x_1 = fraction_1 in [0, 1] and packing fraction φ in reduced units (the
  *  columns of `gkt table` for a binary mixture scene, hcs = "maxwellian"). φ must be 0 for a dilute
  *  table and in [0, max_packing_fraction] for a dense one. Thread-safe, no allocation. */

@@ -36,9 +36,38 @@ namespace gkt::c_api {
 namespace {
 
 /// Throws a Refusal unless fraction_1 is in [0, 1].
-void require_fraction(double fraction_1) {
+void require_fraction(double fraction_1, const char* field) {
   if (!(fraction_1 >= 0 && fraction_1 <= 1))
-    throw Refusal{GKT_INVALID_ARGUMENT, "fraction_1: must be a number in [0, 1], got " + number(fraction_1)};
+    throw Refusal{GKT_INVALID_ARGUMENT, std::string(field) + ": must be a number in [0, 1], got " + number(fraction_1)};
+}
+
+/// Returns "[i]", the suffix that names cell i in a message.
+std::string index(std::size_t i) {
+  std::string out(1, '[');
+  out += std::to_string(i);
+  out += ']';
+  return out;
+}
+
+/// True if (x_1, n, T) is a valid state the table covers (the checks of require_state, no message).
+bool covers(const gkt_binary_table& t, double x1, double n, double temperature) {
+  if (!(x1 >= 0 && x1 <= 1 && n > 0 && std::isfinite(n) && temperature > 0 && std::isfinite(temperature))) return false;
+  return t.max_packing_fraction <= 0 ||
+         n * (x1 * t.species_volume[0] + (1 - x1) * t.species_volume[1]) <= t.max_packing_fraction;
+}
+
+/// Throws a Refusal unless (x_1, n, T) is a state the table covers; suffix names the cell ("[3]").
+void require_state(const gkt_binary_table& t, double x1, double n, double temperature, const char* suffix = "") {
+  require_fraction(x1, (std::string("fraction_1") + suffix).c_str());
+  require_positive(n, (std::string("number_density") + suffix).c_str());
+  require_positive(temperature, (std::string("temperature") + suffix).c_str());
+  if (t.max_packing_fraction > 0) {
+    const double phi = n * (x1 * t.species_volume[0] + (1 - x1) * t.species_volume[1]);
+    if (phi > t.max_packing_fraction)
+      throw Refusal{GKT_OUT_OF_RANGE,
+                    std::string("number_density") + suffix + ": the packing fraction n v_d sum_i x_i sigma_i^d = " +
+                        number(phi) + " exceeds the table's max_packing_fraction " + number(t.max_packing_fraction)};
+  }
 }
 
 gkt_binary_transport to_c(const BinaryTransport& v) {
@@ -57,18 +86,6 @@ gkt_binary_transport to_c(const BinaryTransport& v) {
   out.bulk_viscosity = v.bulk_viscosity;
   out.cooling_rate_first_order = v.cooling_rate_first_order;
   return out;
-}
-
-/// Evaluates the table at a checked state; GKT_OUT_OF_RANGE above a dense table's φ_max.
-BinaryTransport evaluate_checked(const gkt_binary_table& t, double x1, double n, double temperature) {
-  if (t.max_packing_fraction > 0) {
-    const double phi = n * (x1 * t.species_volume[0] + (1 - x1) * t.species_volume[1]);
-    if (phi > t.max_packing_fraction)
-      throw Refusal{GKT_OUT_OF_RANGE,
-                    "number_density: the packing fraction n v_d sum_i x_i sigma_i^d = " + number(phi) +
-                        " exceeds the table's max_packing_fraction " + number(t.max_packing_fraction)};
-  }
-  return t.table.evaluate(x1, n, temperature);
 }
 
 }  // namespace
@@ -130,10 +147,29 @@ gkt_status gkt_binary_table_evaluate(const gkt_binary_table* table, double fract
   return guarded([&] {
     require_pointer(table, "table");
     require_pointer(out, "out");
-    gkt::c_api::require_fraction(fraction_1);
-    gkt::c_api::require_positive(number_density, "number_density");
-    gkt::c_api::require_positive(temperature, "temperature");
-    *out = gkt::c_api::to_c(gkt::c_api::evaluate_checked(*table, fraction_1, number_density, temperature));
+    if (!gkt::c_api::covers(*table, fraction_1, number_density, temperature))  // messages only on failure
+      gkt::c_api::require_state(*table, fraction_1, number_density, temperature);
+    *out = gkt::c_api::to_c(table->table.evaluate(fraction_1, number_density, temperature));
+    return GKT_OK;
+  });
+}
+
+gkt_status gkt_binary_table_evaluate_cells(const gkt_binary_table* table, size_t cells, const double* fraction_1,
+                                           const double* number_density, const double* temperature,
+                                           gkt_binary_transport* out) {
+  return guarded([&] {
+    require_pointer(table, "table");
+    require_pointer(out, "out");
+    require_pointer(fraction_1, "fraction_1");
+    require_pointer(number_density, "number_density");
+    require_pointer(temperature, "temperature");
+    const gkt_binary_table& t = *table;
+    for (std::size_t i = 0; i < cells; ++i) {
+      if (!gkt::c_api::covers(t, fraction_1[i], number_density[i], temperature[i]))  // messages only on failure
+        gkt::c_api::require_state(t, fraction_1[i], number_density[i], temperature[i], gkt::c_api::index(i).c_str());
+    }
+    for (std::size_t i = 0; i < cells; ++i)
+      out[i] = gkt::c_api::to_c(table->table.evaluate(fraction_1[i], number_density[i], temperature[i]));
     return GKT_OK;
   });
 }
@@ -143,7 +179,7 @@ gkt_status gkt_binary_table_evaluate_reduced(const gkt_binary_table* table, doub
   return guarded([&] {
     require_pointer(table, "table");
     require_pointer(out, "out");
-    gkt::c_api::require_fraction(fraction_1);
+    gkt::c_api::require_fraction(fraction_1, "fraction_1");
     const gkt_binary_table& t = *table;
     if (!(packing_fraction >= 0 && packing_fraction <= t.max_packing_fraction)) {
       if (packing_fraction > t.max_packing_fraction && std::isfinite(packing_fraction))

@@ -255,6 +255,21 @@ static void binary_table(void) {
                "packing_fraction: must be in [0, 0]");
   EXPECT_ERROR(gkt_binary_table_evaluate(NULL, x1, n, t, &p), GKT_INVALID_ARGUMENT, "table: must not be NULL");
   CHECK(memcmp(&p, &untouched, sizeof p) == 0);
+  {
+    /* A batch equals the single calls; a bad cell is named by its index and nothing is written. */
+    const double xs[3] = {0.1, 0.5, 0.9}, ns[3] = {0.01, 0.02, 0.03}, ts[3] = {1, 2, 3}, bad_ts[3] = {1, -2, 3};
+    gkt_binary_transport batch[3], single;
+    CHECK(gkt_binary_table_evaluate_cells(table, 3, xs, ns, ts, batch) == GKT_OK);
+    for (i = 0; i < 3; ++i) {
+      CHECK(gkt_binary_table_evaluate(table, xs[i], ns[i], ts[i], &single) == GKT_OK);
+      CHECK(memcmp(&single, &batch[i], sizeof single) == 0);
+    }
+    batch[0] = untouched;
+    EXPECT_ERROR(gkt_binary_table_evaluate_cells(table, 3, xs, ns, bad_ts, batch), GKT_INVALID_ARGUMENT,
+                 "temperature[1]: must be a finite number > 0");
+    CHECK(memcmp(&batch[0], &untouched, sizeof untouched) == 0);
+    EXPECT_ERROR(gkt_binary_table_evaluate_cells(table, 3, NULL, ns, ts, batch), GKT_INVALID_ARGUMENT, "fraction_1:");
+  }
   gkt_binary_table_destroy(table);
   gkt_binary_table_destroy(NULL);
 
@@ -265,6 +280,12 @@ static void binary_table(void) {
   EXPECT_ERROR(gkt_binary_table_evaluate_reduced(table, 0.5, 0.25, &r), GKT_OUT_OF_RANGE, "packing_fraction:");
   EXPECT_ERROR(gkt_binary_table_evaluate(table, 0.5, 1.0, 1.0, &r), GKT_OUT_OF_RANGE,
                "number_density: the packing fraction");
+  {
+    const double xs[2] = {0.5, 0.5}, ns[2] = {0.1, 1.0}, ts[2] = {1, 1};
+    gkt_binary_transport batch[2];
+    EXPECT_ERROR(gkt_binary_table_evaluate_cells(table, 2, xs, ns, ts, batch), GKT_OUT_OF_RANGE,
+                 "number_density[1]: the packing fraction");
+  }
   gkt_binary_table_destroy(table);
 
   /* Refused builds: NULL handle out, message naming the field. */
