@@ -304,3 +304,46 @@ TEST(PairCorrelation, RegistryAndDerivative) {
     EXPECT_NE(std::string(e.what()).find("valid: \"carnahan-starling\""), std::string::npos) << e.what();
   }
 }
+
+// The double forms of every registered closure (the per-cell χ of enskog_state) against the exact
+// rational ones at the same φ (the double's exact value), to 1e-14 relative, over [0, φ_max].
+TEST(PairCorrelation, DoubleFormsMatchExact) {
+  for (const auto& closure : gkt::pair_correlations())
+    for (int d : {2, 3}) {
+      const double top = gkt::max_packing_fraction(d).to_double();
+      for (int k = 0; k <= 64; ++k) {
+        const double phi = top * k / 64;
+        const Rational exact_phi = Rational::from_double(phi);
+        const double chi = closure.contact_value(d, exact_phi).to_double();
+        const double dchi = closure.packing_derivative(d, exact_phi).to_double();
+        EXPECT_NEAR(closure.contact_value_double(d, phi), chi, 1e-14 * std::abs(chi)) << closure.name << d << phi;
+        EXPECT_NEAR(closure.packing_derivative_double(d, phi), dchi, 1e-14 * std::abs(dchi))
+            << closure.name << d << phi;
+        const gkt::EnskogState state = gkt::enskog_state(d, phi, closure);
+        EXPECT_EQ(state.packing_fraction, phi);
+        EXPECT_EQ(state.chi, closure.contact_value_double(d, phi));
+        EXPECT_EQ(state.phi_dchi, closure.packing_derivative_double(d, phi));
+      }
+    }
+  EXPECT_EQ(gkt::enskog_state(3, 0.25).chi, gkt::enskog_state(3, 0.25, gkt::pair_correlations().front()).chi);
+}
+
+// enskog_state refuses a dimension other than 2, 3 and φ outside [0, φ_max] (nan included),
+// naming the field and the range.
+TEST(PairCorrelation, EnskogStateRefusesBadInput) {
+  auto message = [](int d, double phi) {
+    try {
+      (void)gkt::enskog_state(d, phi);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(3, 0.51), "packing_fraction: must be a number in [0, 0.5] for dimension = 3, got 0.51");
+  EXPECT_EQ(message(2, 0.71), "packing_fraction: must be a number in [0, 0.7] for dimension = 2, got 0.71");
+  EXPECT_EQ(message(3, -0.1), "packing_fraction: must be a number in [0, 0.5] for dimension = 3, got -0.1");
+  EXPECT_NE(message(3, std::nan("")).find("packing_fraction: must be"), std::string::npos);
+  EXPECT_EQ(message(4, 0.1), "dimension: must be 2 or 3, got 4");
+  EXPECT_NO_THROW((void)gkt::enskog_state(3, 0.5));
+  EXPECT_NO_THROW((void)gkt::enskog_state(2, 0.7));
+}

@@ -15,7 +15,7 @@ Rules (each violation is one line "file:line: rule: what"; exit status 1 if any)
   room      inside transport, a room includes a room it may not (ROOM_MAY_INCLUDE below), or a
             transport file is in no declared room.
   private   a public header (include/) includes a private header (lib/).
-  front     a front end (tools/gkt, tools/benchmark, examples/<name>) includes anything but a
+  front     a front end (tools/gkt, tools/benchmark, lib/c_api, examples/<name>) includes anything but a
             public header gkt/... or a header of its own folder.
   unknown   a quoted include in include/, lib/ or a front end that names no file of the tree.
 Standard-library and third-party headers (<...> not starting with gkt/) are not checked.
@@ -41,7 +41,7 @@ ROOM_MAY_INCLUDE = {
 # Declared exceptions (including room -> included room), each with its reason. Keep this empty.
 ROOM_EXCEPTIONS = {}
 
-FRONT_ENDS = ["tools/gkt", "tools/benchmark"]  # plus every examples/<name>
+FRONT_ENDS = ["tools/gkt", "tools/benchmark", "lib/c_api"]  # plus every examples/<name>
 SOURCE_SUFFIXES = (".hpp", ".cpp", ".h", ".inc")
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^">]+)[">]')
 
@@ -66,6 +66,8 @@ def place(rel):
             return "models", None, True
     elif parts[0] == "lib" and len(parts) > 1:
         inner, public = parts[1:], False
+        if front_end_root(rel) is not None:  # lib/c_api: the C API, a front end compiled as a library
+            return "front end", None, False
     else:
         return None
     floor = inner[0]
@@ -208,14 +210,19 @@ def self_test():
         "tools/gkt/scene.hpp": "",
         "tools/gkt/main.cpp": '#include "scene.hpp"\n#include "gkt/cell.hpp"\n#include <CLI/CLI.hpp>\n',
         "examples/consumer/main.cpp": "#include <gkt/cell.hpp>\n",
+        "include/gkt/gkt.h": "#include <stddef.h>\n",
+        "lib/c_api/guard.hpp": '#include "gkt/gkt.h"\n',
+        "lib/c_api/api.cpp": '#include "gkt/cell.hpp"\n#include "guard.hpp"\n',
     }
-    cases = {
-        "floor": {"include/gkt/operators/op.hpp": '#include "gkt/transport/common/gas.hpp"\n'},
-        "room": {"lib/transport/mixture/mix.cpp": '#include "gkt/transport/monodisperse/ns.hpp"\n'},
-        "private": {"include/gkt/transport/common/gas.hpp": '#include "transport/common/pieces.hpp"\n'},
-        "front": {"tools/gkt/main.cpp": '#include "transport/common/pieces.hpp"\n'},
-        "unknown": {"lib/transport/mixture/mix.cpp": '#include "transport/common/missing.hpp"\n'},
-    }
+    cases = [
+        ("floor", {"include/gkt/operators/op.hpp": '#include "gkt/transport/common/gas.hpp"\n'}),
+        ("floor", {"lib/transport/mixture/mix.cpp": '#include "c_api/guard.hpp"\n'}),
+        ("room", {"lib/transport/mixture/mix.cpp": '#include "gkt/transport/monodisperse/ns.hpp"\n'}),
+        ("private", {"include/gkt/transport/common/gas.hpp": '#include "transport/common/pieces.hpp"\n'}),
+        ("front", {"tools/gkt/main.cpp": '#include "transport/common/pieces.hpp"\n'}),
+        ("front", {"lib/c_api/api.cpp": '#include "transport/common/pieces.hpp"\n'}),
+        ("unknown", {"lib/transport/mixture/mix.cpp": '#include "transport/common/missing.hpp"\n'}),
+    ]
 
     def run(files):
         with tempfile.TemporaryDirectory() as root:
@@ -230,14 +237,14 @@ def self_test():
     found = run(clean)
     if found:
         failures.append("the clean tree fails: " + "; ".join(found))
-    for rule, change in cases.items():
+    for rule, change in cases:
         found = run({**clean, **change})
         if len(found) != 1 or f": {rule}: " not in found[0]:
             failures.append(f"rule {rule}: expected one '{rule}' violation, got {found}")
     for f in failures:
         print("check_layers self-test: " + f, file=sys.stderr)
     if not failures:
-        print(f"check_layers self-test: ok (clean tree passes; {len(cases)} violations caught: {', '.join(cases)})")
+        print(f"check_layers self-test: ok (clean tree passes; {len(cases)} violations caught: {', '.join(r for r, _ in cases)})")
     return 1 if failures else 0
 
 

@@ -9,6 +9,7 @@ packages=(
   libsundials-dev                       # CVODE: time evolution of the cooling gas
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev   # scenes, command line, JSON output
   libgtest-dev libbenchmark-dev         # tests and benchmarks
+  gfortran python3                      # the Fortran module over the C API and its example (GKT_BUILD_FORTRAN); its check against gkt table
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -11,9 +11,9 @@
 
 #include "gkt/collision/collision_moments.hpp"
 #include "gkt/operators/mixture_collisional_transfer.hpp"
+#include "gkt/transport/common/reference_gas.hpp"
 #include "transport/common/galerkin_pieces.hpp"
 #include "transport/common/nearby_rational.hpp"
-#include "transport/common/reference_gas.hpp"
 
 namespace gkt {
 
@@ -130,7 +130,7 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order)
   state_ = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
   sensitivity_ = mixture_cooling_sensitivity(mixture, state_);
   const int d = mixture.dimension;
-  const double c_d = detail::geometric_factor(d);
+  const double c_d = geometric_factor(d);
   // Units n = 1, m̄ = 1, σ̄ = 1, velocity √(2T/m̄) = 1 (so T = 1/2): θ_k = m_k/γ_k. Lengths along a
   // gradient are in mean free paths 1/(n σ̄^{d−1}), so a collisional transfer over σ_ij carries
   // n σ̄^d σ_ij/σ̄ (theory.md (18.3)).
@@ -141,10 +141,10 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order)
     fraction_.push_back(mixture.species[k].fraction);
     diameter_moment += fraction_[k] * std::pow(mixture.species[k].diameter / mixture.mean_diameter(), d);
   }
-  nu0_ = detail::unit_reference_gas(d).collision_frequency;
+  nu0_ = unit_reference_gas(d).collision_frequency;
   zeta_ = state_.cooling_rate * nu0_;
   dense_ = mixture.packing_fraction > 0;
-  const double n_star = mixture.packing_fraction / (detail::unit_sphere_volume(d) * diameter_moment);  // n σ̄^d
+  const double n_star = mixture.packing_fraction / (unit_sphere_volume(d) * diameter_moment);  // n σ̄^d
   const std::vector<double> chi = mixture.contact_values();
   const int nv = max_order + 1, nt = max_order, ns = max_order + 2;
   const auto S = static_cast<Eigen::Index>(s_);
@@ -388,7 +388,7 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order) const 
   const int d = dimension_;
   const std::size_t s = s_;
   const auto S = static_cast<Eigen::Index>(s);
-  const detail::ReferenceGas ref = detail::unit_reference_gas(d);  // η0, κ0, D0 of (m̄, σ̄) in these units
+  const ReferenceGas ref = unit_reference_gas(d);  // η0, κ0, D0 of (m̄, σ̄) in these units
   const double eta0 = ref.viscosity, kappa0 = ref.conductivity, d0 = ref.self_diffusion;
   const double temperature = 0.5;
 
@@ -554,7 +554,7 @@ void MixtureNavierStokes::Impl::species_drift(int order, const Eigen::MatrixXd& 
     for (std::size_t j = 0; j < s_; ++j) density[i][j] = modes.density[j](I) / std::sqrt(theta_[i]);
   }
   // w_i = (1/d) M(0,0) × the specific fluxes, in units of D0.
-  const double to_drift = vector_m_(0, 0) / d / detail::unit_reference_gas(d).self_diffusion;
+  const double to_drift = vector_m_(0, 0) / d / unit_reference_gas(d).self_diffusion;
   out.drift.assign(s_ * s_, 0.0);
   out.thermal_drift.assign(s_, 0.0);
   for (std::size_t i = 0; i < s_; ++i) {

@@ -7,13 +7,10 @@
 #include <string>
 
 #include "gkt/transport/common/pair_correlation.hpp"
+#include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
-#include "transport/common/reference_gas.hpp"
 
 namespace gkt {
-
-using detail::reference_gas;
-using detail::ReferenceGas;
 
 BinaryTransportTable::Reduced BinaryTransportTable::solve(const Mixture& mixture, int order) {
   const MixtureNavierStokes ns(mixture, order);
@@ -84,7 +81,7 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   for (std::size_t i = 0; i < 2; ++i) {
     mass_[i] = mixture.species[i].mass;
     diameter_[i] = mixture.species[i].diameter;
-    species_volume_[i] = detail::unit_sphere_volume(dimension_) * std::pow(diameter_[i], dimension_);
+    species_volume_[i] = unit_sphere_volume(dimension_) * std::pow(diameter_[i], dimension_);
   }
   auto at = [&](double x1, double phi) {
     Mixture m = mixture;

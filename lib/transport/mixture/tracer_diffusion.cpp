@@ -8,9 +8,9 @@
 #include <Eigen/Dense>
 
 #include "gkt/collision/collision_moments.hpp"
+#include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "transport/common/galerkin_pieces.hpp"
-#include "transport/common/reference_gas.hpp"
 
 namespace gkt {
 
@@ -51,10 +51,10 @@ TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order) : max_orde
   const auto loss = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1, 1, n);
   const auto pieces = detail::vector_pieces(d, n, 0);
   // c = π^{(d−1)/2}/Γ(d/2) = K_d/π^d carries every geometric factor below.
-  const double c = detail::geometric_factor(d);
+  const double c = geometric_factor(d);
   const double w = std::pow(0.5 * (1 + tracer.diameter_ratio), d - 1) * c * std::sqrt(1 / theta0_ + 1);
   // The host's ζ in units of n σ^{d−1} √(2T/m): ζ* ν0 with ν0 = nT/η0 in those units.
-  const double zeta = hcs.cooling_rate * detail::unit_reference_gas(d).collision_frequency;
+  const double zeta = hcs.cooling_rate * unit_reference_gas(d).collision_frequency;
   // D0* = (√2 π^{(d−1)/2}/(θ0 Γ(d/2))) (M⁻¹)_00 (16.10); the tracer's velocity unit is 1/√θ0.
   prefactor_ = std::sqrt(2.0) * c / theta0_;
   matrix_.assign(static_cast<std::size_t>(max_order), std::vector<double>(static_cast<std::size_t>(max_order)));

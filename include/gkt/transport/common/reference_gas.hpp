@@ -1,12 +1,12 @@
-// Private: the reference values that reduce the mixture's and the tracer's coefficients
-// (docs/conventions.md): a one-component elastic gas of mass m and diameter σ at n and T, first
-// approximation of Chapman & Cowling.
+// The reference values that reduce every coefficient (docs/conventions.md "Reference values"): a
+// one-component elastic gas of mass m and diameter σ at n and T, first approximation of Chapman &
+// Cowling. Front ends use them to turn reduced coefficients into physical ones.
 #pragma once
 
 #include <cmath>
 #include <numbers>
 
-namespace gkt::detail {
+namespace gkt {
 
 /// Returns c_d = π^{(d−1)/2}/Γ(d/2) = K_d/π^d, the geometric factor of every collision rate:
 /// (θ_iθ_j)^{d/2} J0_ij π^{−d} = c_d √(1/θ_i + 1/θ_j) (theory.md (16.4)).
@@ -42,4 +42,4 @@ inline ReferenceGas unit_reference_gas(int d) {
   return {eta0, d * (d + 2) / (2.0 * (d - 1)) * eta0, d / (4 * root2 * c), 4 * root2 * c / (d + 2)};
 }
 
-}  // namespace gkt::detail
+}  // namespace gkt

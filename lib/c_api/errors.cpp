@@ -1,0 +1,44 @@
+// The C API's status names, version and thread-local last error (include/gkt/gkt.h).
+#include <string>
+
+#include "gkt/gkt.h"
+#include "guard.hpp"
+
+namespace gkt::c_api {
+
+namespace {
+thread_local std::string last_error;  // the message of this thread's last failing call
+}  // namespace
+
+gkt_status fail(gkt_status status, const std::string& message) noexcept {
+  try {
+    last_error = message;
+  } catch (...) {
+    last_error.clear();  // no memory for the message: the status still says what happened
+  }
+  return status;
+}
+
+}  // namespace gkt::c_api
+
+extern "C" {
+
+const char* gkt_last_error(void) { return gkt::c_api::last_error.c_str(); }
+
+const char* gkt_status_name(gkt_status status) {
+  switch (status) {
+    case GKT_OK:
+      return "GKT_OK";
+    case GKT_INVALID_ARGUMENT:
+      return "GKT_INVALID_ARGUMENT";
+    case GKT_OUT_OF_RANGE:
+      return "GKT_OUT_OF_RANGE";
+    case GKT_INTERNAL_ERROR:
+      return "GKT_INTERNAL_ERROR";
+  }
+  return "unknown";
+}
+
+const char* gkt_version(void) { return GKT_VERSION; }
+
+}  // extern "C"
