@@ -8,7 +8,8 @@
 #include <map>
 #include <optional>
 
-#include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+#include "gkt/operators/viscoelastic_hierarchy.hpp"
 #include "gkt/transport/viscoelastic/viscoelastic_transport.hpp"
 #include "models/models.hpp"
 
@@ -36,10 +37,9 @@ double at_state(const ViscoelasticTransportSeries& s, const std::string& name, d
   if (name == "shear_viscosity") return v.shear_viscosity;
   if (name == "thermal_conductivity") return v.thermal_conductivity;
   if (name == "density_heat_coefficient") return v.density_heat_coefficient;
-  StabilityDensity dilute;
-  dilute.cooling_temperature_exponent = v.cooling_temperature_exponent;
   const HcsStability h =
-      hcs_stability(3, v.cooling_rate, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient, dilute);
+      monodisperse_stability(3, v.cooling_rate, {v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient},
+                             {}, 1.0, v.cooling_temperature_exponent);
   return name == "critical_wavenumber_shear"  ? h.shear_wavenumber
          : name == "critical_wavenumber_heat" ? h.heat_wavenumber
                                               : h.critical_length;
@@ -100,13 +100,12 @@ class ViscoelasticModel final : public TransportModel {
   }
   [[nodiscard]] int max_order() const override { return kMaxSonineOrder; }
 
+  [[nodiscard]] bool supports(Capability capability) const override { return capability != Capability::formula; }
+
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
-    const Rational c1 = point.number("c1", Rational::parse("1.15344"));
-    parameters().front().check(c1);
-    if (!order.tolerance && (order.order < 1 || order.order > kMaxSonineOrder))
-      throw std::invalid_argument("order: \"viscoelastic\" takes a Sonine order in [1, " +
-                                  std::to_string(kMaxSonineOrder) + "], got " + std::to_string(order.order));
+    const SchemaPoint p(parameters(), point);  // validated by the registry's guard
+    const Rational c1 = p.number("c1");
     const ViscoelasticRestitution restitution = ViscoelasticRestitution::hertz(c1.to_double());
     if (c1 != cached_c1_) {
       series_.clear();
@@ -128,11 +127,10 @@ class ViscoelasticModel final : public TransportModel {
       }
       if (std::find(kCritical.begin(), kCritical.end(), name) != kCritical.end() ||
           std::find(series_families().begin(), series_families().end(), name) != series_families().end()) {
-        if (!point.numbers.contains("delta_prime"))
-          throw std::invalid_argument("delta_prime: required for '" + name + "' (a number in [0, 0.3])");
-        const Rational delta_prime = point.number("delta_prime", Rational(0));
-        parameters()[1].check(delta_prime);
-        const double x = delta_prime.to_double();
+        if (!p.given("delta_prime"))
+          throw std::invalid_argument("delta_prime: required for '" + name + "' (" + p.spec("delta_prime").allowed() +
+                                      ")");
+        const double x = p.number("delta_prime").to_double();
         out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
           const int all = static_cast<int>(restitution.series().size());
           auto at = [&](int m, int terms) { return Rational::from_double(at_state(series_at(m), name, x, terms)); };
@@ -158,7 +156,60 @@ class ViscoelasticModel final : public TransportModel {
     return out;
   }
 
+  [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
+    std::vector<ParameterSpec> specs{{"dimension",
+                                      ParameterSpec::Kind::integer,
+                                      Rational(2),
+                                      Rational(3),
+                                      true,
+                                      true,
+                                      Rational(3),
+                                      "spatial dimension (viscoelastic spheres: 3)",
+                                      {}},
+                                     {"delta",
+                                      ParameterSpec::Kind::real,
+                                      Rational(0),
+                                      Rational(3, 10),
+                                      true,
+                                      true,
+                                      Rational(0),
+                                      "delta of the initial state T0 (the delta expansion is for small delta)",
+                                      {}}};
+    for (auto& spec : evolution_common_parameters()) specs.push_back(std::move(spec));
+    return specs;
+  }
+  [[nodiscard]] std::vector<std::string> trajectory_coefficients() const override {
+    return trajectory_coefficient_names();
+  }
+  /// The hierarchy at δ'(τ) = δ (2T/T0)^{1/10} integrated from a2(0) (theory.md §13.2); η*, κ*, μ*
+  /// and λ_T from the δ'-series at Sonine order N at δ'(τ).
+  Trajectory evolve(const TrajectoryRequest& request) override {
+    const SchemaPoint p(evolution_parameters(), request.parameters);
+    if (p.number("dimension") != Rational(3))
+      throw std::invalid_argument("dimension: \"viscoelastic\" is three-dimensional (3)");
+    if (!p.given("delta"))
+      throw std::invalid_argument("delta: required for \"viscoelastic\", " + p.spec("delta").allowed());
+    evolution_a2_spec(3).check(p.number("a2"));
+    const int order = static_cast<int>(p.number("order").to_double());
+    if (!request.coefficients.empty() && order > kMaxTransportOrder)
+      throw std::invalid_argument("order: viscoelastic transport along the trajectory needs an integer in [1, " +
+                                  std::to_string(kMaxTransportOrder) + "], got " + std::to_string(order));
+    const int k_max = order + 1;  // cumulants a_2 … a_{order+1}
+    const double delta = p.number("delta").to_double();
+    const EvolutionResult result =
+        evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {p.number("a2").to_double()}, request.times,
+                                    p.number("rtol").to_double(), p.number("atol").to_double());
+    std::optional<ViscoelasticTransportSeries> series;
+    if (!request.coefficients.empty()) series = viscoelastic_transport_series(order);
+    return tabulate_trajectory(name(), 3, k_max, result, request.coefficients, [&](const EvolutionSample& s) {
+      const ViscoelasticState state = viscoelastic_state(*series, delta * std::pow(2.0 * s.temperature, 0.1));
+      return SampleTransport{{state.shear_viscosity, state.thermal_conductivity, state.density_heat_coefficient},
+                             state.cooling_temperature_exponent};
+    });
+  }
+
  private:
+  static constexpr int kMaxTransportOrder = 8;  // viscoelastic_transport_series
   Rational cached_c1_{-1};
   std::map<int, ViscoelasticTransportSeries> series_;  // by Sonine order, for cached_c1_
 };

@@ -181,24 +181,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   const auto model = make_transport_model(scene.model);  // throws on unknown names
 
   std::vector<ParameterSpec> specs = model->parameters();
-  specs.push_back({"order",
-                   ParameterSpec::Kind::integer,
-                   Rational(1),
-                   Rational(model->max_order()),
-                   true,
-                   true,
-                   Rational(1),
-                   "Sonine order (number of polynomials)",
-                   {}});
-  specs.push_back({"tolerance",
-                   ParameterSpec::Kind::real,
-                   Rational(0),
-                   Rational(1),
-                   false,
-                   true,
-                   Rational(0),
-                   "target estimated truncation error",
-                   {}});
+  for (auto& spec : order_parameters(model->max_order())) specs.push_back(std::move(spec));
 
   std::set<std::string> valid_keys{"model", "coefficients"};
   for (const auto& s : specs) valid_keys.insert(s.name);
