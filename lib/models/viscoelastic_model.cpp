@@ -19,40 +19,49 @@ namespace {
 
 constexpr int kMaxSonineOrder = 6;  // the error estimate asks for N + 1 and N + 2 ≤ 8
 
-/// The series coefficients offered by name: <family>_<j>, j = 1 … J (δ'^j).
-const std::vector<std::string>& series_families() {
-  static const std::vector<std::string> f{"a2", "cooling_rate", "shear_viscosity", "thermal_conductivity",
-                                          "density_heat_coefficient"};
-  return f;
+/// A value of the state at one δ': a2, ζ*, η*, κ*, μ* — whose δ'-series coefficients are also
+/// offered as <name>_<j>, j = 1 … J — or an HCS stability value (theory.md (14.1), (14.6)).
+struct StateValue {
+  const char* name;
+  double (*at)(const ViscoelasticState&, const HcsStability&);
+  /// The δ'^j coefficients of a series family; null for the stability values.
+  const std::vector<double>& (*series)(const ViscoelasticTransportSeries&);
+};
+
+using State = ViscoelasticState;
+using Series = ViscoelasticTransportSeries;
+/// Every state value, series families first (the order of coefficient_names()); built once.
+const std::array<StateValue, 8> kStateValues{{
+    {"a2", [](const State& v, const HcsStability&) { return v.a2; },
+     [](const Series& s) -> const std::vector<double>& { return s.cumulants[2]; }},
+    {"cooling_rate", [](const State& v, const HcsStability&) { return v.cooling_rate; },
+     [](const Series& s) -> const std::vector<double>& { return s.cooling_rate; }},
+    {"shear_viscosity", [](const State& v, const HcsStability&) { return v.shear_viscosity; },
+     [](const Series& s) -> const std::vector<double>& { return s.shear_viscosity; }},
+    {"thermal_conductivity", [](const State& v, const HcsStability&) { return v.thermal_conductivity; },
+     [](const Series& s) -> const std::vector<double>& { return s.thermal_conductivity; }},
+    {"density_heat_coefficient", [](const State& v, const HcsStability&) { return v.density_heat_coefficient; },
+     [](const Series& s) -> const std::vector<double>& { return s.density_heat_coefficient; }},
+    {"critical_wavenumber_shear", [](const State&, const HcsStability& h) { return h.shear_wavenumber; }, nullptr},
+    {"critical_wavenumber_heat", [](const State&, const HcsStability& h) { return h.heat_wavenumber; }, nullptr},
+    {"critical_length", [](const State&, const HcsStability& h) { return h.critical_length; }, nullptr},
+}};
+
+/// Returns the state value named `name`, or null.
+const StateValue* state_value(const std::string& name) {
+  const auto it =
+      std::find_if(kStateValues.begin(), kStateValues.end(), [&](const StateValue& v) { return name == v.name; });
+  return it == kStateValues.end() ? nullptr : &*it;
 }
 
-const std::array<std::string, 3> kCritical{"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"};
-
-/// Returns a2, ζ*, η*, κ*, μ* or a critical value (theory.md (14.1), (14.6)) at δ' from the series
-/// through δ'^orders.
-double at_state(const ViscoelasticTransportSeries& s, const std::string& name, double x, int orders) {
+/// Returns the value at δ' = x from the series through δ'^orders; the stability values from ζ*,
+/// η*, κ*, μ* and λ_T of that state.
+double at_state(const Series& s, const StateValue& value, double x, int orders) {
   const ViscoelasticState v = viscoelastic_state(s, x, orders);
-  if (name == "a2") return v.a2;
-  if (name == "cooling_rate") return v.cooling_rate;
-  if (name == "shear_viscosity") return v.shear_viscosity;
-  if (name == "thermal_conductivity") return v.thermal_conductivity;
-  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
-  const HcsStability h =
-      monodisperse_stability(3, v.cooling_rate, {v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient},
-                             {}, 1.0, v.cooling_temperature_exponent);
-  return name == "critical_wavenumber_shear"  ? h.shear_wavenumber
-         : name == "critical_wavenumber_heat" ? h.heat_wavenumber
-                                              : h.critical_length;
-}
-
-/// Returns the δ'^j coefficient of a series family.
-double coefficient(const ViscoelasticTransportSeries& s, const std::string& name, int j) {
-  const auto& c = name == "a2"                     ? s.cumulants[2]
-                  : name == "cooling_rate"         ? s.cooling_rate
-                  : name == "shear_viscosity"      ? s.shear_viscosity
-                  : name == "thermal_conductivity" ? s.thermal_conductivity
-                                                   : s.density_heat_coefficient;
-  return c[static_cast<std::size_t>(j)];
+  if (value.series != nullptr) return value.at(v, {});
+  return value.at(v, monodisperse_stability(3, v.cooling_rate,
+                                            {v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient}, {},
+                                            1.0, v.cooling_temperature_exponent));
 }
 
 class ViscoelasticModel final : public TransportModel {
@@ -65,16 +74,16 @@ class ViscoelasticModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto names = default_coefficients({});
-    for (const auto& f : series_families()) names.push_back(f);
-    for (const auto& c : kCritical) names.push_back(c);
+    for (const auto& v : kStateValues) names.emplace_back(v.name);
     return names;
   }
   /// The constants and series coefficients; the values at one δ' (`delta_prime`) only on request.
   [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint&) const override {
     std::vector<std::string> names{"omega0", "omega1", "q0"};
     const int orders = static_cast<int>(ViscoelasticRestitution{}.series().size());
-    for (const auto& f : series_families())
-      for (int j = 1; j <= orders; ++j) names.push_back(f + "_" + std::to_string(j));
+    for (const auto& v : kStateValues)
+      if (v.series != nullptr)
+        for (int j = 1; j <= orders; ++j) names.push_back(std::string(v.name) + "_" + std::to_string(j));
     return names;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -125,15 +134,14 @@ class ViscoelasticModel final : public TransportModel {
         out.push_back({Rational::from_double(v), Rational(0), 1, true, false, true});
         continue;
       }
-      if (std::find(kCritical.begin(), kCritical.end(), name) != kCritical.end() ||
-          std::find(series_families().begin(), series_families().end(), name) != series_families().end()) {
+      if (const StateValue* value = state_value(name)) {
         if (!p.given("delta_prime"))
           throw std::invalid_argument("delta_prime: required for '" + name + "' (" + p.spec("delta_prime").allowed() +
                                       ")");
         const double x = p.number("delta_prime").to_double();
         out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
           const int all = static_cast<int>(restitution.series().size());
-          auto at = [&](int m, int terms) { return Rational::from_double(at_state(series_at(m), name, x, terms)); };
+          auto at = [&](int m, int terms) { return Rational::from_double(at_state(series_at(m), *value, x, terms)); };
           TruncationEstimate e = estimate_truncation(at(n, all), at(n + 1, all), at(n + 2, all));
           e.error = e.error + (at(n, all) - at(n, all - 1)).abs();  // the last δ'-term as the series' remainder
           return OrderValue{e, true, false};
@@ -144,12 +152,15 @@ class ViscoelasticModel final : public TransportModel {
       const std::string base = split == std::string::npos ? name : name.substr(0, split);
       const int j = split == std::string::npos ? -1 : std::atoi(name.c_str() + split + 1);
       const int orders = static_cast<int>(restitution.series().size());
-      if (std::find(series_families().begin(), series_families().end(), base) == series_families().end() || j < 1 ||
-          j > orders || name.substr(split + 1) != std::to_string(j))
+      const StateValue* family = state_value(base);
+      if (family == nullptr || family->series == nullptr || j < 1 || j > orders ||
+          name.substr(split + 1) != std::to_string(j))
         throw std::invalid_argument("coefficients: unknown coefficient '" + name +
                                     "' for model viscoelastic; valid: " + join(coefficient_names()));
       out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
-        auto at = [&](int m) { return Rational::from_double(coefficient(series_at(m), base, j)); };
+        auto at = [&](int m) {
+          return Rational::from_double(family->series(series_at(m))[static_cast<std::size_t>(j)]);
+        };
         return OrderValue{estimate_truncation(at(n), at(n + 1), at(n + 2)), true, false};
       }));
     }
