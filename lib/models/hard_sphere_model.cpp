@@ -31,11 +31,13 @@ class HardSphereModel final : public TransportModel {
   }
   [[nodiscard]] int max_order() const override { return kHardSphereMaxOrder; }
 
+  [[nodiscard]] bool supports(Capability capability) const override {
+    return capability == Capability::table || capability == Capability::formula;
+  }
+
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
-    const Rational dim = point.number("dimension", Rational(3));
-    parameters().front().check(dim);
-    const int d = dim == Rational(2) ? 2 : 3;
+    const int d = SchemaPoint(parameters(), point).number("dimension") == Rational(2) ? 2 : 3;
     auto& system = systems_[static_cast<std::size_t>(d - 2)];
     if (!system) system = std::make_unique<HardSphereSonineSystem>(d);
     const auto names = coefficient_names();
@@ -48,6 +50,13 @@ class HardSphereModel final : public TransportModel {
       out.push_back(choose_order(order, max_order(), [&](int n) { return OrderValue{system->estimate(which, n)}; }));
     }
     return out;
+  }
+
+  /// The Sonine approximant at `order` is an exact rational number: a constant closed form.
+  ClosedForm closed_form(const ParameterPoint& point, const std::string& coefficient, int order) override {
+    const Rational v = evaluate(point, {coefficient}, {order, {}}).front().value;
+    const int d = SchemaPoint(parameters(), point).number("dimension") == Rational(2) ? 2 : 3;
+    return {RationalFunction{RationalPolynomial(v), RationalPolynomial(1L)}, d, SonineScheme::standard};
   }
 
  private:

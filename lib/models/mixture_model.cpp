@@ -4,6 +4,7 @@
 // §17 dilute, §18 dense).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -126,27 +127,33 @@ class MixtureModel final : public TransportModel {
     return specs;
   }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }
+  [[nodiscard]] bool supports(Capability capability) const override {
+    return capability == Capability::table || capability == Capability::stability;
+  }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
-    const std::string hcs = point.choice("hcs", "linear");
-    hcs_spec().check(hcs);
-    const Mixture mixture = make(point);
+    const detail::SchemaPoint p(parameters(), point);  // validated by the registry's guard
+    const std::string hcs = p.choice("hcs");
+    const Mixture mixture = make(p);
     const auto s = static_cast<int>(mixture.size());
     std::vector<CoefficientValue> out;
     const int hcs_k = hcs_order(point);
+    // What a name asks for: the HCS (ζ*, T_i/T, a_k,i), D* of a tracer, or a transport value.
+    enum class Kind { cooling_rate, temperature_ratio, cumulant, tracer_diffusion, transport };
     std::optional<MixtureCoolingState> chosen, alternative, higher;  // solved once, if an HCS value is asked for
     TransportCache transport;                                        // built once, if a transport value is asked for
-    transport.gravity = point.number("reduced_gravity", Rational(0)).to_double();
+    transport.gravity = p.number("reduced_gravity").to_double();
     for (const auto& c : coefficients) {
-      int i = 0, kind = c == "cooling_rate" ? 0 : -1, cumulant = 0;
+      int i = 0, cumulant = 0;
+      Kind kind = c == "cooling_rate" ? Kind::cooling_rate : Kind::transport;
       for (int k = 1; k <= s; ++k) {
-        if (c == index_name("temperature_ratio", k)) i = k, kind = 1;
+        if (c == index_name("temperature_ratio", k)) i = k, kind = Kind::temperature_ratio;
         for (int q = 2; q <= hcs_k; ++q)
-          if (c == index_name(cumulant_base(q), k)) i = k, kind = 2, cumulant = q;
-        if (c == index_name("tracer_diffusion", k)) i = k, kind = 3;
+          if (c == index_name(cumulant_base(q), k)) i = k, kind = Kind::cumulant, cumulant = q;
+        if (c == index_name("tracer_diffusion", k)) i = k, kind = Kind::tracer_diffusion;
       }
-      if (kind < 0) {
+      if (kind == Kind::transport) {
         const auto all = transport_names(s);
         if (std::find(all.begin(), all.end(), c) == all.end())
           throw std::invalid_argument("coefficients: unknown coefficient '" + c + "' for " + std::to_string(s) +
@@ -155,7 +162,7 @@ class MixtureModel final : public TransportModel {
         continue;
       }
       const auto k = static_cast<std::size_t>(i > 0 ? i - 1 : 0);
-      if (kind == 3) {
+      if (kind == Kind::tracer_diffusion) {
         out.push_back(tracer_diffusion(mixture, k, order));
         continue;
       }
@@ -170,7 +177,8 @@ class MixtureModel final : public TransportModel {
         alternative = mixture_cooling_state(
             mixture, scheme == MixtureHcsScheme::maxwellian ? MixtureHcsScheme::linear : MixtureHcsScheme::maxwellian);
       }
-      if (kind == 2 && !higher) higher = mixture_cooling_state(mixture, MixtureHcsScheme::linear, hcs_k + 1);
+      if (kind == Kind::cumulant && !higher)
+        higher = mixture_cooling_state(mixture, MixtureHcsScheme::linear, hcs_k + 1);
       const MixtureCoolingState& state = *chosen;
       const MixtureCoolingState& other = *alternative;
       auto value = [&](double v, double other_value, bool estimated) {
@@ -182,9 +190,9 @@ class MixtureModel final : public TransportModel {
                                 state.solved,
                                 estimated};
       };
-      if (kind == 0)
+      if (kind == Kind::cooling_rate)
         out.push_back(value(state.cooling_rate, other.cooling_rate, true));
-      else if (kind == 1)
+      else if (kind == Kind::temperature_ratio)
         out.push_back(value(state.temperature_ratio[k], other.temperature_ratio[k], true));
       else {
         const auto q = static_cast<std::size_t>(cumulant);
@@ -262,35 +270,49 @@ class MixtureModel final : public TransportModel {
       return by_order.emplace(n, std::move(a)).first->second;
     }
 
+    /// Returns how the transport value `name` of s species is read from one order's values: resolved
+    /// once per coefficient through tables of the scalar and the per-species (pair) values.
+    [[nodiscard]] std::function<double(const AtOrder&)> reader(std::size_t s, const std::string& name) const {
+      using Scalar = double (*)(const AtOrder&);
+      static const std::map<std::string, Scalar> scalars{
+          {"critical_wavenumber_shear", [](const AtOrder& a) { return a.stability.shear_wavenumber; }},
+          {"critical_wavenumber_heat", [](const AtOrder& a) { return a.stability.heat_wavenumber; }},
+          {"critical_length", [](const AtOrder& a) { return a.stability.critical_length; }},
+          {"shear_viscosity", [](const AtOrder& a) { return a.values.shear_viscosity; }},
+          {"thermal_conductivity", [](const AtOrder& a) { return a.values.thermal_conductivity; }},
+          {"bulk_viscosity", [](const AtOrder& a) { return a.values.bulk_viscosity; }},
+          {"cooling_rate_first_order", [](const AtOrder& a) { return a.values.cooling_rate_first_order; }},
+          {"pressure", [](const AtOrder& a) { return a.values.pressure; }}};
+      using Vector = std::vector<double> MixtureTransportValues::*;
+      static const std::map<std::string, Vector> per_species{
+          {"thermal_diffusion", &MixtureTransportValues::thermal_diffusion},
+          {"pressure_diffusion", &MixtureTransportValues::pressure_diffusion},
+          {"dufour", &MixtureTransportValues::dufour}};
+      static const std::map<std::string, Vector> per_pair{
+          {"mutual_diffusion", &MixtureTransportValues::mutual_diffusion},
+          {"mobility", &MixtureTransportValues::mobility}};
+      if (const auto it = scalars.find(name); it != scalars.end()) return it->second;
+      for (std::size_t i = 0; i < s; ++i) {
+        const int a = static_cast<int>(i) + 1;
+        for (const auto& [base, field] : per_species)
+          if (name == index_name(base, a)) return [i, field](const AtOrder& o) { return (o.values.*field)[i]; };
+        if (name == index_name("thermal_diffusion_factor", a))
+          return [i, g = gravity](const AtOrder& o) {
+            const MixtureTransportValues& v = o.values;
+            return v.segregation.empty() ? NAN : v.segregation[i] + g * v.segregation_gravity[i];
+          };
+        for (std::size_t j = 0; j < s; ++j)
+          for (const auto& [base, field] : per_pair)
+            if (name == index_name(base, a, static_cast<int>(j) + 1))
+              return [k = i * s + j, field](const AtOrder& o) { return (o.values.*field)[k]; };
+      }
+      throw std::logic_error("mixture: no transport value named " + name);
+    }
+
     /// Returns the coefficient `name` at the requested order or tolerance, its error from the next
     /// two orders (theory.md §6), undefined (nan) if a value is not finite.
     CoefficientValue value(const Mixture& m, const std::string& name, const OrderRequest& order) {
-      const auto s = m.size();
-      auto pick = [&](const AtOrder& at_order) {
-        const MixtureTransportValues& v = at_order.values;
-        if (name == "critical_wavenumber_shear") return at_order.stability.shear_wavenumber;
-        if (name == "critical_wavenumber_heat") return at_order.stability.heat_wavenumber;
-        if (name == "critical_length") return at_order.stability.critical_length;
-        if (name == "shear_viscosity") return v.shear_viscosity;
-        if (name == "thermal_conductivity") return v.thermal_conductivity;
-        if (name == "bulk_viscosity") return v.bulk_viscosity;
-        if (name == "cooling_rate_first_order") return v.cooling_rate_first_order;
-        if (name == "pressure") return v.pressure;
-        for (std::size_t i = 0; i < s; ++i) {
-          const int a = static_cast<int>(i) + 1;
-          if (name == index_name("thermal_diffusion", a)) return v.thermal_diffusion[i];
-          if (name == index_name("pressure_diffusion", a)) return v.pressure_diffusion[i];
-          if (name == index_name("dufour", a)) return v.dufour[i];
-          if (name == index_name("thermal_diffusion_factor", a))
-            return v.segregation.empty() ? NAN : v.segregation[i] + gravity * v.segregation_gravity[i];
-          for (std::size_t j = 0; j < s; ++j) {
-            if (name == index_name("mutual_diffusion", a, static_cast<int>(j) + 1))
-              return v.mutual_diffusion[i * s + j];
-            if (name == index_name("mobility", a, static_cast<int>(j) + 1)) return v.mobility[i * s + j];
-          }
-        }
-        throw std::logic_error("mixture: no transport value named " + name);
-      };
+      const auto pick = reader(m.size(), name);
       return detail::choose_order(order, kMaxOrder, [&](int n) {
         detail::OrderValue v;
         v.exact = false;
@@ -349,29 +371,29 @@ class MixtureModel final : public TransportModel {
       for (int i = 1; i <= s; ++i) n.push_back(index_name(cumulant_base(q), i));
     return n;
   }
-  static Mixture make(const ParameterPoint& p) {
-    const int s = static_cast<int>(p.number("species", Rational(0)).to_double());
+  static Mixture make(const detail::SchemaPoint& p) {
+    const int s = p.given("species") ? static_cast<int>(p.number("species").to_double()) : 0;
     if (s < 2 || s > kMaxSpecies)
       throw std::invalid_argument("species: give 2 to " + std::to_string(kMaxSpecies) +
                                   " [[species]] tables (mass, diameter, fraction), got " + std::to_string(s));
     Mixture m;
-    m.dimension = static_cast<int>(p.number("dimension", Rational(3)).to_double());
-    m.packing_fraction = p.number("packing_fraction", Rational(0)).to_double();
+    m.dimension = static_cast<int>(p.number("dimension").to_double());
+    m.packing_fraction = p.number("packing_fraction").to_double();
     for (int i = 1; i <= s; ++i) {
       Species sp;
       for (const char* field : {"mass", "diameter", "fraction"})
-        if (!p.numbers.contains(index_name(field, i)))
+        if (!p.given(index_name(field, i)))
           throw std::invalid_argument("species[" + std::to_string(i) + "]." + field + ": required");
-      sp.mass = p.number(index_name("mass", i), Rational(1)).to_double();
-      sp.diameter = p.number(index_name("diameter", i), Rational(1)).to_double();
-      sp.fraction = p.number(index_name("fraction", i), Rational(1)).to_double();
+      sp.mass = p.number(index_name("mass", i)).to_double();
+      sp.diameter = p.number(index_name("diameter", i)).to_double();
+      sp.fraction = p.number(index_name("fraction", i)).to_double();
       m.species.push_back(sp);
     }
-    const Rational alpha = p.number("alpha", Rational(1));
+    const Rational alpha = p.number("alpha");
     m.alpha.assign(static_cast<std::size_t>(s * s), 0.0);
     for (int i = 1; i <= s; ++i)
       for (int j = i; j <= s; ++j) {
-        const double a = p.number(index_name("alpha", i, j), alpha).to_double();
+        const double a = (p.given(index_name("alpha", i, j)) ? p.number(index_name("alpha", i, j)) : alpha).to_double();
         m.alpha[static_cast<std::size_t>((i - 1) * s + j - 1)] = a;
         m.alpha[static_cast<std::size_t>((j - 1) * s + i - 1)] = a;
       }

@@ -1,4 +1,5 @@
-// The one registry of transport models (cf. Cantera's TransportFactory).
+// The one registry of transport models (cf. Cantera's TransportFactory). Every model it hands out
+// validates its calls against its schema first (validated_model.cpp).
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -32,7 +33,7 @@ std::unique_ptr<TransportModel> make_transport_model(const std::string& name) {
     throw std::invalid_argument("model: unknown model \"" + name +
                                 "\"; valid models: " + detail::join(transport_model_names(), "\""));
   }
-  return it->second();
+  return detail::validated(it->second());
 }
 
 std::vector<std::string> transport_model_names() {

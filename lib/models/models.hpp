@@ -1,11 +1,20 @@
-// Private: the model factories the registry knows, and the order-selection rule they share.
+// Private: the model factories the registry knows, and the rules they share (reading a point
+// through the schema, choosing an order).
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
+#include "gkt/evolution/hcs_stability.hpp"
 #include "gkt/models/transport_model.hpp"
+#include "gkt/transport/common/enskog_state.hpp"
 #include "gkt/transport/common/sonine_solution.hpp"
+#include "gkt/transport/monodisperse/navier_stokes.hpp"
 #include "support/strings.hpp"
 
 namespace gkt::detail {
@@ -15,6 +24,73 @@ std::unique_ptr<TransportModel> make_smooth_inelastic_model();
 std::unique_ptr<TransportModel> make_viscoelastic_model();
 std::unique_ptr<TransportModel> make_mixture_model();
 std::unique_ptr<TransportModel> make_rough_model();
+
+/// Returns `model` behind a guard that validates every call against the model's schema first
+/// (validated_model.cpp): the registry hands out only guarded models.
+std::unique_ptr<TransportModel> validated(std::unique_ptr<TransportModel> model);
+
+/// A validated parameter point read through its schema, by name: an absent key takes the declared
+/// default (a choice its first entry).
+class SchemaPoint {
+ public:
+  SchemaPoint(std::vector<ParameterSpec> schema, const ParameterPoint& point)
+      : schema_(std::move(schema)), point_(point) {}
+  /// Returns the number `name`, or its declared default.
+  [[nodiscard]] Rational number(std::string_view name) const {
+    const auto it = point_.numbers.find(std::string(name));
+    return it != point_.numbers.end() ? it->second : find_parameter(schema_, name).default_value;
+  }
+  /// Returns the choice `name`, or its declared default (the first choice).
+  [[nodiscard]] std::string choice(std::string_view name) const {
+    const auto it = point_.choices.find(std::string(name));
+    return it != point_.choices.end() ? it->second : find_parameter(schema_, name).choices.front();
+  }
+  /// Returns true if the point gives `name`.
+  [[nodiscard]] bool given(std::string_view name) const {
+    return point_.numbers.contains(std::string(name)) || point_.choices.contains(std::string(name));
+  }
+  /// Returns the declared spec of `name`.
+  [[nodiscard]] const ParameterSpec& spec(std::string_view name) const { return find_parameter(schema_, name); }
+
+ private:
+  std::vector<ParameterSpec> schema_;
+  const ParameterPoint& point_;
+};
+
+/// Returns the one-line error for a required parameter that is absent: "<name>: required, <allowed>".
+inline std::invalid_argument missing(const ParameterSpec& spec) {
+  return std::invalid_argument(spec.name + ": required, " + spec.allowed());
+}
+
+/// Returns the HCS stability values of a one-component state (theory.md (14.3)–(14.6)) from ζ*
+/// (dense: χ ζ*_dilute), η*, κ*, μ* (and the dense bulk viscosity and ζ_U) of one order, for the
+/// dense gas `dense` at restitution α and λ_T = ∂ln ζ/∂ln T (½ for constant α). The dilute defaults
+/// give p* = 1 exactly.
+HcsStability monodisperse_stability(int dimension, double cooling_rate, const NavierStokesValues& values,
+                                    const EnskogState& dense = {}, double alpha = 1,
+                                    double cooling_temperature_exponent = 0.5);
+
+/// η*, κ*, μ* at one sample of a cooling trajectory and the λ_T its stability needs.
+struct SampleTransport {
+  NavierStokesValues values;
+  double cooling_temperature_exponent = 0.5;
+};
+
+/// Returns the names of the coefficients offered along a cooling trajectory (η*, κ*, μ*, critical values).
+std::vector<std::string> trajectory_coefficient_names();
+
+/// Returns the trajectory table of `model` in dimension d keeping a_2 … a_{k_max}: the samples of
+/// `result`, and per sample the `coefficients` from `transport` (called only if any are asked for).
+Trajectory tabulate_trajectory(const std::string& model, int dimension, int k_max, const EvolutionResult& result,
+                               const std::vector<std::string>& coefficients,
+                               const std::function<SampleTransport(const EvolutionSample&)>& transport);
+
+/// Returns the spec of an evolution's Sonine order, CVODE tolerances and initial a2 (positivity
+/// of f_M(1 + a2 S_2) in either dimension; evolution_a2_spec(d) is the exact range, theory.md §12).
+std::vector<ParameterSpec> evolution_common_parameters();
+/// Returns the a2 spec of dimension d: [−8/(d(d+2)), 4/(d+2)] written as the shortest decimals of
+/// those doubles (a positive distribution at c = 0 and at the minimum of S_2).
+ParameterSpec evolution_a2_spec(int dimension);
 
 /// A value at one order as a model computes it: estimate plus whether it exists at all.
 struct OrderValue {

@@ -4,14 +4,16 @@
 // the pressure and the Navier–Stokes coefficients η*, κ*, μ*, bulk viscosity
 // (navier_stokes.hpp, theory.md §10, §15). Order N keeps N Sonine polynomials per
 // transport mode and the cumulants a_2 … a_{N+1}.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 #include <optional>
 #include <tuple>
 
-#include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/transport/closed_forms/enskog_closed_form.hpp"
+#include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
@@ -37,6 +39,40 @@ struct Dense {
     return k;
   }
 };
+
+/// The coefficients of the Navier–Stokes solution, read from one order's η*, κ*, μ*, bulk viscosity
+/// and ζ_U; the three HCS stability values also need ζ* and the density (theory.md §14).
+enum class Transport {
+  shear_viscosity,
+  thermal_conductivity,
+  density_heat_coefficient,
+  critical_wavenumber_shear,
+  critical_wavenumber_heat,
+  critical_length,
+  bulk_viscosity,
+  cooling_rate_first_order
+};
+
+/// The canonical name of each Transport value, in enum order (built once).
+constexpr std::array<const char*, 8> kTransportNames{
+    "shear_viscosity",          "thermal_conductivity", "density_heat_coefficient", "critical_wavenumber_shear",
+    "critical_wavenumber_heat", "critical_length",      "bulk_viscosity",           "cooling_rate_first_order"};
+
+/// Returns the Transport value named `c`, or none (a cumulant, ζ*, p*).
+std::optional<Transport> transport_named(const std::string& c) {
+  const auto it = std::find(kTransportNames.begin(), kTransportNames.end(), c);
+  if (it == kTransportNames.end()) return std::nullopt;
+  return static_cast<Transport>(it - kTransportNames.begin());
+}
+
+/// True for the HCS stability values (critical wave numbers and length).
+bool is_stability(Transport t) {
+  return t == Transport::critical_wavenumber_shear || t == Transport::critical_wavenumber_heat ||
+         t == Transport::critical_length;
+}
+
+/// True for the coefficients that vanish in the dilute gas (bulk viscosity, ζ_U).
+bool is_dense_only(Transport t) { return t == Transport::bulk_viscosity || t == Transport::cooling_rate_first_order; }
 
 /// Returns the canonical name "a<k>" of the k-th cumulant.
 std::string cumulant_name(int k) {
@@ -126,23 +162,17 @@ class SmoothInelasticModel final : public TransportModel {
   }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }
 
+  [[nodiscard]] bool supports(Capability) const override { return true; }
+
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
-    const auto specs = parameters();
-    const Rational dim = point.number("dimension", Rational(3));
-    specs[0].check(dim);
-    const Rational alpha = point.number("alpha", Rational(1));
-    specs[1].check(alpha);
-    const std::string scheme = point.choice("hcs", "nonlinear");
-    specs[2].check(scheme);
-    const std::string weight = point.choice("scheme", "standard");
-    specs[3].check(weight);
-    const SonineScheme sonine = weight == "modified" ? SonineScheme::modified : SonineScheme::standard;
-    const Rational phi = point.number("packing_fraction", Rational(0));
-    specs[4].check(phi);
-    const std::string closure = point.choice("pair_correlation", pair_correlations().front().name);
-    specs[5].check(closure);
-    const int d = dim == Rational(2) ? 2 : 3;
+    const SchemaPoint p(parameters(), point);  // validated by the registry's guard
+    const int d = p.number("dimension") == Rational(2) ? 2 : 3;
+    const Rational alpha = p.number("alpha");
+    const std::string scheme = p.choice("hcs");
+    const SonineScheme sonine = p.choice("scheme") == "modified" ? SonineScheme::modified : SonineScheme::standard;
+    const Rational phi = p.number("packing_fraction");
+    const std::string closure = p.choice("pair_correlation");
     if (phi > max_packing_fraction(d))
       throw std::invalid_argument("packing_fraction: must be a number in [0, " +
                                   max_packing_fraction(d).to_decimal_string() +
@@ -164,9 +194,8 @@ class SmoothInelasticModel final : public TransportModel {
         out.push_back({reduced_pressure(d, alpha, phi * chi), Rational(0), order.order, true, true, true});
         continue;
       }
-      const int transport = transport_index(c);
-      if (transport >= 0) {
-        out.push_back(transport_value(*hcs, d, alpha, scheme, sonine, dense, transport, order));
+      if (const auto transport = transport_named(c)) {
+        out.push_back(transport_value(*hcs, d, alpha, scheme, sonine, dense, *transport, order));
         continue;
       }
       const int k = c == "cooling_rate" ? -1 : cumulant_index(c);
@@ -204,43 +233,91 @@ class SmoothInelasticModel final : public TransportModel {
     return out;
   }
 
- private:
-  /// 0 shear viscosity, 1 thermal conductivity, 2 density heat coefficient, 3–5 the HCS stability
-  /// values of theory.md §14 (from ζ*, η*, κ*, μ* at the same order), 6 bulk viscosity, 7 ζ_U;
-  /// −1 otherwise.
-  static int transport_index(const std::string& c) {
-    if (c == "shear_viscosity") return 0;
-    if (c == "thermal_conductivity") return 1;
-    if (c == "density_heat_coefficient") return 2;
-    if (c == "critical_wavenumber_shear") return 3;
-    if (c == "critical_wavenumber_heat") return 4;
-    if (c == "critical_length") return 5;
-    if (c == "bulk_viscosity") return 6;
-    if (c == "cooling_rate_first_order") return 7;
-    return -1;
+  /// First-Sonine closed forms in α (theory.md (9.2), (10.8), (10.10)); with φ > 0 in `point` the
+  /// dense form Σ R_m(α) m with φ, χ symbolic (standard scheme only; theory.md §15.7).
+  ClosedForm closed_form(const ParameterPoint& point, const std::string& coefficient, int order) override {
+    if (order != 1)
+      throw std::invalid_argument("order: \"" + name() +
+                                  "\" has closed forms at order 1 only (higher orders use the nonlinear HCS)");
+    const SchemaPoint p(parameters(), point);
+    const int d = p.number("dimension") == Rational(2) ? 2 : 3;
+    const std::string scheme = p.choice("scheme");
+    if (p.number("packing_fraction").sign() != 0) {
+      if (scheme != "standard")
+        throw std::invalid_argument("scheme: dense-gas closed forms exist for \"standard\" only, got \"" + scheme +
+                                    "\"");
+      return {enskog_first_sonine_closed_form(d, coefficient), d, SonineScheme::standard};
+    }
+    const SonineScheme sonine = scheme == "modified" ? SonineScheme::modified : SonineScheme::standard;
+    return {first_sonine_closed_form(d, coefficient, sonine), d, sonine};
   }
-  /// The transport value `which` from one order's η*, κ*, μ*, …; the stability values (3–5) also
-  /// need the dilute ζ* of the same order and the density (theory.md (14.4)–(14.5)).
-  static double pick_transport(const NavierStokesValues& v, int which, int d, double zeta_dilute, const Dense& dense,
-                               const Rational& alpha) {
-    if (which == 6) return v.bulk_viscosity;
-    if (which == 7) return v.cooling_rate_first_order;
-    if (which < 3)
-      return which == 0 ? v.shear_viscosity : which == 1 ? v.thermal_conductivity : v.density_heat_coefficient;
+
+  [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
+    std::vector<ParameterSpec> specs{find_parameter(parameters(), "dimension"),
+                                     find_parameter(parameters(), "alpha"),
+                                     {"temperature",
+                                      ParameterSpec::Kind::real,
+                                      Rational(0),
+                                      ParameterSpec::unbounded(),
+                                      false,
+                                      true,
+                                      Rational(1),
+                                      "initial temperature T(0)/T0",
+                                      {}}};
+    for (auto& spec : evolution_common_parameters()) specs.push_back(std::move(spec));
+    return specs;
+  }
+  [[nodiscard]] std::vector<std::string> trajectory_coefficients() const override {
+    return trajectory_coefficient_names();
+  }
+  /// The cumulant hierarchy at constant α integrated from T(0), a2(0) (theory.md §12); η*, κ*, μ* at
+  /// Sonine order N about the instantaneous cumulants a(τ) (§12.3).
+  Trajectory evolve(const TrajectoryRequest& request) override {
+    const SchemaPoint p(evolution_parameters(), request.parameters);
+    if (!p.given("alpha")) throw missing(p.spec("alpha"));
+    const int d = p.number("dimension") == Rational(2) ? 2 : 3;
+    evolution_a2_spec(d).check(p.number("a2"));
+    const Rational alpha = p.number("alpha");
+    const int order = static_cast<int>(p.number("order").to_double());
+    const int k_max = order + 1;  // cumulants a_2 … a_{order+1}
+    HomogeneousCoolingState hcs(d);
+    const EvolutionResult result = evolve_homogeneous_cooling(
+        hcs.hierarchy(alpha, k_max), p.number("temperature").to_double(), {p.number("a2").to_double()}, request.times,
+        p.number("rtol").to_double(), p.number("atol").to_double());
+    std::optional<NavierStokesSolver> solver;
+    if (!request.coefficients.empty()) solver.emplace(d);
+    return tabulate_trajectory(name(), d, k_max, result, request.coefficients, [&](const EvolutionSample& s) {
+      return SampleTransport{solver->solve(alpha, order, s.a)};
+    });
+  }
+
+ private:
+  /// The transport value `which` from one order's η*, κ*, μ*, …; the stability values also need the
+  /// dilute ζ* of the same order and the density (theory.md (14.4)–(14.5)).
+  static double pick_transport(const NavierStokesValues& v, Transport which, int d, double zeta_dilute,
+                               const Dense& dense, const Rational& alpha) {
+    switch (which) {
+      case Transport::shear_viscosity:
+        return v.shear_viscosity;
+      case Transport::thermal_conductivity:
+        return v.thermal_conductivity;
+      case Transport::density_heat_coefficient:
+        return v.density_heat_coefficient;
+      case Transport::bulk_viscosity:
+        return v.bulk_viscosity;
+      case Transport::cooling_rate_first_order:
+        return v.cooling_rate_first_order;
+      default:
+        break;
+    }
     const EnskogState st = dense.state();
-    const double a = alpha.to_double(), phi = st.packing_fraction;
-    StabilityDensity density;
-    density.pressure = st.pressure(d, a);
-    density.pressure_derivative = (d == 3 ? 2.0 : 1.0) * (1 + a) * phi * (st.chi + st.phi_dchi);  // φ ∂p*/∂φ
-    density.log_chi_derivative = st.phi_dchi / st.chi;
-    density.bulk_viscosity = v.bulk_viscosity;
-    density.cooling_rate_first_order = v.cooling_rate_first_order;
-    const HcsStability s = hcs_stability(d, st.chi * zeta_dilute, v.shear_viscosity, v.thermal_conductivity,
-                                         v.density_heat_coefficient, density);
-    return which == 3 ? s.shear_wavenumber : which == 4 ? s.heat_wavenumber : s.critical_length;
+    const HcsStability s = monodisperse_stability(d, st.chi * zeta_dilute, v, st, alpha.to_double());
+    return which == Transport::critical_wavenumber_shear  ? s.shear_wavenumber
+           : which == Transport::critical_wavenumber_heat ? s.heat_wavenumber
+                                                          : s.critical_length;
   }
   CoefficientValue transport_value(HomogeneousCoolingState& hcs, int d, const Rational& alpha,
-                                   const std::string& scheme, SonineScheme sonine, const Dense& dense, int which,
+                                   const std::string& scheme, SonineScheme sonine, const Dense& dense, Transport which,
                                    const OrderRequest& order) {
     if (scheme == "linear") {
       // First Sonine about f_M(1 + a2 S2) with the van Noije–Ernst a2; error against orders 2, 3.
@@ -249,17 +326,21 @@ class SmoothInelasticModel final : public TransportModel {
       const double zeta_linear = linear.exact_cooling_rate->to_double();  // ζ0 + a2 ζ2, dilute
       Rational value;
       bool exact = false;
-      if ((dense.phi.sign() > 0 || which >= 6) && sonine == SonineScheme::standard) {
+      if ((dense.phi.sign() > 0 || is_dense_only(which)) && sonine == SonineScheme::standard) {
         // The dense closed forms, linear in a2 like Garzó–Dufty's (theory.md §15.7).
         const EnskogState st = dense.state();
-        auto form = [&](int k) { return enskog_form(d, k).evaluate(alpha, st.packing_fraction, st.chi, st.phi_dchi); };
-        if (which >= 3 && which <= 5) {
-          const NavierStokesValues v1{form(0), form(1), form(2), form(6), form(7)};
+        auto form = [&](Transport k) {
+          return enskog_form(d, k).evaluate(alpha, st.packing_fraction, st.chi, st.phi_dchi);
+        };
+        if (is_stability(which)) {
+          const NavierStokesValues v1{form(Transport::shear_viscosity), form(Transport::thermal_conductivity),
+                                      form(Transport::density_heat_coefficient), form(Transport::bulk_viscosity),
+                                      form(Transport::cooling_rate_first_order)};
           value = Rational::from_double(pick_transport(v1, which, d, zeta_linear, dense, alpha));
         } else {
           value = Rational::from_double(form(which));
         }
-      } else if (dense.phi.sign() > 0 || which >= 6) {
+      } else if (dense.phi.sign() > 0 || is_dense_only(which)) {
         // Modified scheme: through the solver (the a2² products of the collisional terms kept).
         auto& solver = ns_[static_cast<std::size_t>(d - 2)];
         if (!solver) solver = std::make_unique<NavierStokesSolver>(d);
@@ -271,7 +352,8 @@ class SmoothInelasticModel final : public TransportModel {
         auto& fs = first_sonine_[static_cast<std::size_t>(d - 2)];
         if (!fs) fs = first_sonine_navier_stokes(d);
         const auto v = fs->evaluate(alpha, a2, sonine);
-        exact = which < 3;
+        exact = which == Transport::shear_viscosity || which == Transport::thermal_conductivity ||
+                which == Transport::density_heat_coefficient;  // v holds η*, κ*, μ* in enum order
         value = exact ? v[static_cast<std::size_t>(which)]
                       : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()},
                                                              which, d, zeta_linear, dense, alpha));
@@ -302,15 +384,14 @@ class SmoothInelasticModel final : public TransportModel {
       return v;
     });
   }
-  /// The dense first-Sonine closed form of transport coefficient `which` (0–2, 6, 7), built once.
-  const EnskogClosedForm& enskog_form(int d, int which) {
-    static const char* const names[] = {
-        "shear_viscosity", "thermal_conductivity",    "density_heat_coefficient", "", "", "",
-        "bulk_viscosity",  "cooling_rate_first_order"};
+  /// The dense first-Sonine closed form of a transport coefficient (not a stability value), built once.
+  const EnskogClosedForm& enskog_form(int d, Transport which) {
     const auto key = std::make_pair(d, which);
     const auto it = enskog_forms_.find(key);
     if (it != enskog_forms_.end()) return it->second;
-    return enskog_forms_.emplace(key, enskog_first_sonine_closed_form(d, names[which])).first->second;
+    return enskog_forms_
+        .emplace(key, enskog_first_sonine_closed_form(d, kTransportNames[static_cast<std::size_t>(which)]))
+        .first->second;
   }
   /// η*, κ*, μ* at Sonine order N about the nonlinear HCS with a_2..a_{N+1}; null if that HCS has
   /// no solution. Memoised per (d, α, φ, N, scheme).
@@ -351,7 +432,7 @@ class SmoothInelasticModel final : public TransportModel {
   std::map<std::tuple<int, std::string, int>, HcsState> memo_;
   std::array<std::unique_ptr<NavierStokesSolver>, 2> ns_;
   std::array<std::optional<FirstSonineNavierStokes>, 2> first_sonine_;
-  std::map<std::pair<int, int>, EnskogClosedForm> enskog_forms_;
+  std::map<std::pair<int, Transport>, EnskogClosedForm> enskog_forms_;
   std::map<std::tuple<int, std::string, int>, std::optional<NavierStokesValues>> ns_memo_;
 };
 

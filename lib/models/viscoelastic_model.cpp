@@ -8,7 +8,8 @@
 #include <map>
 #include <optional>
 
-#include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+#include "gkt/operators/viscoelastic_hierarchy.hpp"
 #include "gkt/transport/viscoelastic/viscoelastic_transport.hpp"
 #include "models/models.hpp"
 
@@ -18,41 +19,49 @@ namespace {
 
 constexpr int kMaxSonineOrder = 6;  // the error estimate asks for N + 1 and N + 2 ≤ 8
 
-/// The series coefficients offered by name: <family>_<j>, j = 1 … J (δ'^j).
-const std::vector<std::string>& series_families() {
-  static const std::vector<std::string> f{"a2", "cooling_rate", "shear_viscosity", "thermal_conductivity",
-                                          "density_heat_coefficient"};
-  return f;
+/// A value of the state at one δ': a2, ζ*, η*, κ*, μ* — whose δ'-series coefficients are also
+/// offered as <name>_<j>, j = 1 … J — or an HCS stability value (theory.md (14.1), (14.6)).
+struct StateValue {
+  const char* name;
+  double (*at)(const ViscoelasticState&, const HcsStability&);
+  /// The δ'^j coefficients of a series family; null for the stability values.
+  const std::vector<double>& (*series)(const ViscoelasticTransportSeries&);
+};
+
+using State = ViscoelasticState;
+using Series = ViscoelasticTransportSeries;
+/// Every state value, series families first (the order of coefficient_names()); built once.
+const std::array<StateValue, 8> kStateValues{{
+    {"a2", [](const State& v, const HcsStability&) { return v.a2; },
+     [](const Series& s) -> const std::vector<double>& { return s.cumulants[2]; }},
+    {"cooling_rate", [](const State& v, const HcsStability&) { return v.cooling_rate; },
+     [](const Series& s) -> const std::vector<double>& { return s.cooling_rate; }},
+    {"shear_viscosity", [](const State& v, const HcsStability&) { return v.shear_viscosity; },
+     [](const Series& s) -> const std::vector<double>& { return s.shear_viscosity; }},
+    {"thermal_conductivity", [](const State& v, const HcsStability&) { return v.thermal_conductivity; },
+     [](const Series& s) -> const std::vector<double>& { return s.thermal_conductivity; }},
+    {"density_heat_coefficient", [](const State& v, const HcsStability&) { return v.density_heat_coefficient; },
+     [](const Series& s) -> const std::vector<double>& { return s.density_heat_coefficient; }},
+    {"critical_wavenumber_shear", [](const State&, const HcsStability& h) { return h.shear_wavenumber; }, nullptr},
+    {"critical_wavenumber_heat", [](const State&, const HcsStability& h) { return h.heat_wavenumber; }, nullptr},
+    {"critical_length", [](const State&, const HcsStability& h) { return h.critical_length; }, nullptr},
+}};
+
+/// Returns the state value named `name`, or null.
+const StateValue* state_value(const std::string& name) {
+  const auto it =
+      std::find_if(kStateValues.begin(), kStateValues.end(), [&](const StateValue& v) { return name == v.name; });
+  return it == kStateValues.end() ? nullptr : &*it;
 }
 
-const std::array<std::string, 3> kCritical{"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"};
-
-/// Returns a2, ζ*, η*, κ*, μ* or a critical value (theory.md (14.1), (14.6)) at δ' from the series
-/// through δ'^orders.
-double at_state(const ViscoelasticTransportSeries& s, const std::string& name, double x, int orders) {
+/// Returns the value at δ' = x from the series through δ'^orders; the stability values from ζ*,
+/// η*, κ*, μ* and λ_T of that state.
+double at_state(const Series& s, const StateValue& value, double x, int orders) {
   const ViscoelasticState v = viscoelastic_state(s, x, orders);
-  if (name == "a2") return v.a2;
-  if (name == "cooling_rate") return v.cooling_rate;
-  if (name == "shear_viscosity") return v.shear_viscosity;
-  if (name == "thermal_conductivity") return v.thermal_conductivity;
-  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
-  StabilityDensity dilute;
-  dilute.cooling_temperature_exponent = v.cooling_temperature_exponent;
-  const HcsStability h =
-      hcs_stability(3, v.cooling_rate, v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient, dilute);
-  return name == "critical_wavenumber_shear"  ? h.shear_wavenumber
-         : name == "critical_wavenumber_heat" ? h.heat_wavenumber
-                                              : h.critical_length;
-}
-
-/// Returns the δ'^j coefficient of a series family.
-double coefficient(const ViscoelasticTransportSeries& s, const std::string& name, int j) {
-  const auto& c = name == "a2"                     ? s.cumulants[2]
-                  : name == "cooling_rate"         ? s.cooling_rate
-                  : name == "shear_viscosity"      ? s.shear_viscosity
-                  : name == "thermal_conductivity" ? s.thermal_conductivity
-                                                   : s.density_heat_coefficient;
-  return c[static_cast<std::size_t>(j)];
+  if (value.series != nullptr) return value.at(v, {});
+  return value.at(v, monodisperse_stability(3, v.cooling_rate,
+                                            {v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient}, {},
+                                            1.0, v.cooling_temperature_exponent));
 }
 
 class ViscoelasticModel final : public TransportModel {
@@ -65,16 +74,16 @@ class ViscoelasticModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto names = default_coefficients({});
-    for (const auto& f : series_families()) names.push_back(f);
-    for (const auto& c : kCritical) names.push_back(c);
+    for (const auto& v : kStateValues) names.emplace_back(v.name);
     return names;
   }
   /// The constants and series coefficients; the values at one δ' (`delta_prime`) only on request.
   [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint&) const override {
     std::vector<std::string> names{"omega0", "omega1", "q0"};
     const int orders = static_cast<int>(ViscoelasticRestitution{}.series().size());
-    for (const auto& f : series_families())
-      for (int j = 1; j <= orders; ++j) names.push_back(f + "_" + std::to_string(j));
+    for (const auto& v : kStateValues)
+      if (v.series != nullptr)
+        for (int j = 1; j <= orders; ++j) names.push_back(std::string(v.name) + "_" + std::to_string(j));
     return names;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -100,13 +109,12 @@ class ViscoelasticModel final : public TransportModel {
   }
   [[nodiscard]] int max_order() const override { return kMaxSonineOrder; }
 
+  [[nodiscard]] bool supports(Capability capability) const override { return capability != Capability::formula; }
+
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
-    const Rational c1 = point.number("c1", Rational::parse("1.15344"));
-    parameters().front().check(c1);
-    if (!order.tolerance && (order.order < 1 || order.order > kMaxSonineOrder))
-      throw std::invalid_argument("order: \"viscoelastic\" takes a Sonine order in [1, " +
-                                  std::to_string(kMaxSonineOrder) + "], got " + std::to_string(order.order));
+    const SchemaPoint p(parameters(), point);  // validated by the registry's guard
+    const Rational c1 = p.number("c1");
     const ViscoelasticRestitution restitution = ViscoelasticRestitution::hertz(c1.to_double());
     if (c1 != cached_c1_) {
       series_.clear();
@@ -126,16 +134,14 @@ class ViscoelasticModel final : public TransportModel {
         out.push_back({Rational::from_double(v), Rational(0), 1, true, false, true});
         continue;
       }
-      if (std::find(kCritical.begin(), kCritical.end(), name) != kCritical.end() ||
-          std::find(series_families().begin(), series_families().end(), name) != series_families().end()) {
-        if (!point.numbers.contains("delta_prime"))
-          throw std::invalid_argument("delta_prime: required for '" + name + "' (a number in [0, 0.3])");
-        const Rational delta_prime = point.number("delta_prime", Rational(0));
-        parameters()[1].check(delta_prime);
-        const double x = delta_prime.to_double();
+      if (const StateValue* value = state_value(name)) {
+        if (!p.given("delta_prime"))
+          throw std::invalid_argument("delta_prime: required for '" + name + "' (" + p.spec("delta_prime").allowed() +
+                                      ")");
+        const double x = p.number("delta_prime").to_double();
         out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
           const int all = static_cast<int>(restitution.series().size());
-          auto at = [&](int m, int terms) { return Rational::from_double(at_state(series_at(m), name, x, terms)); };
+          auto at = [&](int m, int terms) { return Rational::from_double(at_state(series_at(m), *value, x, terms)); };
           TruncationEstimate e = estimate_truncation(at(n, all), at(n + 1, all), at(n + 2, all));
           e.error = e.error + (at(n, all) - at(n, all - 1)).abs();  // the last δ'-term as the series' remainder
           return OrderValue{e, true, false};
@@ -146,19 +152,75 @@ class ViscoelasticModel final : public TransportModel {
       const std::string base = split == std::string::npos ? name : name.substr(0, split);
       const int j = split == std::string::npos ? -1 : std::atoi(name.c_str() + split + 1);
       const int orders = static_cast<int>(restitution.series().size());
-      if (std::find(series_families().begin(), series_families().end(), base) == series_families().end() || j < 1 ||
-          j > orders || name.substr(split + 1) != std::to_string(j))
+      const StateValue* family = state_value(base);
+      if (family == nullptr || family->series == nullptr || j < 1 || j > orders ||
+          name.substr(split + 1) != std::to_string(j))
         throw std::invalid_argument("coefficients: unknown coefficient '" + name +
                                     "' for model viscoelastic; valid: " + join(coefficient_names()));
       out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
-        auto at = [&](int m) { return Rational::from_double(coefficient(series_at(m), base, j)); };
+        auto at = [&](int m) {
+          return Rational::from_double(family->series(series_at(m))[static_cast<std::size_t>(j)]);
+        };
         return OrderValue{estimate_truncation(at(n), at(n + 1), at(n + 2)), true, false};
       }));
     }
     return out;
   }
 
+  [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
+    std::vector<ParameterSpec> specs{{"dimension",
+                                      ParameterSpec::Kind::integer,
+                                      Rational(2),
+                                      Rational(3),
+                                      true,
+                                      true,
+                                      Rational(3),
+                                      "spatial dimension (viscoelastic spheres: 3)",
+                                      {}},
+                                     {"delta",
+                                      ParameterSpec::Kind::real,
+                                      Rational(0),
+                                      Rational(3, 10),
+                                      true,
+                                      true,
+                                      Rational(0),
+                                      "delta of the initial state T0 (the delta expansion is for small delta)",
+                                      {}}};
+    for (auto& spec : evolution_common_parameters()) specs.push_back(std::move(spec));
+    return specs;
+  }
+  [[nodiscard]] std::vector<std::string> trajectory_coefficients() const override {
+    return trajectory_coefficient_names();
+  }
+  /// The hierarchy at δ'(τ) = δ (2T/T0)^{1/10} integrated from a2(0) (theory.md §13.2); η*, κ*, μ*
+  /// and λ_T from the δ'-series at Sonine order N at δ'(τ).
+  Trajectory evolve(const TrajectoryRequest& request) override {
+    const SchemaPoint p(evolution_parameters(), request.parameters);
+    if (p.number("dimension") != Rational(3))
+      throw std::invalid_argument("dimension: \"viscoelastic\" is three-dimensional (3)");
+    if (!p.given("delta"))
+      throw std::invalid_argument("delta: required for \"viscoelastic\", " + p.spec("delta").allowed());
+    evolution_a2_spec(3).check(p.number("a2"));
+    const int order = static_cast<int>(p.number("order").to_double());
+    if (!request.coefficients.empty() && order > kMaxTransportOrder)
+      throw std::invalid_argument("order: viscoelastic transport along the trajectory needs an integer in [1, " +
+                                  std::to_string(kMaxTransportOrder) + "], got " + std::to_string(order));
+    const int k_max = order + 1;  // cumulants a_2 … a_{order+1}
+    const double delta = p.number("delta").to_double();
+    const EvolutionResult result =
+        evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {p.number("a2").to_double()}, request.times,
+                                    p.number("rtol").to_double(), p.number("atol").to_double());
+    std::optional<ViscoelasticTransportSeries> series;
+    if (!request.coefficients.empty()) series = viscoelastic_transport_series(order);
+    return tabulate_trajectory(name(), 3, k_max, result, request.coefficients, [&](const EvolutionSample& s) {
+      const ViscoelasticState state = viscoelastic_state(*series, delta * std::pow(2.0 * s.temperature, 0.1));
+      return SampleTransport{{state.shear_viscosity, state.thermal_conductivity, state.density_heat_coefficient},
+                             state.cooling_temperature_exponent};
+    });
+  }
+
  private:
+  static constexpr int kMaxTransportOrder = 8;  // viscoelastic_transport_series
   Rational cached_c1_{-1};
   std::map<int, ViscoelasticTransportSeries> series_;  // by Sonine order, for cached_c1_
 };

@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
+#include <variant>
 
 #include "gkt/models/transport_model.hpp"
-#include "gkt/transport/closed_forms/enskog_closed_form.hpp"
-#include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
 #include "scene.hpp"
+#include "table_writer.hpp"
 
 namespace gkt::cli {
 
@@ -165,54 +165,50 @@ std::string formula(const std::string& scene_path, const std::vector<std::string
   std::vector<std::string> all = overrides;
   if (order) all.push_back(std::string("order=") + std::to_string(*order));
   const Scene scene = load_scene(scene_path, all, /*require_order=*/false);
-  // Closed forms exist for these models only; any other would fall through to the one-component
-  // smooth-inelastic forms below and print the wrong gas.
-  if (scene.model != "hard-spheres" && scene.model != "smooth-inelastic")
-    throw std::invalid_argument(
-        "model: gkt formula has closed forms for \"hard-spheres\" and \"smooth-inelastic\", got \"" + scene.model +
-        "\"");
-  int dimension = 3, n = 1;
-  bool dense = false;
+  const auto model = make_transport_model(scene.model);
+  if (!model->supports(Capability::formula)) {
+    std::vector<std::string> with_forms;
+    for (const auto& name : transport_model_names())
+      if (make_transport_model(name)->supports(Capability::formula)) with_forms.push_back("\"" + name + "\"");
+    std::string listed = with_forms.empty() ? "" : with_forms.back();
+    if (with_forms.size() > 1) listed = join({with_forms.begin(), with_forms.end() - 1}) + " and " + listed;
+    throw std::invalid_argument("model: gkt formula has closed forms for " + listed + ", got \"" + scene.model + "\"");
+  }
+  ParameterPoint point;  // the fixed parameters; α (and φ of a dense gas) stay symbolic
+  point.choices = scene.choices;
+  int n = 1;
   for (const auto& axis : scene.axes) {
     if (axis.key == "alpha") continue;     // α is the formula's variable
     if (axis.key == "packing_fraction") {  // φ too: a dense scene gets the form with φ, χ symbolic
-      for (const auto& v : axis.values) dense = dense || v.sign() != 0;
+      for (const auto& v : axis.values)
+        if (v.sign() != 0) point.numbers[axis.key] = v;
       continue;
     }
     if (axis.values.size() != 1)
       throw std::invalid_argument(axis.key + ": a formula needs a single value, not a sweep");
-    if (axis.key == "dimension") dimension = static_cast<int>(axis.values[0].to_double());
-    if (axis.key == "order") n = static_cast<int>(axis.values[0].to_double());
     if (axis.key == "tolerance") throw std::invalid_argument("tolerance: a formula is at a fixed order; use --order");
+    if (axis.key == "order")
+      n = static_cast<int>(axis.values[0].to_double());
+    else
+      point.numbers[axis.key] = axis.values[0];
   }
-  const auto model = make_transport_model(scene.model);
   const auto names = model->coefficient_names();
   if (std::find(names.begin(), names.end(), coefficient) == names.end())
     throw std::invalid_argument("--coefficient: unknown coefficient '" + coefficient + "' for model \"" + scene.model +
                                 "\"");
-  if (scene.model == "hard-spheres") {
-    // Exact at every order: the value is a rational number.
-    ParameterPoint point;
-    point.numbers["dimension"] = Rational(dimension);
-    OrderRequest request;
-    request.order = n;
-    const Rational v = model->evaluate(point, {coefficient}, request).front().value;
-    return render(RationalFunction{RationalPolynomial(v), RationalPolynomial(1L)}, format, coefficient, dimension,
-                  scene.model);
+  ClosedForm form;
+  try {
+    form = model->closed_form(point, coefficient, n);
+  } catch (const std::invalid_argument& e) {
+    // The library names the order `order`; here it is the --order option.
+    const std::string message = e.what();
+    if (message.starts_with("order: ")) throw std::invalid_argument("--" + message);
+    throw;
   }
-  if (n != 1)
-    throw std::invalid_argument("--order: \"" + scene.model +
-                                "\" has closed forms at order 1 only (higher orders use the nonlinear HCS)");
-  const auto it = scene.choices.find("scheme");
-  const std::string scheme = it == scene.choices.end() ? "standard" : it->second;
-  if (dense) {
-    if (scheme != "standard")
-      throw std::invalid_argument("scheme: dense-gas closed forms exist for \"standard\" only, got \"" + scheme + "\"");
-    return render(enskog_first_sonine_closed_form(dimension, coefficient), format, coefficient, dimension);
-  }
-  return render(first_sonine_closed_form(dimension, coefficient,
-                                         scheme == "modified" ? SonineScheme::modified : SonineScheme::standard),
-                format, coefficient, dimension, scene.model, scheme);
+  if (const auto* dense = std::get_if<EnskogClosedForm>(&form.form))
+    return render(*dense, format, coefficient, form.dimension);
+  return render(std::get<RationalFunction>(form.form), format, coefficient, form.dimension, scene.model,
+                form.scheme == SonineScheme::modified ? "modified" : "standard");
 }
 
 }  // namespace gkt::cli

@@ -21,20 +21,16 @@ namespace {
 
 constexpr int kBadInput = 2;
 
-/// `gkt stability` is `gkt table` whose default coefficients are the HCS stability values.
-const std::vector<std::string> kStabilityCoefficients{"critical_wavenumber_shear", "critical_wavenumber_heat",
-                                                      "critical_length"};
-
 int run_table(const std::string& scene_path, const std::vector<std::string>& overrides, const std::string& format,
               const std::string& output, bool exact, bool stability = false) {
   gkt::cli::OutputTarget target(output);  // refused before any work if it cannot be written
   auto scene = gkt::cli::load_scene(scene_path, overrides);
+  // `gkt stability` is `gkt table` whose default coefficients are the HCS stability values.
   if (stability && !scene.coefficients_given) {
-    const auto names = gkt::make_transport_model(scene.model)->coefficient_names();
-    if (std::find(names.begin(), names.end(), kStabilityCoefficients.front()) == names.end())
+    if (!gkt::make_transport_model(scene.model)->supports(gkt::Capability::stability))
       throw std::invalid_argument("model: \"" + scene.model +
                                   "\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\"");
-    scene.coefficients = kStabilityCoefficients;
+    scene.coefficients = gkt::stability_coefficient_names();
   }
   std::vector<std::string> warnings;
   const auto table = gkt::cli::compute_table(scene, {exact}, warnings);

@@ -249,24 +249,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   const auto model = make_transport_model(scene.model);
 
   std::vector<ParameterSpec> specs = model->parameters();
-  specs.push_back({"order",
-                   ParameterSpec::Kind::integer,
-                   Rational(1),
-                   Rational(model->max_order()),
-                   true,
-                   true,
-                   Rational(1),
-                   "Sonine order (number of polynomials)",
-                   {}});
-  specs.push_back({"tolerance",
-                   ParameterSpec::Kind::real,
-                   Rational(0),
-                   Rational(1),
-                   false,
-                   true,
-                   Rational(0),
-                   "target estimated truncation error",
-                   {}});
+  for (auto& spec : order_parameters(model->max_order())) specs.push_back(std::move(spec));
 
   // The number of species first: a fifth [[species]] table is "at most 4 species", not an
   // unknown key diameter_5.

@@ -1,53 +1,21 @@
-// The interface every transport model implements, and the one registry that names them
-// (cf. Cantera's TransportFactory): front ends pick models by name only through here.
+// The façade: the interface every transport model implements, and the one registry that names
+// them (cf. Cantera's TransportFactory). Front ends pick models by name only through here and ask
+// the model for everything a subcommand needs: its schema (parameters(), evolution_parameters(),
+// coefficient names, max_order(), supports()), the table values (evaluate), the closed forms
+// (closed_form) and the cooling trajectory (evolve). A model from make_transport_model validates
+// every call against its schema before it computes anything.
 #pragma once
 
-#include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
+#include "gkt/models/closed_form.hpp"
+#include "gkt/models/cooling_trajectory.hpp"
+#include "gkt/models/parameter_spec.hpp"
 
 namespace gkt {
-
-/// A model parameter: its key, kind and allowed closed/open range or choices (used to validate
-/// input).
-struct ParameterSpec {
-  enum class Kind { integer, real, choice };
-  std::string name;
-  Kind kind = Kind::real;
-  Rational min, max;
-  bool min_inclusive = true;
-  bool max_inclusive = true;
-  Rational default_value;
-  std::string description;
-  std::vector<std::string> choices;  ///< allowed strings of a `choice` parameter (first = default)
-  /// Returns a one-line description of the allowed values, e.g. "an integer in [2, 3]".
-  [[nodiscard]] std::string allowed() const;
-  /// Throws std::invalid_argument "<name>: must be …, got …" if v is not allowed.
-  void check(const Rational& v) const;
-  /// Throws std::invalid_argument "<name>: must be one of …, got …" if c is not a choice.
-  void check(const std::string& c) const;
-};
-
-/// The parameters of one evaluation: numbers (exact) and named choices.
-struct ParameterPoint {
-  std::map<std::string, Rational> numbers;
-  std::map<std::string, std::string> choices;
-  /// Returns the number `key`, or `fallback` if absent.
-  [[nodiscard]] Rational number(const std::string& key, const Rational& fallback) const;
-  /// Returns the choice `key`, or `fallback` if absent.
-  [[nodiscard]] std::string choice(const std::string& key, const std::string& fallback) const;
-};
-
-/// Sonine order to use: a fixed order, or the smallest order whose estimated truncation
-/// error is below a tolerance.
-struct OrderRequest {
-  int order = 1;
-  std::optional<Rational> tolerance;
-};
 
 /// One coefficient at one parameter point.
 struct CoefficientValue {
@@ -59,6 +27,14 @@ struct CoefficientValue {
   bool defined = true;          ///< false if no value with an error estimate exists at this order
   bool error_estimated = true;  ///< false: the approximation's error is not estimated (printed nan)
 };
+
+/// What a model can answer, one per front-end subcommand: a table of coefficients (every model),
+/// exact closed forms, a cooling trajectory, the stability of the homogeneous cooling state.
+enum class Capability { table, formula, evolve, stability };
+
+/// Returns the names of the HCS stability values (theory.md §14), the coefficients a stability
+/// analysis lists by default: critical_wavenumber_shear, critical_wavenumber_heat, critical_length.
+const std::vector<std::string>& stability_coefficient_names();
 
 /// A transport model: named coefficients as functions of named parameters.
 class TransportModel {
@@ -89,11 +65,27 @@ class TransportModel {
   }
   /// Returns the highest Sonine order accepted.
   [[nodiscard]] virtual int max_order() const = 0;
+  /// Returns whether the model answers `capability`; by default a table only. A model that
+  /// supports stability offers every name of stability_coefficient_names().
+  [[nodiscard]] virtual bool supports(Capability capability) const { return capability == Capability::table; }
   /// Returns the requested coefficients at one parameter point (reduced as in
-  /// docs/conventions.md), computing only those; state is reused between calls.
+  /// docs/conventions.md), computing only those; state is reused between calls. Throws
+  /// std::invalid_argument naming the key on an unknown parameter or an out-of-range value.
   virtual std::vector<CoefficientValue> evaluate(const ParameterPoint& parameters,
                                                  const std::vector<std::string>& coefficients,
                                                  const OrderRequest& order) = 0;
+  /// Returns the exact closed form of `coefficient` at Sonine order `order` and the fixed
+  /// parameters `point` (α, and φ of a dense gas, stay symbolic; φ > 0 in `point` asks for the
+  /// dense form). Only if supports(Capability::formula); throws std::invalid_argument otherwise.
+  virtual ClosedForm closed_form(const ParameterPoint& point, const std::string& coefficient, int order);
+  /// Returns the parameters of a cooling trajectory (the keys of `gkt evolve` besides the output
+  /// times); empty unless supports(Capability::evolve).
+  [[nodiscard]] virtual std::vector<ParameterSpec> evolution_parameters() const { return {}; }
+  /// Returns the coefficients offered along a cooling trajectory.
+  [[nodiscard]] virtual std::vector<std::string> trajectory_coefficients() const { return {}; }
+  /// Returns the integrated cooling trajectory (theory.md §12). Only if supports(Capability::evolve);
+  /// throws std::invalid_argument otherwise and on bad input, std::runtime_error if the integrator fails.
+  virtual Trajectory evolve(const TrajectoryRequest& request);
 };
 
 /// Returns a new model by name; throws std::invalid_argument listing the valid names.

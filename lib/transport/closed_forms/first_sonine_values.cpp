@@ -4,6 +4,7 @@
 
 #include "gkt/transport/closed_forms/enskog_closed_form.hpp"
 #include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
+#include "transport/common/alpha_polynomial.hpp"
 
 namespace gkt {
 
@@ -13,7 +14,7 @@ namespace {
 }  // namespace
 
 FirstSonineValues first_sonine_values(int dimension, double alpha) {
-  if (!(alpha > 0 && alpha <= 1)) throw std::invalid_argument("alpha: must be a number in (0, 1]");
+  detail::require_restitution(alpha);
   if (dimension == 3)
     return {first_sonine_a2_d3(alpha), first_sonine_cooling_rate_d3(alpha), first_sonine_shear_viscosity_d3(alpha),
             first_sonine_thermal_conductivity_d3(alpha), first_sonine_density_heat_coefficient_d3(alpha)};
@@ -24,7 +25,7 @@ FirstSonineValues first_sonine_values(int dimension, double alpha) {
 }
 
 EnskogFirstSonineValues enskog_first_sonine_values(int dimension, double alpha, const EnskogState& state) {
-  if (!(alpha > 0 && alpha <= 1)) throw std::invalid_argument("alpha: must be a number in (0, 1]");
+  detail::require_restitution(alpha);
   const double phi = state.packing_fraction, chi = state.chi, dchi = state.phi_dchi;
   if (dimension == 3)
     return {enskog_first_sonine_a2_d3(alpha, phi, chi, dchi),

@@ -3,7 +3,9 @@
 // measured relative error ≤ 4e-14 against exact evaluation), and the one check on α they share.
 #pragma once
 
+#include <charconv>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "gkt/algebra/rational_polynomial.hpp"
@@ -27,10 +29,23 @@ inline double evaluate(const AlphaPolynomial& c, long double alpha) {
   return static_cast<double>(v);
 }
 
-/// Throws std::invalid_argument naming `alpha` and its range (0, 1] unless 0 < α ≤ 1.
-inline void require_restitution(const Rational& alpha) {
-  if (alpha.sign() <= 0 || alpha > Rational(1))
-    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
+/// Returns the one error of a restitution coefficient out of range: "<key>: must be a number in (0, 1], got <value>".
+inline std::invalid_argument restitution_error(const std::string& key, const std::string& value) {
+  return std::invalid_argument(key + ": must be a number in (0, 1], got " + value);
+}
+
+/// Throws restitution_error naming `key` unless 0 < α ≤ 1 (exact α of the engine).
+inline void require_restitution(const Rational& alpha, const std::string& key = "alpha") {
+  if (alpha.sign() <= 0 || alpha > Rational(1)) throw restitution_error(key, alpha.to_decimal_string());
+}
+
+/// Throws restitution_error naming `key` unless 0 < α ≤ 1 (α at the double solver boundary; NaN refused),
+/// the value written in its shortest round-trip form.
+inline void require_restitution(double alpha, const std::string& key = "alpha") {
+  if (alpha > 0 && alpha <= 1) return;
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, alpha);
+  throw restitution_error(key, std::string(buffer, r.ptr));
 }
 
 }  // namespace gkt::detail

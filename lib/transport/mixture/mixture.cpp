@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gkt/transport/common/pair_correlation.hpp"
+#include "transport/common/alpha_polynomial.hpp"
 
 namespace gkt {
 
@@ -55,7 +56,7 @@ void Mixture::validate() const {
     for (std::size_t j = 0; j < s; ++j) {
       const double a = restitution(i, j);
       const std::string field = "alpha_" + std::to_string(i + 1) + "_" + std::to_string(j + 1);
-      if (!(a > 0 && a <= 1)) throw std::invalid_argument(field + ": must be a number in (0, 1], got " + number(a));
+      detail::require_restitution(a, field);
       if (a != restitution(j, i))
         throw std::invalid_argument(field + ": the restitution matrix must be symmetric, got " + number(a) + " and " +
                                     number(restitution(j, i)));

@@ -10,6 +10,7 @@
 #include "gkt/collision/collision_moments.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
+#include "transport/common/alpha_polynomial.hpp"
 #include "transport/common/galerkin_pieces.hpp"
 
 namespace gkt {
@@ -30,8 +31,8 @@ void Tracer::validate() const {
   if (!(mass_ratio > 0) || !std::isfinite(mass_ratio)) throw std::invalid_argument("mass_ratio: must be a number > 0");
   if (!(diameter_ratio > 0) || !std::isfinite(diameter_ratio))
     throw std::invalid_argument("diameter_ratio: must be a number > 0");
-  if (!(alpha_tracer > 0 && alpha_tracer <= 1)) throw std::invalid_argument("alpha_tracer: must be a number in (0, 1]");
-  if (!(alpha_host > 0 && alpha_host <= 1)) throw std::invalid_argument("alpha_host: must be a number in (0, 1]");
+  detail::require_restitution(alpha_tracer, "alpha_tracer");
+  detail::require_restitution(alpha_host, "alpha_host");
 }
 
 TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order) : max_order_(max_order) {

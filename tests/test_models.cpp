@@ -1,0 +1,200 @@
+// The façade (include/gkt/models/): every model validates its calls against its declared schema
+// the way the scene loader does — unknown names and out-of-range values are refused with
+// std::invalid_argument naming the key, never answered with a default — and every capability
+// (table, formula, evolve, stability) is reached through the model.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+#include "gkt/models/transport_model.hpp"
+#include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
+#include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+
+using gkt::Capability;
+using gkt::ParameterPoint;
+using gkt::Rational;
+
+namespace {
+
+/// Returns the message of the std::invalid_argument `call` throws ("" and a test failure if none).
+template <class Call>
+std::string refusal(Call&& call) {
+  try {
+    call();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no std::invalid_argument";
+  return "";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+/// A dilute binary mixture point (the keys the scene loader makes of two [[species]] tables).
+ParameterPoint binary() {
+  ParameterPoint p;
+  p.numbers = {{"species", Rational(2)},       {"mass_1", Rational(1)},     {"mass_2", Rational(2)},
+               {"diameter_1", Rational(1)},    {"diameter_2", Rational(1)}, {"fraction_1", Rational(1, 2)},
+               {"fraction_2", Rational(1, 2)}, {"alpha", Rational(9, 10)}};
+  return p;
+}
+
+}  // namespace
+
+// Issue 17: "alpah" used to be ignored and the α = 1 answer returned.
+TEST(ModelSchema, MisspelledParameterIsRefusedWithTheValidNames) {
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  ParameterPoint point;
+  point.numbers["alpah"] = Rational(1, 2);
+  const std::string message = refusal([&] { (void)model->evaluate(point, {"a2"}, {}); });
+  EXPECT_TRUE(contains(message, "alpah: unknown parameter for model \"smooth-inelastic\"")) << message;
+  for (const auto& spec : model->parameters()) EXPECT_TRUE(contains(message, spec.name)) << spec.name;
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+  // A misspelled choice too (it used to fall back to the standard scheme).
+  ParameterPoint choice;
+  choice.choices["schem"] = "modified";
+  EXPECT_TRUE(contains(refusal([&] { (void)model->evaluate(choice, {"shear_viscosity"}, {}); }),
+                       "schem: unknown parameter for model \"smooth-inelastic\""));
+  for (const auto& name : gkt::transport_model_names()) {
+    auto m = gkt::make_transport_model(name);
+    ParameterPoint typo = name == "mixture" ? binary() : ParameterPoint{};
+    typo.numbers["dimensoin"] = Rational(2);
+    EXPECT_TRUE(contains(refusal([&] { (void)m->evaluate(typo, {m->coefficient_names().front()}, {}); }),
+                         "dimensoin: unknown parameter for model \"" + name + "\""))
+        << name;
+  }
+}
+
+// Out-of-range values get the scene loader's message: ParameterSpec::check of the declared spec.
+TEST(ModelSchema, OutOfRangeValuesAreRefusedAsTheSceneLoaderRefusesThem) {
+  for (const auto& name : gkt::transport_model_names()) {
+    auto model = gkt::make_transport_model(name);
+    for (const auto& spec : model->parameters()) {
+      if (spec.kind == gkt::ParameterSpec::Kind::choice) {
+        ParameterPoint p = name == "mixture" ? binary() : ParameterPoint{};
+        p.choices[spec.name] = "no-such-choice";
+        EXPECT_EQ(refusal([&] { (void)model->evaluate(p, {model->coefficient_names().front()}, {}); }),
+                  spec.name + ": must be " + spec.allowed() + ", got \"no-such-choice\"");
+        continue;
+      }
+      ParameterPoint p = name == "mixture" ? binary() : ParameterPoint{};
+      const Rational bad = spec.max + Rational(1);
+      p.numbers[spec.name] = bad;
+      EXPECT_EQ(refusal([&] { (void)model->evaluate(p, {model->coefficient_names().front()}, {}); }),
+                spec.name + ": must be " + spec.allowed() + ", got " + bad.to_decimal_string())
+          << name;
+    }
+  }
+  // The mixture's masses used to reach the solver unchecked.
+  auto mixture = gkt::make_transport_model("mixture");
+  ParameterPoint p = binary();
+  p.numbers["mass_2"] = Rational(-2);
+  EXPECT_TRUE(contains(refusal([&] { (void)mixture->evaluate(p, {"cooling_rate"}, {}); }),
+                       "mass_2: must be a number in (0, 1000000000], got -2"));
+}
+
+// The order request is part of the schema: order in [1, max_order()], tolerance in (0, 1].
+TEST(ModelSchema, OrderOutsideTheModelsRangeIsRefused) {
+  for (const auto& name : gkt::transport_model_names()) {
+    auto model = gkt::make_transport_model(name);
+    const ParameterPoint p = name == "mixture" ? binary() : ParameterPoint{};
+    const std::string coefficient = model->coefficient_names().front();
+    const int too_high = model->max_order() + 1;
+    EXPECT_EQ(
+        refusal([&] {
+          (void)model->evaluate(p, {coefficient}, {too_high, {}});
+        }),
+        "order: must be an integer in [1, " + std::to_string(model->max_order()) + "], got " + std::to_string(too_high))
+        << name;
+    EXPECT_TRUE(contains(refusal([&] { (void)model->evaluate(p, {coefficient}, {0, {}}); }), "order: "));
+    EXPECT_EQ(refusal([&] {
+                (void)model->evaluate(p, {coefficient}, {1, Rational(2)});
+              }),
+              "tolerance: must be a number in (0, 1], got 2");
+  }
+}
+
+// Each model declares which subcommands it answers; the stability values are offered where declared.
+TEST(ModelSchema, DeclaredCapabilities) {
+  for (const auto& name : gkt::transport_model_names()) {
+    auto model = gkt::make_transport_model(name);
+    EXPECT_TRUE(model->supports(Capability::table)) << name;
+    const auto names = model->coefficient_names();
+    for (const auto& c : gkt::stability_coefficient_names()) {
+      EXPECT_EQ(std::find(names.begin(), names.end(), c) != names.end(), model->supports(Capability::stability))
+          << name << " " << c;
+    }
+    EXPECT_EQ(model->evolution_parameters().empty(), !model->supports(Capability::evolve)) << name;
+    if (!model->supports(Capability::formula)) {
+      EXPECT_TRUE(contains(refusal([&] { (void)model->closed_form({}, names.front(), 1); }), "has no closed forms"));
+    }
+    if (!model->supports(Capability::evolve)) {
+      EXPECT_TRUE(contains(refusal([&] { (void)model->evolve({}); }), "has no cooling trajectory"));
+    }
+  }
+  EXPECT_TRUE(gkt::make_transport_model("smooth-inelastic")->supports(Capability::formula));
+  EXPECT_FALSE(gkt::make_transport_model("mixture")->supports(Capability::evolve));
+}
+
+// `gkt formula` asks the model: the first-Sonine closed form of the one-component gas, validated.
+TEST(ModelFacade, ClosedFormsThroughTheModel) {
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  ParameterPoint p;
+  p.numbers["dimension"] = Rational(2);
+  p.choices["scheme"] = "modified";
+  const gkt::ClosedForm f = model->closed_form(p, "thermal_conductivity", 1);
+  ASSERT_TRUE(std::holds_alternative<gkt::RationalFunction>(f.form));
+  EXPECT_TRUE(std::get<gkt::RationalFunction>(f.form).equals(
+      gkt::first_sonine_closed_form(2, "thermal_conductivity", gkt::SonineScheme::modified)));
+  EXPECT_EQ(f.dimension, 2);
+  p.choices.erase("scheme");
+  p.numbers["packing_fraction"] = Rational(1, 5);
+  EXPECT_TRUE(std::holds_alternative<gkt::EnskogClosedForm>(model->closed_form(p, "shear_viscosity", 1).form));
+  EXPECT_TRUE(contains(refusal([&] { (void)model->closed_form(p, "shear_viscosity", 2); }),
+                       "order: \"smooth-inelastic\" has closed forms at order 1 only"));
+  p.numbers["alpah"] = Rational(1, 2);
+  EXPECT_TRUE(contains(refusal([&] { (void)model->closed_form(p, "shear_viscosity", 1); }), "alpah: unknown"));
+  // Hard spheres: the exact Sonine approximant is a constant (Chapman & Cowling §10.51: 205/202).
+  const auto hs = gkt::make_transport_model("hard-spheres")->closed_form({}, "shear_viscosity", 2);
+  EXPECT_EQ(std::get<gkt::RationalFunction>(hs.form).numerator.coefficient(0), Rational(205, 202));
+}
+
+// `gkt evolve` asks the model: the trajectory equals the integrator called directly, and the
+// evolution keys are validated (unknown names, α, a2 in the dimension's positivity range).
+TEST(ModelFacade, CoolingTrajectoryThroughTheModel) {
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  ASSERT_TRUE(model->supports(Capability::evolve));
+  gkt::TrajectoryRequest request;
+  request.parameters.numbers = {{"alpha", Rational(4, 5)}, {"order", Rational(2)}, {"a2", Rational(1, 10)}};
+  request.times = gkt::log_spaced_times(10, 5);
+  const gkt::Trajectory t = model->evolve(request);
+  ASSERT_EQ(t.columns, (std::vector<std::string>{"time", "collisions", "temperature", "a2", "a3", "cooling_rate"}));
+  gkt::HomogeneousCoolingState hcs(3);
+  const auto direct =
+      gkt::evolve_homogeneous_cooling(hcs.hierarchy(Rational(4, 5), 3), 1.0, {0.1}, request.times, 1e-8, 1e-12);
+  ASSERT_EQ(t.rows.size(), direct.samples.size());
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    EXPECT_EQ(t.rows[i][2], direct.samples[i].temperature);
+    EXPECT_EQ(t.rows[i][3], direct.samples[i].a[2]);
+    EXPECT_EQ(t.rows[i][5], direct.samples[i].cooling_rate);
+  }
+  gkt::TrajectoryRequest bad = request;
+  bad.parameters.numbers["alpah"] = Rational(1, 2);
+  EXPECT_TRUE(contains(refusal([&] { (void)model->evolve(bad); }), "alpah: unknown parameter"));
+  bad = request;
+  bad.parameters.numbers.erase("alpha");
+  EXPECT_EQ(refusal([&] { (void)model->evolve(bad); }), "alpha: required, a number in (0, 1]");
+  bad = request;
+  bad.parameters.numbers["a2"] = Rational(9, 10);  // inside 2D's [-1, 1], outside 3D's
+  EXPECT_EQ(refusal([&] { (void)model->evolve(bad); }), "a2: must be a number in [-0.5333333333333333, 0.8], got 0.9");
+  bad = request;
+  bad.coefficients = {"viscosity"};
+  EXPECT_TRUE(contains(refusal([&] { (void)model->evolve(bad); }), "coefficients: 'viscosity' is not offered"));
+  bad = request;
+  bad.times = {2, 1};
+  EXPECT_TRUE(contains(refusal([&] { (void)model->evolve(bad); }), "times: must be a non-empty list"));
+}
