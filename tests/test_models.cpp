@@ -104,11 +104,13 @@ TEST(ModelSchema, OrderOutsideTheModelsRangeIsRefused) {
     const ParameterPoint p = name == "mixture" ? binary() : ParameterPoint{};
     const std::string coefficient = model->coefficient_names().front();
     const int too_high = model->max_order() + 1;
-    EXPECT_EQ(
-        refusal([&] {
-          (void)model->evaluate(p, {coefficient}, {too_high, {}});
-        }),
-        "order: must be an integer in [1, " + std::to_string(model->max_order()) + "], got " + std::to_string(too_high))
+    EXPECT_EQ(refusal([&] {
+                (void)model->evaluate(p, {coefficient}, {too_high, {}});
+              }),
+              (model->max_order() == 1
+                   ? std::string("order: must be exactly 1, got ")
+                   : "order: must be an integer in [1, " + std::to_string(model->max_order()) + "], got ") +
+                  std::to_string(too_high))
         << name;
     EXPECT_TRUE(contains(refusal([&] { (void)model->evaluate(p, {coefficient}, {0, {}}); }), "order: "));
     EXPECT_EQ(refusal([&] {

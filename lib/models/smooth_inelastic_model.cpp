@@ -157,7 +157,9 @@ class SmoothInelasticModel final : public TransportModel {
   [[nodiscard]] std::vector<ParameterSpec> scene_parameters(const ParameterPoint& fixed) const override {
     auto specs = parameters();
     const Rational dim = fixed.number("dimension", Rational(0));
-    if (dim == Rational(2) || dim == Rational(3)) specs[4].max = max_packing_fraction(dim == Rational(2) ? 2 : 3);
+    if (dim == Rational(2) || dim == Rational(3))
+      for (auto& spec : specs)
+        if (spec.name == "packing_fraction") spec.max = max_packing_fraction(dim == Rational(2) ? 2 : 3);
     return specs;
   }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }

@@ -27,6 +27,9 @@ class ValidatedModel final : public TransportModel {
     return model_->default_coefficients(fixed);
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override { return model_->parameters(); }
+  [[nodiscard]] std::vector<ParameterSpec> scene_parameters(const ParameterPoint& fixed) const override {
+    return model_->scene_parameters(fixed);
+  }
   [[nodiscard]] int max_order() const override { return model_->max_order(); }
   [[nodiscard]] bool supports(Capability capability) const override { return model_->supports(capability); }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
@@ -38,13 +41,14 @@ class ValidatedModel final : public TransportModel {
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
-    validate_parameters(model_->parameters(), point, owner(*model_));
+    // The point's own dimension fixes ranges that differ between d = 2 and 3 (packing fraction).
+    validate_parameters(model_->scene_parameters(point), point, owner(*model_));
     validate_order(order, model_->max_order());
     return model_->evaluate(point, coefficients, order);
   }
   ClosedForm closed_form(const ParameterPoint& point, const std::string& coefficient, int order) override {
     if (!model_->supports(Capability::formula)) return TransportModel::closed_form(point, coefficient, order);
-    validate_parameters(model_->parameters(), point, owner(*model_));
+    validate_parameters(model_->scene_parameters(point), point, owner(*model_));
     validate_order({order, {}}, model_->max_order());
     return model_->closed_form(point, coefficient, order);
   }
