@@ -305,3 +305,40 @@ def test_version_is_the_programs():
     code, out, _ = run_cli("--version")
     assert code == 0
     assert out.strip() == f"gkt {gkt.__version__}"
+
+
+def test_binary_table_at_a_node_equals_the_mixture_table():
+    """At a Chebyshev node (x_1 = 1/2 of 5) the interpolated binary equals the solved mixture: T_i/T
+    directly (the Navier-Stokes solver's Maxwellian HCS), η through η0(m̄, σ̄, T) = (5/(16 σ̄²)) √(m̄ T/π)
+    (docs/conventions.md, 3D)."""
+    table = gkt.BinaryTransportTable((1, 3), (1, 1.5), 0.8, order=1, nodes=5)
+    assert 0 < table.interpolation_error < 0.1  # measured between 5 nodes: coarse
+    n, temperature = np.array([1.0, 0.2]), np.array([1.0, 4.0])
+    cells = table.evaluate(0.5, n, temperature)
+    solved = gkt.table({"model": "mixture", "alpha": 0.8, "order": 1, "hcs": "maxwellian",
+                        "coefficients": ["temperature_ratio_1", "temperature_ratio_2", "shear_viscosity"],
+                        "species": [{"mass": 1, "diameter": 1, "fraction": 0.5}, {"mass": 3, "diameter": 1.5, "fraction": 0.5}]})
+    for i in (1, 2):
+        np.testing.assert_allclose(cells[f"temperature_ratio_{i}"], solved[f"temperature_ratio_{i}"][0], rtol=1e-10)
+    eta0 = 5 / (16 * 1.25**2) * np.sqrt(2.0 * temperature / np.pi)
+    np.testing.assert_allclose(cells["shear_viscosity"] / eta0, solved["shear_viscosity"][0], rtol=1e-10)
+    assert np.all(cells["bulk_viscosity"] == 0)  # a dilute table
+    np.testing.assert_array_equal(cells["pressure"], n * temperature)
+
+
+def test_binary_table_shapes_and_errors():
+    table = gkt.BinaryTransportTable((1, 2), (1, 1), [[0.9, 0.8], [0.8, 0.7]], order=1, nodes=5,
+                                     max_packing_fraction=0.2, packing_nodes=4)
+    x = np.linspace(0, 1, 6)[:, None]
+    cells = table.evaluate(x, np.array([0.01, 0.1]), 1.0)
+    assert cells["mutual_diffusion_1_2"].shape == (6, 2)
+    assert len(cells) == 18
+    assert np.all(np.isnan(table.evaluate(0.5, 10.0, 1.0)["shear_viscosity"]))  # phi beyond the table's 0.2
+    with pytest.raises(ValueError, match="^alpha: must be a number or a 2 x 2 restitution matrix$"):
+        gkt.BinaryTransportTable((1, 2), (1, 1), [0.9, 0.8])
+    with pytest.raises(ValueError, match="mass"):
+        gkt.BinaryTransportTable((0, 2), (1, 1), 0.9)
+    with pytest.raises(ValueError, match="alpha"):
+        gkt.BinaryTransportTable((1, 2), (1, 1), [[0.9, 0.8], [0.7, 0.9]])
+    with pytest.raises(ValueError, match="nodes"):
+        gkt.BinaryTransportTable((1, 2), (1, 1), 0.9, nodes=2)

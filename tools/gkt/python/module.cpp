@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -315,6 +316,81 @@ py::dict enskog_first_sonine(const py::object& alpha, const py::object& packing_
       shape_of(in[0]));
 }
 
+/// A binary's Navier–Stokes table (gkt/transport/mixture/mixture_transport_table.hpp) built once,
+/// evaluated per cell over NumPy arrays of (x_1, n, T).
+class BinaryTable {
+ public:
+  BinaryTable(const std::array<double, 2>& mass, const std::array<double, 2>& diameter, const py::object& alpha,
+              int dimension, int order, int nodes, double max_packing_fraction, int packing_nodes)
+      : table_(build(mass, diameter, alpha, dimension, order, nodes, max_packing_fraction, packing_nodes)) {}
+
+  [[nodiscard]] double interpolation_error() const { return table_->interpolation_error(); }
+
+  /// Returns the Navier–Stokes set at every (x_1, n, T) (broadcast) in the caller's units.
+  py::dict evaluate(const py::object& fraction_1, const py::object& number_density,
+                    const py::object& temperature) const {
+    const auto in = broadcast({fraction_1, number_density, temperature});
+    const auto n = static_cast<std::size_t>(in[0].size());
+    std::vector<gkt::BinaryTransport> cells(n);
+    {
+      py::gil_scoped_release release;
+      gkt::evaluate(*table_, {in[0].data(), n}, {in[1].data(), n}, {in[2].data(), n}, cells);
+    }
+    using T = gkt::BinaryTransport;
+    py::dict out;
+    const auto shape = shape_of(in[0]);
+    const auto put = [&](const std::string& name, auto get) {
+      py::array_t<double> column(shape);
+      double* data = column.mutable_data();
+      for (std::size_t i = 0; i < n; ++i) data[i] = get(cells[i]);
+      out[py::str(name)] = column;
+    };
+    put("cooling_rate", [](const T& v) { return v.cooling_rate; });
+    for (std::size_t i = 0; i < 2; ++i)
+      put("temperature_ratio_" + std::to_string(i + 1), [i](const T& v) { return v.temperature_ratio[i]; });
+    put("shear_viscosity", [](const T& v) { return v.shear_viscosity; });
+    put("thermal_conductivity", [](const T& v) { return v.thermal_conductivity; });
+    for (std::size_t i = 0; i < 2; ++i)
+      for (std::size_t j = 0; j < 2; ++j)
+        put("mutual_diffusion_" + std::to_string(i + 1) + "_" + std::to_string(j + 1),
+            [k = 2 * i + j](const T& v) { return v.mutual_diffusion[k]; });
+    for (std::size_t i = 0; i < 2; ++i) {
+      const std::string at = "_" + std::to_string(i + 1);
+      put("thermal_diffusion" + at, [i](const T& v) { return v.thermal_diffusion[i]; });
+      put("pressure_diffusion" + at, [i](const T& v) { return v.pressure_diffusion[i]; });
+      put("dufour" + at, [i](const T& v) { return v.dufour[i]; });
+    }
+    put("pressure", [](const T& v) { return v.pressure; });
+    put("bulk_viscosity", [](const T& v) { return v.bulk_viscosity; });
+    put("cooling_rate_first_order", [](const T& v) { return v.cooling_rate_first_order; });
+    return out;
+  }
+
+ private:
+  std::shared_ptr<const gkt::BinaryTransportTable> table_;
+
+  static std::shared_ptr<const gkt::BinaryTransportTable> build(const std::array<double, 2>& mass,
+                                                                const std::array<double, 2>& diameter,
+                                                                const py::object& alpha, int dimension, int order,
+                                                                int nodes, double max_packing_fraction,
+                                                                int packing_nodes) {
+    gkt::Mixture mixture =
+        gkt::make_mixture(dimension, {{mass[0], diameter[0], 0.5, ""}, {mass[1], diameter[1], 0.5, ""}}, 1.0);
+    const py::array_t<double, py::array::c_style | py::array::forcecast> a(alpha);
+    if (a.ndim() == 0) {
+      mixture.alpha.assign(4, *a.data());
+    } else if (a.ndim() == 2 && a.shape(0) == 2 && a.shape(1) == 2) {
+      mixture.alpha.assign(a.data(), a.data() + 4);
+    } else {
+      throw std::invalid_argument("alpha: must be a number or a 2 x 2 restitution matrix");
+    }
+    mixture.validate();
+    py::gil_scoped_release release;
+    return std::make_shared<const gkt::BinaryTransportTable>(mixture, order, nodes, max_packing_fraction,
+                                                             packing_nodes);
+  }
+};
+
 }  // namespace
 
 PYBIND11_MODULE(gkt, m) {
@@ -364,4 +440,25 @@ PYBIND11_MODULE(gkt, m) {
         "in docs/conventions.md; theory.md section 15.7) at every (alpha, packing_fraction), broadcast as NumPy "
         "does. chi and phi_dchi (the contact value and phi dchi/dphi) default to the named pair correlation. "
         "Per cell: gkt::enskog_first_sonine_values (gkt/cell.hpp), the GIL released.");
+
+  py::class_<BinaryTable>(m, "BinaryTransportTable",
+                          "The Navier-Stokes set of a granular binary, solved once on Chebyshev nodes of x_1 (and "
+                          "phi) and interpolated per cell (docs/theory.md section 17.8, dense 18.10).")
+      .def(py::init<const std::array<double, 2>&, const std::array<double, 2>&, const py::object&, int, int, int,
+                    double, int>(),
+           py::arg("mass"), py::arg("diameter"), py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
+           py::arg("order") = 1, py::arg("nodes") = 24, py::arg("max_packing_fraction") = 0.0,
+           py::arg("packing_nodes") = 12,
+           "Solves the binary (masses and diameters of species 1, 2; alpha a number or a symmetric 2 x 2 "
+           "matrix) at Sonine order `order` on `nodes` points of x_1 in [0, 1] and, if max_packing_fraction > 0, "
+           "`packing_nodes` points of phi in [0, max_packing_fraction]. The GIL is released while solving.")
+      .def_property_readonly("interpolation_error", &BinaryTable::interpolation_error,
+                             "Returns the largest interpolation error of the reduced coefficients measured between "
+                             "the nodes at build time (relative to max(1, |value|)).")
+      .def("evaluate", &BinaryTable::evaluate, py::arg("fraction_1"), py::arg("number_density"), py::arg("temperature"),
+           "Returns {cooling_rate, temperature_ratio_i, shear_viscosity, thermal_conductivity, "
+           "mutual_diffusion_i_j, thermal_diffusion_i, pressure_diffusion_i, dufour_i, pressure, bulk_viscosity, "
+           "cooling_rate_first_order} at every (x_1, n, T), broadcast as NumPy does, in the caller's units "
+           "(mass, length, T in energy); nan beyond the table's phi_max. Per cell: gkt::evaluate (gkt/cell.hpp), "
+           "the GIL released.");
 }
