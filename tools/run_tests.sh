@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test: install dependencies, check formatting, build warning-free (Release) and run the
-# whole suite, then rebuild with AddressSanitizer + UndefinedBehaviorSanitizer and run it again.
+# whole suite (with the Python module's pytest suite), then rebuild with AddressSanitizer +
+# UndefinedBehaviorSanitizer and run it again; last, execute the notebooks (tools/run_notebooks.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh
@@ -12,7 +13,7 @@ if command -v clang-format >/dev/null; then
 fi
 python3 tools/check_layers.py  # include graph: no arrow up the floors (docs/architecture.md)
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_COMPILE_WARNING_AS_ERROR=ON -DGKT_BUILD_PYTHON=ON
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs"
 
@@ -21,3 +22,4 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGKT_SANITIZE=ON
 cmake --build build-sanitize -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
+bash tools/run_notebooks.sh build  # every notebook still executes (the module of the Release build)
