@@ -24,6 +24,7 @@ cmake --build "$build" --target gkt_python -j"$(nproc)" >/dev/null
 export PYTHONPATH="$PWD/$build/python${PYTHONPATH:+:$PYTHONPATH}"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
+export JUPYTER_RUNTIME_DIR="$scratch/runtime" IPYTHONDIR="$scratch/ipython"  # nothing written to $HOME
 status=0
 for notebook in notebooks/*.ipynb; do
   start=$(date +%s%N)
