@@ -214,6 +214,12 @@ def test_missing_file_and_bad_types():
         gkt.table(3)
     with pytest.raises(ValueError, match="^alpha: unsupported value of type object"):
         gkt.table({"model": "smooth-inelastic", "alpha": object(), "order": 1})
+    with pytest.raises(ValueError, match="^scene: keys must be strings, got int$"):
+        gkt.table({1: 2})
+    with pytest.raises(ValueError, match="^species.mass: unsupported value of type object"):
+        gkt.table({"model": "mixture", "alpha": 0.9, "order": 1, "species": [{"mass": object()}]})
+    with pytest.raises(ValueError, match='^alpha.x: unknown key for model "smooth-inelastic"'):
+        gkt.table({"model": "smooth-inelastic", "alpha.x": 0.9, "order": 1})
     with pytest.raises(ValueError, match="^--set: expected KEY=VALUE"):
         gkt.table(SCENES / "navier_stokes_first_sonine.toml", overrides=["order"])
 

@@ -41,24 +41,21 @@ const std::vector<std::string> kStabilityCoefficients{"critical_wavenumber_shear
 
 toml::array to_toml_array(const py::handle& items, const std::string& key);
 
-void insert_value(toml::table& table, const std::string& key, const py::handle& value);
+void insert_value(toml::table& table, const std::string& name, const std::string& key, const py::handle& value);
 void push_value(toml::array& array, const std::string& key, const py::handle& value);
 
-toml::table to_toml_table(const py::handle& mapping, const std::string& prefix) {
+/// Returns the TOML table of a dict; `where` names it in errors ("" for the scene itself, else the
+/// dotted key of the nested table).
+toml::table to_toml_table(const py::handle& mapping, const std::string& where) {
   toml::table table;
   for (const auto& item : py::reinterpret_borrow<py::dict>(mapping)) {
     if (!py::isinstance<py::str>(item.first))
-      throw std::invalid_argument(prefix + "scene keys must be strings, got " +
+      throw std::invalid_argument((where.empty() ? std::string("scene") : where) + ": keys must be strings, got " +
                                   py::str(py::type::of(item.first).attr("__name__")).cast<std::string>());
-    insert_value(table, prefix + item.first.cast<std::string>(), item.second);
+    const auto name = item.first.cast<std::string>();
+    insert_value(table, name, where.empty() ? name : where + "." + name, item.second);
   }
   return table;
-}
-
-/// The key's last component (after the dots of nested tables).
-std::string leaf(const std::string& key) {
-  const auto dot = key.rfind('.');
-  return dot == std::string::npos ? key : key.substr(dot + 1);
 }
 
 /// Passes the TOML value of one Python value of a scene dict to `put`; throws "<key>: …" for
@@ -70,7 +67,7 @@ void convert(const std::string& key, const py::handle& value, Put&& put) {
   } else if (py::isinstance<py::str>(value)) {
     put(value.cast<std::string>());
   } else if (py::isinstance<py::dict>(value)) {
-    put(to_toml_table(value, key + "."));
+    put(to_toml_table(value, key));
   } else if (py::isinstance<py::float_>(value)) {
     put(value.cast<double>());
   } else if (py::isinstance<py::int_>(value)) {
@@ -89,8 +86,9 @@ void convert(const std::string& key, const py::handle& value, Put&& put) {
   }
 }
 
-void insert_value(toml::table& table, const std::string& key, const py::handle& value) {
-  convert(key, value, [&](auto&& v) { table.insert_or_assign(leaf(key), std::forward<decltype(v)>(v)); });
+/// Inserts the value under `name`; `key` is its dotted path, for errors.
+void insert_value(toml::table& table, const std::string& name, const std::string& key, const py::handle& value) {
+  convert(key, value, [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
 }
 
 void push_value(toml::array& array, const std::string& key, const py::handle& value) {
