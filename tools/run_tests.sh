@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Every test: install dependencies, check formatting, build warning-free (Release) and run the
-# whole suite, install into a temporary prefix and build examples/consumer/ against it
-# (tools/check_install.sh), check the shipped tables against their scenes (tools/check_tables.sh),
-# then rebuild with AddressSanitizer + UndefinedBehaviorSanitizer and run the suite again.
+# whole suite (with the Python module's pytest suite), install into a temporary prefix and build
+# examples/consumer/ against it (tools/check_install.sh), check the shipped tables against their
+# scenes (tools/check_tables.sh), then rebuild with AddressSanitizer + UndefinedBehaviorSanitizer
+# and run the suite again; last, execute the notebooks (tools/run_notebooks.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh
@@ -16,7 +17,8 @@ python3 tools/check_layers.py  # include graph: no arrow up the floors (docs/arc
 
 # GKT_BUILD_TESTS=ON is forced: build/ may come from tools/run_main.sh, which turns the tests off,
 # and --no-tests=error makes an empty suite fail instead of passing silently (issue 17).
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGKT_BUILD_TESTS=ON -DCMAKE_COMPILE_WARNING_AS_ERROR=ON
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGKT_BUILD_TESTS=ON -DCMAKE_COMPILE_WARNING_AS_ERROR=ON \
+  -DGKT_BUILD_PYTHON=ON
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure --no-tests=error -j"$jobs"
 bash tools/check_install.sh build
@@ -27,3 +29,4 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGKT_SANITIZE=ON
 cmake --build build-sanitize -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure --no-tests=error -j"$jobs"
+bash tools/run_notebooks.sh build  # every notebook still executes (the module of the Release build)

@@ -41,7 +41,10 @@ std::invalid_argument unsupported_model() {
 }  // namespace
 
 Table evolve(const std::string& scene_path, const std::vector<std::string>& overrides, std::string& counters) {
-  const toml::table t = read_scene_table(scene_path, overrides);
+  return evolve(read_scene_table(scene_path, overrides), counters);
+}
+
+Table evolve(const toml::table& t, std::string& counters) {
   const auto* model_node = t.get("model");
   if (model_node == nullptr || !model_node->is_string()) throw unsupported_model();
   const std::string model_name = model_node->as_string()->get();

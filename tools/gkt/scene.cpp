@@ -210,6 +210,18 @@ void check_row_count(const toml::table& table, const std::vector<ParameterSpec>&
 
 }  // namespace
 
+toml::table parse_scene_text(const std::string& text, const std::string& source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw error("scene: " + source + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+  }
+}
+
+void apply_overrides(toml::table& scene, const std::vector<std::string>& overrides) {
+  for (const auto& o : overrides) apply_override(scene, o);
+}
+
 toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored))
@@ -224,18 +236,16 @@ toml::table read_scene_table(const std::string& path, const std::vector<std::str
       throw error("scene: '" + path + "' is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MB");
   }
   if (in.bad()) throw error("scene: cannot read '" + path + "'");
-  toml::table table;
-  try {
-    table = toml::parse(text, path);
-  } catch (const toml::parse_error& e) {
-    throw error("scene: " + path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
-  }
-  for (const auto& o : overrides) apply_override(table, o);
+  toml::table table = parse_scene_text(text, path);
+  apply_overrides(table, overrides);
   return table;
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order) {
-  toml::table table = read_scene_table(path, overrides);
+  return load_scene(read_scene_table(path, overrides), require_order);
+}
+
+Scene load_scene(toml::table table, bool require_order) {
   flatten_mixture(table);
   Scene scene;
   const auto* model_node = table.get("model");

@@ -35,10 +35,21 @@ struct Scene {
 /// Returns the parsed TOML table of a scene file with `overrides` applied (one-line errors).
 toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides);
 
+/// Returns the TOML table parsed from scene text; a syntax error throws std::invalid_argument
+/// "scene: <source>:<line>: <what>" (`source` names the text, e.g. a path or "<string>").
+toml::table parse_scene_text(const std::string& text, const std::string& source);
+
+/// Applies `overrides` ("key=value", value in TOML syntax) to a scene table, as `--set` does.
+void apply_overrides(toml::table& scene, const std::vector<std::string>& overrides);
+
 /// Returns the exact value of a numeric TOML node; throws "<key>: must be a number …".
 Rational scene_number(const toml::node& node, const std::string& key);
 
 /// With require_order = false a scene may omit both `order` and `tolerance` (gkt formula).
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order = true);
+
+/// Returns the validated scene of an already parsed scene table (overrides applied), as load_scene
+/// does for a file: the Python module's entry for scenes given as text or as a dict.
+Scene load_scene(toml::table table, bool require_order = true);
 
 }  // namespace gkt::cli

@@ -1,0 +1,350 @@
+"""The Python module against the gkt program: the same scene gives the same columns, bit for bit,
+and the same one-line errors (issue 19 item 3)."""
+
+import concurrent.futures
+import fractions
+import math
+import os
+import tempfile
+import warnings
+
+import numpy as np
+import pytest
+
+import gkt
+from conftest import SCENES, cli_columns, cli_error, run_cli
+
+
+def assert_same_table(columns, cli):
+    """The module's columns equal the CLI's CSV cells: same names in the same order, and every
+    number the same double (the CSV holds shortest round-trip decimals)."""
+    assert list(columns) == list(cli)
+    for name, cells in cli.items():
+        got = columns[name]
+        assert got.shape == (len(cells),), name
+        if name == "order":
+            assert got.dtype == np.int64
+            assert got.tolist() == [int(c) for c in cells]
+        else:
+            want = np.array([float(c) for c in cells])
+            np.testing.assert_array_equal(got, want, err_msg=name)
+
+
+# ---- tables: the same scene through the module and the program --------------------------------
+
+
+@pytest.mark.parametrize(
+    "scene, overrides",
+    [
+        ("hard_spheres_convergence.toml", ["order={from=1, to=8, points=8}"]),
+        ("navier_stokes_first_sonine.toml", []),
+        ("navier_stokes_first_sonine.toml", ['scheme="modified"', "dimension=2"]),
+        ("smooth_inelastic_orders.toml", ["alpha=[0.9, 0.5]", "order={from=1, to=4, points=4}"]),
+        ("tracer_diffusion.toml", ["alpha=[1, 0.7]"]),
+        ("mixture_hcs.toml", ["alpha=0.8", "packing_fraction=[0, 0.2]"]),
+        ("enskog_first_sonine.toml", []),
+    ],
+)
+def test_table_equals_cli_on_the_same_scene(scene, overrides):
+    path = SCENES / scene
+    args = [a for o in overrides for a in ("--set", o)]
+    assert_same_table(gkt.table(path, overrides=overrides), cli_columns("table", path, *args))
+
+
+def test_scene_as_path_text_and_dict_agree():
+    path = SCENES / "navier_stokes_first_sonine.toml"
+    from_path = gkt.table(str(path))
+    from_text = gkt.table(path.read_text())
+    from_dict = gkt.table(
+        {
+            "model": "smooth-inelastic",
+            "dimension": 3,
+            "hcs": "linear",
+            "alpha": np.array([1, 0.9, 0.8, 0.7, 0.6, 0.5]),
+            "order": 1,
+            "coefficients": ["shear_viscosity", "thermal_conductivity", "density_heat_coefficient", "cooling_rate"],
+        }
+    )
+    for other in (from_text, from_dict):
+        assert list(other) == list(from_path)
+        for name in from_path:
+            np.testing.assert_array_equal(other[name], from_path[name])
+
+
+def test_dict_with_species_and_range_equals_cli():
+    scene = {
+        "model": "mixture",
+        "alpha": 0.9,
+        "order": 1,
+        "species": [
+            {"name": "reference", "mass": 1, "diameter": 1, "fraction": 0.5},
+            {"mass": {"from": 0.5, "to": 2, "points": 3}, "diameter": 2, "fraction": 0.5},
+        ],
+    }
+    text = """model = "mixture"
+alpha = 0.9
+order = 1
+[[species]]
+name = "reference"
+mass = 1
+diameter = 1
+fraction = 0.5
+[[species]]
+mass = { from = 0.5, to = 2, points = 3 }
+diameter = 2
+fraction = 0.5
+"""
+    got = gkt.table(scene)
+    assert got["mass_2"].tolist() == [0.5, 1.25, 2]
+    assert_same_table(got, cli_columns("table", write_scene(text)))
+
+
+def test_exact_cells_are_fractions_equal_to_cli_exact():
+    path = SCENES / "hard_spheres_exact.toml"
+    got = gkt.table(path, exact=True)
+    cli = cli_columns("table", path, "--exact")
+    assert list(got) == list(cli)
+    assert got["shear_viscosity"].dtype == object
+    assert got["shear_viscosity"].tolist() == [fractions.Fraction(c) for c in cli["shear_viscosity"]]
+    assert got["shear_viscosity"][got["order"] == 2][0] == fractions.Fraction(205, 202)  # Chapman-Cowling
+
+
+def test_stability_equals_cli_stability():
+    path = SCENES / "hcs_stability.toml"
+    overrides = ["alpha=[0.6, 0.9]", "order=2"]
+    cli = cli_columns("stability", path, "--set", overrides[0], "--set", overrides[1])
+    assert "critical_length" in cli
+    assert_same_table(gkt.stability(path, overrides=overrides), cli)
+
+
+@pytest.mark.parametrize("scene", ["cooling_constant_alpha.toml", "cooling_viscoelastic.toml"])
+def test_evolve_equals_cli_evolve(scene):
+    path = SCENES / scene
+    got = gkt.evolve(path, overrides=["points=6"])
+    assert_same_table(got, cli_columns("evolve", path, "--set", "points=6"))
+    assert np.all(np.diff(got["temperature"]) < 0)  # a cooling gas
+
+
+def test_unreached_tolerance_warns_with_the_cli_line():
+    path = SCENES / "tracer_diffusion.toml"
+    overrides = ["alpha=0.7", "tolerance=1e-12", "species=[{mass=[0.5, 5], diameter=1.5, fraction=0}, {mass=1, diameter=1, fraction=1}]"]
+    code, _, err = run_cli("table", path, *[a for o in overrides for a in ("--set", o)])
+    assert code == 0 and len(err.strip().splitlines()) == 2
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        gkt.table(path, overrides=overrides)
+    assert [str(w.message) for w in caught] == err.strip().splitlines()
+    assert all(w.category is UserWarning for w in caught)
+
+
+def test_models_lists_what_gkt_models_prints():
+    code, out, _ = run_cli("models")
+    assert code == 0
+    models = gkt.models()
+    assert list(models) == [line.split(":")[0] for line in out.splitlines() if not line.startswith(" ")]
+    for name, m in models.items():
+        assert f"{name}: {m['description']}" in out
+        assert "  coefficients: " + " ".join(m["coefficients"]) in out
+        assert "  parameters: " + " ".join(f"{p} ({a})" for p, a in m["parameters"].items()) in out
+        assert m["max_order"] >= 1
+    assert "shear_viscosity" in models["smooth-inelastic"]["coefficients"]
+
+
+# ---- errors: ValueError with the CLI's one-line message ------------------------------------------
+
+BAD_SCENES = [
+    'model = "smooth-inelastic"\nalpha = 1.5\norder = 2\n',
+    'model = "smooth-inelastic"\nalpha = 0.9\n',
+    'model = "smooth-inelastic"\nalpha = 0.9\norder = 2\ncolour = 3\n',
+    'model = "smooth-inelastic"\nalpha = 0.9\norder = 2\ncoefficients = ["viscosity"]\n',
+    'model = "granular-soup"\norder = 2\n',
+    'model = "smooth-inelastic"\nalpha = { from = 0.5, to = 1 }\norder = 2\n',
+    'model = "mixture"\nalpha = 0.9\norder = 1\n[[species]]\nmass = 1\ndiameter = 1\n',
+    'model = "smooth-inelastic"\nalpha = 0.9\norder = 2\npacking_fraction = 0.6\n',
+    'model = "smooth-inelastic"\nalpha = [0.9, \n',
+]
+
+
+def write_scene(text):
+    """Returns the path of a scratch scene file holding `text` (removed when the test ends)."""
+    handle = tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False)
+    with handle:
+        handle.write(text)
+    write_scene.paths.append(handle.name)
+    return handle.name
+
+
+write_scene.paths = []
+
+
+@pytest.fixture(autouse=True)
+def _remove_scratch_scenes():
+    yield
+    while write_scene.paths:
+        os.unlink(write_scene.paths.pop())
+
+
+@pytest.mark.parametrize("text", BAD_SCENES)
+def test_bad_scene_raises_the_cli_message(text):
+    path = write_scene(text)
+    message = cli_error("table", path)
+    with pytest.raises(ValueError) as from_path:
+        gkt.table(path)
+    assert str(from_path.value) == message
+    with pytest.raises(ValueError) as from_text:
+        gkt.table(text)
+    assert str(from_text.value) == message.replace(path, "<string>")
+
+
+def test_bad_evolve_scene_and_override_raise_the_cli_message():
+    path = SCENES / "cooling_constant_alpha.toml"
+    for override in ["alpha=0", "points=2.5", "times=[2, 1]", "t_end=-1"]:
+        message = cli_error("evolve", path, "--set", override)
+        with pytest.raises(ValueError, match="^" + message.split(":")[0] + ":") as raised:
+            gkt.evolve(path, overrides=[override])
+        assert str(raised.value) == message
+
+
+def test_missing_file_and_bad_types():
+    message = cli_error("table", "no/such/scene.toml")
+    with pytest.raises(ValueError) as raised:
+        gkt.table("no/such/scene.toml")
+    assert str(raised.value) == message
+    with pytest.raises(ValueError, match="^scene: must be a path, TOML text or a dict, got int$"):
+        gkt.table(3)
+    with pytest.raises(ValueError, match="^alpha: unsupported value of type object"):
+        gkt.table({"model": "smooth-inelastic", "alpha": object(), "order": 1})
+    with pytest.raises(ValueError, match="^scene: keys must be strings, got int$"):
+        gkt.table({1: 2})
+    with pytest.raises(ValueError, match="^species.mass: unsupported value of type object"):
+        gkt.table({"model": "mixture", "alpha": 0.9, "order": 1, "species": [{"mass": object()}]})
+    with pytest.raises(ValueError, match='^alpha.x: unknown key for model "smooth-inelastic"'):
+        gkt.table({"model": "smooth-inelastic", "alpha.x": 0.9, "order": 1})
+    with pytest.raises(ValueError, match="^--set: expected KEY=VALUE"):
+        gkt.table(SCENES / "navier_stokes_first_sonine.toml", overrides=["order"])
+
+
+# ---- per-cell calls over arrays ----------------------------------------------------------------
+
+
+def test_first_sonine_equals_the_order_one_linear_table():
+    alpha = np.linspace(0.3, 1.0, 8)
+    cells = gkt.first_sonine(alpha)
+    table = gkt.table(
+        {
+            "model": "smooth-inelastic",
+            "hcs": "linear",
+            "alpha": alpha,
+            "order": 1,
+            "coefficients": ["a2", "cooling_rate", "shear_viscosity", "thermal_conductivity", "density_heat_coefficient"],
+        }
+    )
+    for name, values in cells.items():
+        assert values.shape == alpha.shape
+        np.testing.assert_allclose(values, table[name], rtol=1e-12, atol=1e-14, err_msg=name)
+
+
+def test_first_sonine_keeps_shape_and_matches_single_calls():
+    alpha = np.array([[0.5, 0.8], [0.9, 1.0]])
+    cells = gkt.first_sonine(alpha, dimension=2)
+    assert set(cells) == {"a2", "cooling_rate", "shear_viscosity", "thermal_conductivity", "density_heat_coefficient"}
+    for name, values in cells.items():
+        assert values.shape == (2, 2)
+        for index in np.ndindex(2, 2):
+            assert values[index] == gkt.first_sonine(float(alpha[index]), dimension=2)[name]
+    assert cells["shear_viscosity"][1, 1] == pytest.approx(1.0)  # elastic: η* = 1
+    assert cells["cooling_rate"][1, 1] == pytest.approx(0.0, abs=1e-15)
+
+
+def test_enskog_first_sonine_pressure_and_dilute_limit():
+    alpha = np.array([0.6, 0.8, 0.95])
+    phi = 0.25
+    dense = gkt.enskog_first_sonine(alpha, phi)
+    chi = (1 - phi / 2) / (1 - phi) ** 3  # Carnahan-Starling
+    np.testing.assert_allclose(dense["pressure"], 1 + 2 * (1 + alpha) * phi * chi, rtol=1e-14)  # theory.md (15.5)
+    dilute = gkt.enskog_first_sonine(alpha, 0.0)
+    plain = gkt.first_sonine(alpha)
+    for name in ("a2", "cooling_rate", "shear_viscosity", "thermal_conductivity", "density_heat_coefficient"):
+        np.testing.assert_allclose(dilute[name], plain[name], rtol=1e-12, atol=1e-15, err_msg=name)
+    given = gkt.enskog_first_sonine(alpha, phi, chi=chi, phi_dchi=phi * (2.5 - phi) / (1 - phi) ** 4)
+    for name in dense:
+        np.testing.assert_allclose(given[name], dense[name], rtol=1e-13, err_msg=name)
+
+
+def test_enskog_first_sonine_broadcasts_alpha_against_phi():
+    alpha = np.linspace(0.5, 1.0, 3)[:, None]
+    phi = np.array([0.0, 0.1, 0.3, 0.5])[None, :]
+    grid = gkt.enskog_first_sonine(alpha, phi)
+    assert grid["shear_viscosity"].shape == (3, 4)
+    for j, p in enumerate(phi[0]):
+        np.testing.assert_array_equal(grid["shear_viscosity"][:, j], gkt.enskog_first_sonine(alpha[:, 0], p)["shear_viscosity"])
+
+
+def test_per_cell_errors():
+    with pytest.raises(ValueError, match=r"^alpha: must be a number in \(0, 1\]$"):
+        gkt.first_sonine([0.5, 1.5])
+    with pytest.raises(ValueError, match="^dimension: must be 2 or 3, got 4$"):
+        gkt.first_sonine(0.5, dimension=4)
+    with pytest.raises(ValueError, match=r"^packing_fraction: must be a number in \[0, 0.5\] for dimension = 3, got 0.6$"):
+        gkt.enskog_first_sonine(0.9, 0.6)
+    with pytest.raises(ValueError, match=r"^packing_fraction: must be a number in \[0, 0.5\] for dimension = 3, got nan$"):
+        gkt.enskog_first_sonine(0.9, math.nan)
+    with pytest.raises(ValueError, match="^chi: give both chi and phi_dchi"):
+        gkt.enskog_first_sonine(0.9, 0.1, chi=1.2)
+    with pytest.raises(ValueError, match="^pair_correlation: unknown"):
+        gkt.enskog_first_sonine(0.9, 0.1, pair_correlation="percus-yevick")
+    with pytest.raises(ValueError):
+        gkt.enskog_first_sonine([0.8, 0.9], [0.1, 0.2, 0.3])
+
+
+def test_per_cell_calls_from_threads_agree():
+    """Threads calling the per-cell loops at once (the GIL released inside) get the serial answers."""
+    alphas = [np.linspace(0.2 + 0.01 * k, 1.0, 20000) for k in range(4)]
+    serial = [gkt.first_sonine(a)["thermal_conductivity"] for a in alphas]
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        threaded = list(pool.map(lambda a: gkt.first_sonine(a)["thermal_conductivity"], alphas))
+    for s, t in zip(serial, threaded):
+        np.testing.assert_array_equal(s, t)
+
+
+def test_version_is_the_programs():
+    code, out, _ = run_cli("--version")
+    assert code == 0
+    assert out.strip() == f"gkt {gkt.__version__}"
+
+
+def test_binary_table_at_a_node_equals_the_mixture_table():
+    """At a Chebyshev node (x_1 = 1/2 of 5) the interpolated binary equals the solved mixture: T_i/T
+    directly (the Navier-Stokes solver's Maxwellian HCS), η through η0(m̄, σ̄, T) = (5/(16 σ̄²)) √(m̄ T/π)
+    (docs/conventions.md, 3D)."""
+    table = gkt.BinaryTransportTable((1, 3), (1, 1.5), 0.8, order=1, nodes=5)
+    assert 0 < table.interpolation_error < 0.1  # measured between 5 nodes: coarse
+    n, temperature = np.array([1.0, 0.2]), np.array([1.0, 4.0])
+    cells = table.evaluate(0.5, n, temperature)
+    solved = gkt.table({"model": "mixture", "alpha": 0.8, "order": 1, "hcs": "maxwellian",
+                        "coefficients": ["temperature_ratio_1", "temperature_ratio_2", "shear_viscosity"],
+                        "species": [{"mass": 1, "diameter": 1, "fraction": 0.5}, {"mass": 3, "diameter": 1.5, "fraction": 0.5}]})
+    for i in (1, 2):
+        np.testing.assert_allclose(cells[f"temperature_ratio_{i}"], solved[f"temperature_ratio_{i}"][0], rtol=1e-10)
+    eta0 = 5 / (16 * 1.25**2) * np.sqrt(2.0 * temperature / np.pi)
+    np.testing.assert_allclose(cells["shear_viscosity"] / eta0, solved["shear_viscosity"][0], rtol=1e-10)
+    assert np.all(cells["bulk_viscosity"] == 0)  # a dilute table
+    np.testing.assert_array_equal(cells["pressure"], n * temperature)
+
+
+def test_binary_table_shapes_and_errors():
+    table = gkt.BinaryTransportTable((1, 2), (1, 1), [[0.9, 0.8], [0.8, 0.7]], order=1, nodes=5,
+                                     max_packing_fraction=0.2, packing_nodes=4)
+    x = np.linspace(0, 1, 6)[:, None]
+    cells = table.evaluate(x, np.array([0.01, 0.1]), 1.0)
+    assert cells["mutual_diffusion_1_2"].shape == (6, 2)
+    assert len(cells) == 18
+    assert np.all(np.isnan(table.evaluate(0.5, 10.0, 1.0)["shear_viscosity"]))  # phi beyond the table's 0.2
+    with pytest.raises(ValueError, match="^alpha: must be a number or a 2 x 2 restitution matrix$"):
+        gkt.BinaryTransportTable((1, 2), (1, 1), [0.9, 0.8])
+    with pytest.raises(ValueError, match="mass"):
+        gkt.BinaryTransportTable((0, 2), (1, 1), 0.9)
+    with pytest.raises(ValueError, match="alpha"):
+        gkt.BinaryTransportTable((1, 2), (1, 1), [[0.9, 0.8], [0.7, 0.9]])
+    with pytest.raises(ValueError, match="nodes"):
+        gkt.BinaryTransportTable((1, 2), (1, 1), 0.9, nodes=2)

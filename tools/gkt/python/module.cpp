@@ -1,0 +1,464 @@
+// The Python module `gkt` (pybind11): the gkt program's scenes, tables and time series, and the
+// per-cell calls of gkt/cell.hpp over NumPy arrays. It is the gkt program's second face: a scene
+// goes through the same code as `gkt table` / `gkt evolve` (tools/gkt/scene.cpp,
+// table_command.cpp, evolve_command.cpp), so columns, canonical names and error messages are the
+// CLI's. Bad input raises ValueError with the CLI's one-line message (pybind11 maps
+// std::invalid_argument to ValueError). Long computations and the per-cell loops release the GIL.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "../evolve_command.hpp"
+#include "../scene.hpp"
+#include "../table_command.hpp"
+#include "../table_writer.hpp"
+#include "gkt/cell.hpp"
+#include "gkt/models/transport_model.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using gkt::cli::Table;
+
+/// The default coefficients of `gkt stability` (as in main.cpp): the HCS stability values.
+const std::vector<std::string> kStabilityCoefficients{"critical_wavenumber_shear", "critical_wavenumber_heat",
+                                                      "critical_length"};
+
+// ---- scenes: a path, TOML text or a dict ---------------------------------------
+
+toml::array to_toml_array(const py::handle& items, const std::string& key);
+
+void insert_value(toml::table& table, const std::string& name, const std::string& key, const py::handle& value);
+void push_value(toml::array& array, const std::string& key, const py::handle& value);
+
+/// Returns the TOML table of a dict; `where` names it in errors ("" for the scene itself, else the
+/// dotted key of the nested table).
+toml::table to_toml_table(const py::handle& mapping, const std::string& where) {
+  toml::table table;
+  for (const auto& item : py::reinterpret_borrow<py::dict>(mapping)) {
+    if (!py::isinstance<py::str>(item.first))
+      throw std::invalid_argument((where.empty() ? std::string("scene") : where) + ": keys must be strings, got " +
+                                  py::str(py::type::of(item.first).attr("__name__")).cast<std::string>());
+    const auto name = item.first.cast<std::string>();
+    insert_value(table, name, where.empty() ? name : where + "." + name, item.second);
+  }
+  return table;
+}
+
+/// Passes the TOML value of one Python value of a scene dict to `put`; throws "<key>: …" for
+/// types a scene cannot hold.
+template <class Put>
+void convert(const std::string& key, const py::handle& value, Put&& put) {
+  if (py::isinstance<py::bool_>(value)) {
+    put(value.cast<bool>());
+  } else if (py::isinstance<py::str>(value)) {
+    put(value.cast<std::string>());
+  } else if (py::isinstance<py::dict>(value)) {
+    put(to_toml_table(value, key));
+  } else if (py::isinstance<py::float_>(value)) {
+    put(value.cast<double>());
+  } else if (py::isinstance<py::int_>(value)) {
+    int overflow = 0;
+    const long long v = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+    if (overflow != 0) throw std::invalid_argument(key + ": integer out of range of a TOML integer");
+    put(static_cast<int64_t>(v));
+  } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    put(to_toml_array(value, key));
+  } else if (py::hasattr(value, "tolist")) {  // NumPy arrays and scalars
+    convert(key, value.attr("tolist")(), put);
+  } else {
+    throw std::invalid_argument(key + ": unsupported value of type " +
+                                py::str(py::type::of(value).attr("__name__")).cast<std::string>() +
+                                " (a scene dict holds numbers, strings, booleans, lists and dicts)");
+  }
+}
+
+/// Inserts the value under `name`; `key` is its dotted path, for errors.
+void insert_value(toml::table& table, const std::string& name, const std::string& key, const py::handle& value) {
+  convert(key, value, [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
+}
+
+void push_value(toml::array& array, const std::string& key, const py::handle& value) {
+  convert(key, value, [&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); });
+}
+
+toml::array to_toml_array(const py::handle& items, const std::string& key) {
+  toml::array array;
+  for (const auto& item : py::reinterpret_borrow<py::iterable>(items)) push_value(array, key, item);
+  return array;
+}
+
+/// Returns the scene table of `scene` with `overrides` applied: a dict (converted value by value),
+/// an os.PathLike (a file), or a str — TOML text if it holds a newline or '=', else a file path.
+toml::table scene_table(const py::object& scene, const std::vector<std::string>& overrides) {
+  toml::table table;
+  if (py::isinstance<py::dict>(scene)) {
+    table = to_toml_table(scene, "");
+  } else if (py::isinstance(scene, py::module_::import("os").attr("PathLike"))) {
+    return gkt::cli::read_scene_table(py::module_::import("os").attr("fspath")(scene).cast<std::string>(), overrides);
+  } else if (py::isinstance<py::str>(scene)) {
+    const auto text = scene.cast<std::string>();
+    if (text.find('\n') == std::string::npos && text.find('=') == std::string::npos)
+      return gkt::cli::read_scene_table(text, overrides);
+    table = gkt::cli::parse_scene_text(text, "<string>");
+  } else {
+    throw std::invalid_argument("scene: must be a path, TOML text or a dict, got " +
+                                py::str(py::type::of(scene).attr("__name__")).cast<std::string>());
+  }
+  gkt::cli::apply_overrides(table, overrides);
+  return table;
+}
+
+// ---- tables: formatted cells back to NumPy columns ------------------------------
+
+/// Returns the table's columns as a dict {name: 1-D array}: "order" as int64, numeric columns as
+/// float64 (the cells are shortest round-trip decimals, so the doubles are the CLI's bit for bit),
+/// exact cells (--exact) as fractions.Fraction objects.
+py::dict to_columns(const Table& table) {
+  py::dict columns;
+  const std::size_t rows = table.rows.size();
+  const py::object fraction = py::module_::import("fractions").attr("Fraction");
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    const std::string& name = table.columns[c];
+    if (name == "order") {
+      py::array_t<long long> column(static_cast<py::ssize_t>(rows));
+      auto out = column.mutable_unchecked<1>();
+      for (std::size_t r = 0; r < rows; ++r) out(static_cast<py::ssize_t>(r)) = std::stoll(table.rows[r][c]);
+      columns[py::str(name)] = column;
+    } else if (table.numeric[c]) {
+      py::array_t<double> column(static_cast<py::ssize_t>(rows));
+      auto out = column.mutable_unchecked<1>();
+      for (std::size_t r = 0; r < rows; ++r)
+        out(static_cast<py::ssize_t>(r)) = std::strtod(table.rows[r][c].c_str(), nullptr);
+      columns[py::str(name)] = column;
+    } else {
+      py::list cells;
+      for (std::size_t r = 0; r < rows; ++r) cells.append(fraction(table.rows[r][c]));
+      columns[py::str(name)] = py::module_::import("numpy").attr("array")(cells, py::arg("dtype") = "O");
+    }
+  }
+  return columns;
+}
+
+void warn(const std::vector<std::string>& warnings) {
+  for (const auto& w : warnings) PyErr_WarnEx(PyExc_UserWarning, ("gkt: warning: " + w).c_str(), 1);
+  if (PyErr_Occurred()) throw py::error_already_set();  // warnings turned into errors
+}
+
+py::dict table(const py::object& scene, const std::vector<std::string>& overrides, bool exact, bool stability) {
+  toml::table parsed = scene_table(scene, overrides);
+  std::vector<std::string> warnings;
+  Table result;
+  {
+    py::gil_scoped_release release;
+    auto loaded = gkt::cli::load_scene(std::move(parsed));
+    if (stability && !loaded.coefficients_given) {
+      const auto names = gkt::make_transport_model(loaded.model)->coefficient_names();
+      if (std::find(names.begin(), names.end(), kStabilityCoefficients.front()) == names.end())
+        throw std::invalid_argument("model: \"" + loaded.model +
+                                    "\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\"");
+      loaded.coefficients = kStabilityCoefficients;
+    }
+    result = gkt::cli::compute_table(loaded, {exact}, warnings);
+  }
+  warn(warnings);
+  return to_columns(result);
+}
+
+py::dict evolve(const py::object& scene, const std::vector<std::string>& overrides) {
+  const toml::table parsed = scene_table(scene, overrides);
+  std::string counters;
+  Table result;
+  {
+    py::gil_scoped_release release;
+    result = gkt::cli::evolve(parsed, counters);
+  }
+  return to_columns(result);
+}
+
+py::dict models() {
+  py::dict out;
+  for (const auto& name : gkt::transport_model_names()) {
+    const auto model = gkt::make_transport_model(name);
+    py::dict parameters;
+    for (const auto& p : model->parameters()) parameters[py::str(p.name)] = p.allowed();
+    py::dict entry;
+    entry["description"] = model->description();
+    entry["coefficients"] = model->coefficient_names();
+    entry["parameters"] = parameters;
+    entry["max_order"] = model->max_order();
+    out[py::str(name)] = entry;
+  }
+  return out;
+}
+
+// ---- per-cell calls over NumPy arrays -------------------------------------------
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// Returns the arrays broadcast against each other (NumPy rules) as contiguous float64 copies.
+std::vector<Array> broadcast(const std::vector<py::object>& arrays) {
+  const py::object np = py::module_::import("numpy");
+  py::tuple views = np.attr("broadcast_arrays")(*py::cast(arrays));
+  std::vector<Array> out;
+  for (const auto& v : views) out.push_back(Array::ensure(np.attr("ascontiguousarray")(v, "float64")));
+  return out;
+}
+
+/// Returns {name: array of `shape`} from the fields of per-cell structs.
+template <class Values, std::size_t N>
+py::dict scatter(const std::vector<Values>& cells,
+                 const std::array<std::pair<const char*, double Values::*>, N>& fields,
+                 const std::vector<py::ssize_t>& shape) {
+  py::dict out;
+  for (const auto& [name, member] : fields) {
+    py::array_t<double> column(shape);
+    double* data = column.mutable_data();
+    for (std::size_t i = 0; i < cells.size(); ++i) data[i] = cells[i].*member;
+    out[name] = column;
+  }
+  return out;
+}
+
+std::vector<py::ssize_t> shape_of(const Array& a) { return {a.shape(), a.shape() + a.ndim()}; }
+
+py::dict first_sonine(const py::object& alpha, int dimension) {
+  const auto in = broadcast({alpha});
+  const std::span<const double> a(in[0].data(), static_cast<std::size_t>(in[0].size()));
+  std::vector<gkt::FirstSonineValues> cells(a.size());
+  {
+    py::gil_scoped_release release;
+    gkt::first_sonine_values(dimension, a, cells);
+  }
+  using V = gkt::FirstSonineValues;
+  return scatter(
+      cells,
+      std::array<std::pair<const char*, double V::*>, 5>{{{"a2", &V::a2},
+                                                          {"cooling_rate", &V::cooling_rate},
+                                                          {"shear_viscosity", &V::shear_viscosity},
+                                                          {"thermal_conductivity", &V::thermal_conductivity},
+                                                          {"density_heat_coefficient", &V::density_heat_coefficient}}},
+      shape_of(in[0]));
+}
+
+/// χ and φ dχ/dφ of the named closure at each φ (exact rationals from the double φ, rounded once;
+/// a few µs a cell, ~20 times the closed forms it feeds). Throws "packing_fraction: must be a
+/// number in [0, φ_max] …" as the models do.
+void contact_values(int dimension, const std::string& closure, std::span<const double> phi, std::span<double> chi,
+                    std::span<double> phi_dchi) {
+  if (dimension != 2 && dimension != 3)
+    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  const gkt::PairCorrelation& pc = gkt::pair_correlation(closure);
+  const gkt::Rational max = gkt::max_packing_fraction(dimension);
+  const double max_phi = max.to_double();
+  for (std::size_t i = 0; i < phi.size(); ++i) {
+    if (!(phi[i] >= 0 && phi[i] <= max_phi))
+      throw std::invalid_argument("packing_fraction: must be a number in [0, " + max.to_decimal_string() +
+                                  "] for dimension = " + std::to_string(dimension) + ", got " +
+                                  gkt::cli::format_number(phi[i]));
+    const gkt::Rational p = gkt::Rational::from_double(phi[i]);
+    chi[i] = pc.contact_value(dimension, p).to_double();
+    phi_dchi[i] = pc.packing_derivative(dimension, p).to_double();
+  }
+}
+
+py::dict enskog_first_sonine(const py::object& alpha, const py::object& packing_fraction, int dimension,
+                             const py::object& chi, const py::object& phi_dchi, const std::string& pair_correlation) {
+  if (chi.is_none() != phi_dchi.is_none())
+    throw std::invalid_argument("chi: give both chi and phi_dchi, or neither (then pair_correlation gives them)");
+  std::vector<py::object> inputs{alpha, packing_fraction};
+  if (!chi.is_none()) {
+    inputs.push_back(chi);
+    inputs.push_back(phi_dchi);
+  }
+  const auto in = broadcast(inputs);
+  const auto n = static_cast<std::size_t>(in[0].size());
+  const std::span<const double> a(in[0].data(), n), phi(in[1].data(), n);
+  std::vector<double> chi_values(n), phi_dchi_values(n);
+  std::vector<gkt::EnskogState> states(n);
+  std::vector<gkt::EnskogFirstSonineValues> cells(n);
+  {
+    py::gil_scoped_release release;
+    if (in.size() == 4) {
+      std::copy_n(in[2].data(), n, chi_values.begin());
+      std::copy_n(in[3].data(), n, phi_dchi_values.begin());
+    } else {
+      contact_values(dimension, pair_correlation, phi, chi_values, phi_dchi_values);
+    }
+    for (std::size_t i = 0; i < n; ++i) states[i] = {phi[i], chi_values[i], phi_dchi_values[i]};
+    gkt::enskog_first_sonine_values(dimension, a, states, cells);
+  }
+  using V = gkt::EnskogFirstSonineValues;
+  return scatter(
+      cells,
+      std::array<std::pair<const char*, double V::*>, 8>{{{"a2", &V::a2},
+                                                          {"cooling_rate", &V::cooling_rate},
+                                                          {"pressure", &V::pressure},
+                                                          {"shear_viscosity", &V::shear_viscosity},
+                                                          {"bulk_viscosity", &V::bulk_viscosity},
+                                                          {"thermal_conductivity", &V::thermal_conductivity},
+                                                          {"density_heat_coefficient", &V::density_heat_coefficient},
+                                                          {"cooling_rate_first_order", &V::cooling_rate_first_order}}},
+      shape_of(in[0]));
+}
+
+/// A binary's Navier–Stokes table (gkt/transport/mixture/mixture_transport_table.hpp) built once,
+/// evaluated per cell over NumPy arrays of (x_1, n, T).
+class BinaryTable {
+ public:
+  BinaryTable(const std::array<double, 2>& mass, const std::array<double, 2>& diameter, const py::object& alpha,
+              int dimension, int order, int nodes, double max_packing_fraction, int packing_nodes)
+      : table_(build(mass, diameter, alpha, dimension, order, nodes, max_packing_fraction, packing_nodes)) {}
+
+  [[nodiscard]] double interpolation_error() const { return table_->interpolation_error(); }
+
+  /// Returns the Navier–Stokes set at every (x_1, n, T) (broadcast) in the caller's units.
+  py::dict evaluate(const py::object& fraction_1, const py::object& number_density,
+                    const py::object& temperature) const {
+    const auto in = broadcast({fraction_1, number_density, temperature});
+    const auto n = static_cast<std::size_t>(in[0].size());
+    std::vector<gkt::BinaryTransport> cells(n);
+    {
+      py::gil_scoped_release release;
+      gkt::evaluate(*table_, {in[0].data(), n}, {in[1].data(), n}, {in[2].data(), n}, cells);
+    }
+    using T = gkt::BinaryTransport;
+    py::dict out;
+    const auto shape = shape_of(in[0]);
+    const auto put = [&](const std::string& name, auto get) {
+      py::array_t<double> column(shape);
+      double* data = column.mutable_data();
+      for (std::size_t i = 0; i < n; ++i) data[i] = get(cells[i]);
+      out[py::str(name)] = column;
+    };
+    put("cooling_rate", [](const T& v) { return v.cooling_rate; });
+    for (std::size_t i = 0; i < 2; ++i)
+      put("temperature_ratio_" + std::to_string(i + 1), [i](const T& v) { return v.temperature_ratio[i]; });
+    put("shear_viscosity", [](const T& v) { return v.shear_viscosity; });
+    put("thermal_conductivity", [](const T& v) { return v.thermal_conductivity; });
+    for (std::size_t i = 0; i < 2; ++i)
+      for (std::size_t j = 0; j < 2; ++j)
+        put("mutual_diffusion_" + std::to_string(i + 1) + "_" + std::to_string(j + 1),
+            [k = 2 * i + j](const T& v) { return v.mutual_diffusion[k]; });
+    for (std::size_t i = 0; i < 2; ++i) {
+      const std::string at = "_" + std::to_string(i + 1);
+      put("thermal_diffusion" + at, [i](const T& v) { return v.thermal_diffusion[i]; });
+      put("pressure_diffusion" + at, [i](const T& v) { return v.pressure_diffusion[i]; });
+      put("dufour" + at, [i](const T& v) { return v.dufour[i]; });
+    }
+    put("pressure", [](const T& v) { return v.pressure; });
+    put("bulk_viscosity", [](const T& v) { return v.bulk_viscosity; });
+    put("cooling_rate_first_order", [](const T& v) { return v.cooling_rate_first_order; });
+    return out;
+  }
+
+ private:
+  std::shared_ptr<const gkt::BinaryTransportTable> table_;
+
+  static std::shared_ptr<const gkt::BinaryTransportTable> build(const std::array<double, 2>& mass,
+                                                                const std::array<double, 2>& diameter,
+                                                                const py::object& alpha, int dimension, int order,
+                                                                int nodes, double max_packing_fraction,
+                                                                int packing_nodes) {
+    gkt::Mixture mixture =
+        gkt::make_mixture(dimension, {{mass[0], diameter[0], 0.5, ""}, {mass[1], diameter[1], 0.5, ""}}, 1.0);
+    const py::array_t<double, py::array::c_style | py::array::forcecast> a(alpha);
+    if (a.ndim() == 0) {
+      mixture.alpha.assign(4, *a.data());
+    } else if (a.ndim() == 2 && a.shape(0) == 2 && a.shape(1) == 2) {
+      mixture.alpha.assign(a.data(), a.data() + 4);
+    } else {
+      throw std::invalid_argument("alpha: must be a number or a 2 x 2 restitution matrix");
+    }
+    mixture.validate();
+    py::gil_scoped_release release;
+    return std::make_shared<const gkt::BinaryTransportTable>(mixture, order, nodes, max_packing_fraction,
+                                                             packing_nodes);
+  }
+};
+
+}  // namespace
+
+PYBIND11_MODULE(gkt, m) {
+  m.doc() =
+      "gkt: Chapman-Enskog transport coefficients of granular and molecular gases from exact Sonine "
+      "expansions.\n\nScenes are the gkt program's (docs/conventions.md): a path, TOML text or a dict. "
+      "Columns have the CLI's canonical names; bad input raises ValueError with the CLI's one-line message.";
+  m.attr("__version__") = GKT_VERSION;
+
+  m.def("models", &models,
+        "Returns {model name: {description, coefficients, parameters: {name: allowed values}, max_order}}, "
+        "as `gkt models` lists them.");
+  m.def(
+      "table",
+      [](const py::object& scene, const std::vector<std::string>& overrides, bool exact) {
+        return table(scene, overrides, exact, false);
+      },
+      py::arg("scene"), py::kw_only(), py::arg("overrides") = std::vector<std::string>{}, py::arg("exact") = false,
+      "Returns the table of `gkt table` as {column: 1-D NumPy array} (swept parameters, coefficients, "
+      "<coefficient>_error, order).\n\n"
+      "scene: a path (str or os.PathLike), TOML text (a str holding a newline or '='), or a dict (nested "
+      "dicts for ranges, a list of dicts for [[species]]; NumPy arrays become sweep lists).\n"
+      "overrides: ['KEY=VALUE', ...] applied like --set. exact: cells as fractions.Fraction (as --exact).\n"
+      "A tolerance not reached gives a UserWarning with the CLI's warning line. The GIL is released while "
+      "computing.");
+  m.def(
+      "stability",
+      [](const py::object& scene, const std::vector<std::string>& overrides) {
+        return table(scene, overrides, false, true);
+      },
+      py::arg("scene"), py::kw_only(), py::arg("overrides") = std::vector<std::string>{},
+      "Returns the table of `gkt stability` (critical wave numbers and length of the HCS) as "
+      "{column: array}; scene and overrides as in table().");
+  m.def("evolve", &evolve, py::arg("scene"), py::kw_only(), py::arg("overrides") = std::vector<std::string>{},
+        "Returns the time series of `gkt evolve` (time, collisions, temperature, a2, …, cooling_rate, and "
+        "any requested coefficients) as {column: array}; scene and overrides as in table().");
+  m.def("first_sonine", &first_sonine, py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
+        "Returns the dilute first-Sonine set {a2, cooling_rate, shear_viscosity, thermal_conductivity, "
+        "density_heat_coefficient} (reduced as in docs/conventions.md: zeta* = zeta/nu0, eta* = eta/eta0, "
+        "kappa* = kappa/kappa0, mu* = n mu/(T kappa0)) at every alpha of an array (theory.md (10.8)), in the "
+        "array's shape. Per cell: gkt::first_sonine_values (gkt/cell.hpp), the GIL released.");
+  m.def("enskog_first_sonine", &enskog_first_sonine, py::arg("alpha"), py::arg("packing_fraction"), py::kw_only(),
+        py::arg("dimension") = 3, py::arg("chi") = py::none(), py::arg("phi_dchi") = py::none(),
+        py::arg("pair_correlation") = std::string("carnahan-starling"),
+        "Returns the dense (Enskog) first-Sonine set {a2, cooling_rate, pressure, shear_viscosity, "
+        "bulk_viscosity, thermal_conductivity, density_heat_coefficient, cooling_rate_first_order} (reduced as "
+        "in docs/conventions.md; theory.md section 15.7) at every (alpha, packing_fraction), broadcast as NumPy "
+        "does. chi and phi_dchi (the contact value and phi dchi/dphi) default to the named pair correlation, "
+        "evaluated exactly per cell (a few microseconds; pass both arrays to skip it). "
+        "Per cell: gkt::enskog_first_sonine_values (gkt/cell.hpp), the GIL released.");
+
+  py::class_<BinaryTable>(m, "BinaryTransportTable",
+                          "The Navier-Stokes set of a granular binary, solved once on Chebyshev nodes of x_1 (and "
+                          "phi) and interpolated per cell (docs/theory.md section 17.8, dense 18.10).")
+      .def(py::init<const std::array<double, 2>&, const std::array<double, 2>&, const py::object&, int, int, int,
+                    double, int>(),
+           py::arg("mass"), py::arg("diameter"), py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
+           py::arg("order") = 1, py::arg("nodes") = 24, py::arg("max_packing_fraction") = 0.0,
+           py::arg("packing_nodes") = 12,
+           "Solves the binary (masses and diameters of species 1, 2; alpha a number or a symmetric 2 x 2 "
+           "matrix) at Sonine order `order` on `nodes` points of x_1 in [0, 1] and, if max_packing_fraction > 0, "
+           "`packing_nodes` points of phi in [0, max_packing_fraction]. The GIL is released while solving.")
+      .def_property_readonly("interpolation_error", &BinaryTable::interpolation_error,
+                             "Returns the largest interpolation error of the reduced coefficients measured between "
+                             "the nodes at build time (relative to max(1, |value|)).")
+      .def("evaluate", &BinaryTable::evaluate, py::arg("fraction_1"), py::arg("number_density"), py::arg("temperature"),
+           "Returns {cooling_rate, temperature_ratio_i, shear_viscosity, thermal_conductivity, "
+           "mutual_diffusion_i_j, thermal_diffusion_i, pressure_diffusion_i, dufour_i, pressure, bulk_viscosity, "
+           "cooling_rate_first_order} at every (x_1, n, T), broadcast as NumPy does, in the caller's units "
+           "(mass, length, T in energy); nan beyond the table's phi_max. Per cell: gkt::evaluate (gkt/cell.hpp), "
+           "the GIL released.");
+}
