@@ -46,6 +46,9 @@ TEST(LibraryValidation, BinaryTableEvaluateRefusesStatesOutsideItsRange) {
   // Each argument finite and positive, the physical set not representable: refused, not inf.
   expect_refused([&] { (void)table.evaluate(0.5, 1e300, 1e300); }, "number_density, temperature");
   expect_refused([&] { (void)table.evaluate(0.5, 5e-324, 1); }, "number_density, temperature");
+  // Underflow (found by fuzz_per_cell): p = p* n T was 0 at n = 2.8e-135, T = 8.1e-320.
+  expect_refused([&] { (void)table.evaluate(0.5, 2.8e-135, 8.1e-320); }, "number_density, temperature");
+  expect_refused([&] { (void)table.evaluate(0.5, 1, 1e-310); }, "number_density, temperature");
 }
 
 // Mass ratio 10 at order 1: the coefficients have a pole near x_1 = 0.99 and the 24-node table was

@@ -213,6 +213,11 @@ BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double tempe
   // Reference gas (m̄, σ̄) at n, T (docs/conventions.md).
   const ReferenceGas ref = reference_gas(d, mbar, sbar, n, temperature);
   const double eta0 = ref.viscosity, kappa0 = ref.conductivity, d0 = ref.self_diffusion;
+  // The scales of the physical set must be normal doubles: an extreme n or T would otherwise make
+  // a coefficient 0 (underflow) or inf (overflow) without a word.
+  bool representable = true;
+  for (const double scale : {eta0, kappa0, d0, n * d0, kappa0 / temperature, n * temperature, ref.collision_frequency})
+    representable = representable && std::isnormal(scale);
   out.cooling_rate = r[0] * ref.collision_frequency;
   out.temperature_ratio = {r[1], r[2]};
   out.shear_viscosity = r[3] * eta0;
@@ -227,7 +232,7 @@ BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double tempe
   out.bulk_viscosity = r[16] * eta0;
   out.cooling_rate_first_order = r[17];
   // Every reduced value is finite (the build checked); a product with the reference values can
-  // still overflow, or divide by an underflowed n, at the ends of the double range.
+  // still overflow at the ends of the double range.
   bool finite = std::isfinite(out.cooling_rate) && std::isfinite(out.shear_viscosity) &&
                 std::isfinite(out.thermal_conductivity) && std::isfinite(out.pressure) &&
                 std::isfinite(out.bulk_viscosity);
@@ -235,9 +240,9 @@ BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double tempe
   for (std::size_t i = 0; i < 2; ++i)
     finite = finite && std::isfinite(out.thermal_diffusion[i]) && std::isfinite(out.pressure_diffusion[i]) &&
              std::isfinite(out.dufour[i]);
-  if (!finite)
-    throw std::invalid_argument("number_density, temperature: the coefficients overflow a double at n = " +
-                                short_number(n) + ", T = " + short_number(temperature));
+  if (!finite || !representable)
+    throw std::invalid_argument("number_density, temperature: the coefficients at n = " + short_number(n) +
+                                ", T = " + short_number(temperature) + " over- or underflow a double");
   return out;
 }
 

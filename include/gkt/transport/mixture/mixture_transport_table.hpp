@@ -50,7 +50,8 @@ class BinaryTransportTable {
   /// Returns the coefficients at x_1 ∈ [0, 1], density n > 0 and temperature T > 0 (no allocation);
   /// every value is nan if φ = n v_d Σ x_i σ_i^d exceeds the table's φ_max (0 for a dilute table,
   /// which treats any n as dilute). Throws std::invalid_argument naming the argument when x_1, n or
-  /// T is outside its range or not finite, or when a coefficient at (n, T) overflows a double.
+  /// T is outside its range or not finite, or when the coefficients at (n, T) over- or underflow a
+  /// double.
   [[nodiscard]] BinaryTransport evaluate(double fraction_1, double number_density, double temperature) const;
 
   /// Returns the largest |interpolated − solved| of the reduced coefficients at the midpoints
