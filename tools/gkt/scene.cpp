@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -18,7 +19,21 @@ namespace {
 
 constexpr long kMaxSweepPoints = 1000000;
 
-std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
+/// The error for `message`, kept on one line: control characters a scene or --set may carry into an
+/// echoed key or value are written as \xNN (found by tests/fuzz/fuzz_scene).
+std::invalid_argument error(const std::string& message) {
+  std::string line;
+  for (const char c : message) {
+    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) {
+      line += c;
+      continue;
+    }
+    char escaped[5];
+    std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+    line += escaped;
+  }
+  return std::invalid_argument(line);
+}
 
 }  // namespace
 
@@ -154,7 +169,7 @@ void flatten_mixture(toml::table& scene) {
 
 }  // namespace
 
-toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides) {
+toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides) try {
   std::ifstream in(path);
   if (!in) throw error("scene: cannot open '" + path + "'");
   std::stringstream text;
@@ -167,9 +182,11 @@ toml::table read_scene_table(const std::string& path, const std::vector<std::str
   }
   for (const auto& o : overrides) apply_override(table, o);
   return table;
+} catch (const std::invalid_argument& e) {
+  throw error(e.what());  // one line, also for messages of the library
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order) {
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order) try {
   toml::table table = read_scene_table(path, overrides);
   flatten_mixture(table);
   Scene scene;
@@ -256,6 +273,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     scene.axes.push_back(std::move(axis));
   }
   return scene;
+} catch (const std::invalid_argument& e) {
+  throw error(e.what());  // one line, also for messages of the library (model names, choices)
 }
 
 }  // namespace gkt::cli
