@@ -9,6 +9,7 @@ packages=(
   libsundials-dev                       # CVODE: time evolution of the cooling gas
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev   # scenes, command line, JSON output
   libgtest-dev libbenchmark-dev         # tests and benchmarks
+  clang-14 libclang-rt-14-dev           # libFuzzer targets of tests/fuzz (tools/fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do
