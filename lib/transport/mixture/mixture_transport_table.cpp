@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -24,6 +25,17 @@ std::string short_number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3g", x);
   return buffer;
+}
+
+/// Throws "<name>: must be <range>, got <value>" (evaluate's arguments), or with an empty range the
+/// over- or underflow of the set at (n, T) = (value, temperature). Out of line and cold: the
+/// per-state path stays a few compares (docs/performance.md).
+[[noreturn, gnu::cold, gnu::noinline]] void refuse_state(const char* name, const char* range, double value,
+                                                         double temperature) {
+  if (*range == '\0')
+    throw std::invalid_argument(std::string(name) + ": the coefficients at n = " + short_number(value) +
+                                ", T = " + short_number(temperature) + " over- or underflow a double");
+  throw std::invalid_argument(std::string(name) + ": must be " + range + ", got " + short_number(value));
 }
 
 }  // namespace
@@ -148,7 +160,13 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
       }
     for (const Reduced& v : values_)
       for (double c : v) finite = finite && std::isfinite(c);
-    if (finite && interpolation_error_ <= tolerance) return;
+    if (finite && interpolation_error_ <= tolerance) {
+      // Interpolated values stay within the Lebesgue constant (< 3.7 per axis for ≤ 64
+      // Chebyshev–Lobatto nodes, [berrut2004]) times the largest node value: 16× bounds both axes.
+      for (const Reduced& v : values_)
+        for (double c : v) reduced_bound_ = std::max(reduced_bound_, 16 * std::abs(c));
+      return;
+    }
     const int refined = 2 * fraction_nodes() - 1,
               refined_packing = max_packing_ > 0 ? 2 * this->packing_nodes() - 1 : 1;
     if (finite && refined <= kMaxNodes && refined_packing <= kMaxNodes) {
@@ -192,12 +210,10 @@ BinaryTransportTable::Reduced BinaryTransportTable::reduced_at(double x, double 
 }
 
 BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double temperature) const {
-  if (!(x1 >= 0 && x1 <= 1))
-    throw std::invalid_argument("fraction_1: must be a number in [0, 1], got " + short_number(x1));
-  if (!(n > 0 && n < INFINITY))
-    throw std::invalid_argument("number_density: must be a finite number > 0, got " + short_number(n));
+  if (!(x1 >= 0 && x1 <= 1)) refuse_state("fraction_1", "a number in [0, 1]", x1, temperature);
+  if (!(n > 0 && n < INFINITY)) refuse_state("number_density", "a finite number > 0", n, temperature);
   if (!(temperature > 0 && temperature < INFINITY))
-    throw std::invalid_argument("temperature: must be a finite number > 0, got " + short_number(temperature));
+    refuse_state("temperature", "a finite number > 0", temperature, temperature);
   const int d = dimension_;
   const double x[2] = {x1, 1 - x1};
   // φ = n v_d Σ x_i σ_i^d (v_d σ_i^d kept from the build).
@@ -213,36 +229,26 @@ BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double tempe
   // Reference gas (m̄, σ̄) at n, T (docs/conventions.md).
   const ReferenceGas ref = reference_gas(d, mbar, sbar, n, temperature);
   const double eta0 = ref.viscosity, kappa0 = ref.conductivity, d0 = ref.self_diffusion;
-  // The scales of the physical set must be normal doubles: an extreme n or T would otherwise make
-  // a coefficient 0 (underflow) or inf (overflow) without a word.
-  bool representable = true;
-  for (const double scale : {eta0, kappa0, d0, n * d0, kappa0 / temperature, n * temperature, ref.collision_frequency})
-    representable = representable && std::isnormal(scale);
-  out.cooling_rate = r[0] * ref.collision_frequency;
+  const double scales[] = {ref.collision_frequency, eta0, kappa0, n * d0, d0, kappa0 / temperature, n * temperature};
+  out.cooling_rate = r[0] * scales[0];
   out.temperature_ratio = {r[1], r[2]};
   out.shear_viscosity = r[3] * eta0;
   out.thermal_conductivity = r[4] * kappa0;
-  for (std::size_t k = 0; k < 4; ++k) out.mutual_diffusion[k] = r[5 + k] * n * d0;
+  for (std::size_t k = 0; k < 4; ++k) out.mutual_diffusion[k] = r[5 + k] * scales[3];
   for (std::size_t i = 0; i < 2; ++i) {
     out.thermal_diffusion[i] = r[9 + i] * d0;
     out.pressure_diffusion[i] = r[11 + i] * d0;
-    out.dufour[i] = r[13 + i] * kappa0 / temperature;
+    out.dufour[i] = r[13 + i] * scales[5];
   }
-  out.pressure = r[15] * n * temperature;
+  out.pressure = r[15] * scales[6];
   out.bulk_viscosity = r[16] * eta0;
   out.cooling_rate_first_order = r[17];
-  // Every reduced value is finite (the build checked); a product with the reference values can
-  // still overflow at the ends of the double range.
-  bool finite = std::isfinite(out.cooling_rate) && std::isfinite(out.shear_viscosity) &&
-                std::isfinite(out.thermal_conductivity) && std::isfinite(out.pressure) &&
-                std::isfinite(out.bulk_viscosity);
-  for (std::size_t k = 0; k < 4; ++k) finite = finite && std::isfinite(out.mutual_diffusion[k]);
-  for (std::size_t i = 0; i < 2; ++i)
-    finite = finite && std::isfinite(out.thermal_diffusion[i]) && std::isfinite(out.pressure_diffusion[i]) &&
-             std::isfinite(out.dufour[i]);
-  if (!finite || !representable)
-    throw std::invalid_argument("number_density, temperature: the coefficients at n = " + short_number(n) +
-                                ", T = " + short_number(temperature) + " over- or underflow a double");
+  // The scales must be normal doubles (an extreme n or T would otherwise make a coefficient 0 by
+  // underflow without a word), small enough that no |reduced value| ≤ reduced_bound_ overflows.
+  const double smallest = std::min({scales[0], scales[1], scales[2], scales[3], scales[4], scales[5], scales[6]});
+  const double largest = std::max({scales[0], scales[1], scales[2], scales[3], scales[4], scales[5], scales[6]});
+  if (!(smallest >= std::numeric_limits<double>::min() && largest * reduced_bound_ < INFINITY))
+    refuse_state("number_density, temperature", "", n, temperature);
   return out;
 }
 

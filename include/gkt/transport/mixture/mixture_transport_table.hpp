@@ -82,6 +82,7 @@ class BinaryTransportTable {
   Axis fraction_axis_, packing_axis_;
   std::vector<Reduced> values_;  // at packing node a, fraction node b: a · nodes + b
   double interpolation_error_ = 0;
+  double reduced_bound_ = 0;  // bounds every interpolated |reduced value| (evaluate's overflow check)
 
   [[nodiscard]] Reduced reduced_at(double fraction_1, double packing) const;
   static Reduced solve(const Mixture& mixture, int order);
