@@ -49,6 +49,10 @@ TEST(LibraryValidation, BinaryTableEvaluateRefusesStatesOutsideItsRange) {
   // Underflow (found by fuzz_per_cell): p = p* n T was 0 at n = 2.8e-135, T = 8.1e-320.
   expect_refused([&] { (void)table.evaluate(0.5, 2.8e-135, 8.1e-320); }, "number_density, temperature");
   expect_refused([&] { (void)table.evaluate(0.5, 1, 1e-310); }, "number_density, temperature");
+  // x_1 a subnormal distance from a node (found by fuzz_per_cell): the node's value, not nan.
+  const auto at_node = table.evaluate(0, 1, 1), beside = table.evaluate(4.24399133e-315, 1, 1);
+  EXPECT_EQ(beside.shear_viscosity, at_node.shear_viscosity);
+  EXPECT_EQ(beside.cooling_rate, at_node.cooling_rate);
 }
 
 // Mass ratio 10 at order 1: the coefficients have a pole near x_1 = 0.99 and the 24-node table was
