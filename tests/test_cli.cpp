@@ -558,6 +558,20 @@ TEST(CliStability, RefusesModelsWithoutStability) {
       << bad.err;
 }
 
+// α = 1 is valid (issue 17): the elastic gas never clusters, k⊥c* = k∥c* = 0 and L_c* = inf (JSON
+// null), errors 0 — and the sweep through it keeps every row (it exited 1 with "internal error:
+// Rational: non-finite double" before).
+TEST(CliStability, ElasticEndIsInfinite) {
+  const CliRun r = run_gkt("stability " + scene_path("hcs_stability.toml") + " --set 'alpha=[0.9, 1]' --set order=2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = parse_csv(r.out);
+  ASSERT_EQ(rows.size(), 3u) << r.out;
+  EXPECT_EQ(rows[2], (std::vector<std::string>{"1", "0", "0", "inf", "0", "0", "0", "2"})) << r.out;
+  const CliRun json = run_gkt("stability " + scene_path("hcs_stability.toml") + " --set alpha=1 --format json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_TRUE(nlohmann::json::parse(json.out)["rows"][0]["critical_length"].is_null()) << json.out;
+}
+
 TEST(Cli, SetOverridesSceneKeys) {
   const CliRun r = run_gkt("table " + scene_path("hard_spheres_exact.toml") +
                            " --exact --set order=2 --set 'coefficients=[\"self_diffusion\"]'");

@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 
 #include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/models/transport_model.hpp"
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
@@ -149,4 +153,83 @@ TEST(HcsStability, DenseHeatModeCrossesZeroAtTheClosedFormWavenumber) {
   const auto b = gkt::hcs_stability(3, 0.2, 1.1, 1.2, 0.3);
   EXPECT_EQ(a.heat_wavenumber, b.heat_wavenumber);
   EXPECT_NEAR(b.heat_wavenumber, std::sqrt(2 * 0.2 / (5 * (1.2 - 0.3))), 1e-15);
+}
+
+namespace {
+
+/// k⊥c*, k∥c*, L_c* of `model` at `point`, order `order`, through the model interface.
+std::vector<gkt::CoefficientValue> critical_values(const std::string& model, const gkt::ParameterPoint& point,
+                                                   int order) {
+  gkt::OrderRequest request;
+  request.order = order;
+  return gkt::make_transport_model(model)->evaluate(
+      point, {"critical_wavenumber_shear", "critical_wavenumber_heat", "critical_length"}, request);
+}
+
+/// The elastic end (docs/conventions.md): both wave numbers exactly 0, L_c* = +∞, errors 0; and the
+/// approach to it is continuous: k* ∝ √ζ* ∝ √ε and L_c* ∝ 1/√ε as the inelasticity ε → 0, so
+/// k*/√ε and L_c*·√ε settle to the same limits at ε = 10⁻⁴ and 10⁻⁶ (to 1 %).
+void expect_continuous_elastic_limit(const std::string& model,
+                                     const std::function<gkt::ParameterPoint(const gkt::Rational&)>& at, int order) {
+  const auto elastic = critical_values(model, at(gkt::Rational(0)), order);
+  for (int c = 0; c < 2; ++c) {
+    EXPECT_TRUE(elastic[c].defined && !elastic[c].infinite) << model << " " << c;
+    EXPECT_EQ(elastic[c].value, gkt::Rational(0)) << model << " " << c;
+    EXPECT_EQ(elastic[c].error, gkt::Rational(0)) << model << " " << c;
+  }
+  EXPECT_TRUE(elastic[2].defined && elastic[2].infinite && elastic[2].converged) << model;
+  EXPECT_EQ(elastic[2].error, gkt::Rational(0)) << model;
+  const auto near = critical_values(model, at(gkt::Rational(1, 10000)), order),
+             nearer = critical_values(model, at(gkt::Rational(1, 1000000)), order);
+  for (int c = 0; c < 3; ++c) {
+    ASSERT_TRUE(near[c].defined && !near[c].infinite && nearer[c].defined && !nearer[c].infinite) << model;
+    const double power = c < 2 ? -0.5 : 0.5;  // k/√ε, L·√ε
+    const double a = near[c].value.to_double() * std::pow(1e-4, power),
+                 b = nearer[c].value.to_double() * std::pow(1e-6, power);
+    EXPECT_GT(a, 0) << model << " " << c;
+    EXPECT_NEAR(b / a, 1, 1e-2) << model << " " << c;
+  }
+}
+
+}  // namespace
+
+// α = 1 (or δ' = 0) is a valid state: the elastic gas never clusters. Every model answers k⊥c* =
+// k∥c* = 0 and L_c* = +∞ (printed inf), continuously with α → 1 — before, converting L_c* = ∞ to a
+// rational threw "Rational: non-finite double" and a sweep through α = 1 lost every row.
+TEST(HcsStability, ElasticLimitIsContinuousInEveryModel) {
+  for (const char* hcs : {"nonlinear", "linear"})
+    for (const double phi : {0.0, 0.3}) {
+      expect_continuous_elastic_limit(
+          "smooth-inelastic",
+          [&](const gkt::Rational& e) {
+            gkt::ParameterPoint p;
+            p.numbers["alpha"] = gkt::Rational(1) - e;
+            p.numbers["packing_fraction"] = gkt::Rational::from_double(phi);
+            p.choices["hcs"] = hcs;
+            return p;
+          },
+          hcs == std::string("linear") ? 1 : 2);
+    }
+  expect_continuous_elastic_limit(
+      "mixture",
+      [](const gkt::Rational& e) {
+        gkt::ParameterPoint p;
+        const gkt::Rational alpha = gkt::Rational(1) - e;
+        p.numbers = {{"species", gkt::Rational(2)},         {"mass_1", gkt::Rational(1)},
+                     {"mass_2", gkt::Rational(2)},          {"diameter_1", gkt::Rational(1)},
+                     {"diameter_2", gkt::Rational(3, 2)},   {"fraction_1", gkt::Rational(1, 2)},
+                     {"fraction_2", gkt::Rational(1, 2)},   {"alpha", alpha},
+                     {"packing_fraction", gkt::Rational(0)}};
+        return p;
+      },
+      1);
+  expect_continuous_elastic_limit(
+      "viscoelastic",
+      [](const gkt::Rational& e) {
+        gkt::ParameterPoint p;
+        // ζ* ∝ δ' (theory.md (13.3)): δ' = ε plays the role of the inelasticity.
+        p.numbers["delta_prime"] = e;
+        return p;
+      },
+      1);
 }

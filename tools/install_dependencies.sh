@@ -12,6 +12,7 @@ packages=(
   gfortran python3                      # the Fortran module over the C API and its example (GKT_BUILD_FORTRAN); its check against gkt table
   python3-dev python3-pybind11 python3-numpy python3-pytest   # the Python module (GKT_BUILD_PYTHON) and its tests
   jupyter-nbconvert python3-nbclient python3-ipykernel python3-matplotlib   # executed notebooks (tools/run_notebooks.sh)
+  clang-14 libclang-rt-14-dev           # libFuzzer targets of tests/fuzz (tools/fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

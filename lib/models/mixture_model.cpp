@@ -314,15 +314,9 @@ class MixtureModel final : public TransportModel {
     CoefficientValue value(const Mixture& m, const std::string& name, const OrderRequest& order) {
       const auto pick = reader(m.size(), name);
       return detail::choose_order(order, kMaxOrder, [&](int n) {
-        detail::OrderValue v;
-        v.exact = false;
         // Highest order first: the operator is then built once to n + 2, not to n and again larger.
         const double c = pick(at(m, n + 2)), b = pick(at(m, n + 1)), a = pick(at(m, n));
-        v.defined = std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
-        if (v.defined)
-          v.estimate =
-              estimate_truncation(Rational::from_double(a), Rational::from_double(b), Rational::from_double(c));
-        return v;
+        return detail::estimate_from_doubles(a, b, c);  // L_c* = +∞ of a gas that never clusters (elastic)
       });
     }
   };

@@ -2,6 +2,7 @@
 // through the schema, choosing an order).
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -97,7 +98,25 @@ struct OrderValue {
   TruncationEstimate estimate;
   bool defined = true;
   bool exact = true;
+  bool infinite = false;  ///< +∞ at this order and the next two (estimate: value and error 0)
 };
+
+/// Returns the inexact value v_N with its error from v_{N+1}, v_{N+2} (estimate_truncation of the
+/// nearest rationals). +∞ at all three orders is an exact +∞ (critical_length of a gas that never
+/// clusters: conventions.md); any other non-finite value leaves it undefined (printed nan, error inf).
+inline OrderValue estimate_from_doubles(double v_n, double v_n1, double v_n2) {
+  OrderValue v{{Rational(0), Rational(0), false}, true, false};
+  if (std::isinf(v_n) && v_n > 0 && v_n1 == v_n && v_n2 == v_n) {
+    v.estimate = {Rational(0), Rational(0), true};
+    v.infinite = true;
+    return v;
+  }
+  v.defined = std::isfinite(v_n) && std::isfinite(v_n1) && std::isfinite(v_n2);
+  if (v.defined)
+    v.estimate =
+        estimate_truncation(Rational::from_double(v_n), Rational::from_double(v_n1), Rational::from_double(v_n2));
+  return v;
+}
 
 /// Applies an OrderRequest: the fixed order, or the smallest order whose estimate converges
 /// below the tolerance; if none does, the order with the smallest estimated error (optimal
@@ -106,7 +125,9 @@ struct OrderValue {
 template <class ValueAt>
 CoefficientValue choose_order(const OrderRequest& request, int max_order, ValueAt&& value_at) {
   auto to_value = [](const OrderValue& v, int order, bool converged) {
-    return CoefficientValue{v.estimate.value, v.estimate.error, order, converged, v.exact, v.defined};
+    CoefficientValue c{v.estimate.value, v.estimate.error, order, converged, v.exact, v.defined};
+    c.infinite = v.infinite;
+    return c;
   };
   if (!request.tolerance) {
     const OrderValue v = value_at(request.order);

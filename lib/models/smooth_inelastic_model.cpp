@@ -326,7 +326,8 @@ class SmoothInelasticModel final : public TransportModel {
       const HcsState linear = hcs.solve(alpha, 2, HcsScheme::linear);
       const Rational a2 = *linear.exact_a2;
       const double zeta_linear = linear.exact_cooling_rate->to_double();  // ζ0 + a2 ζ2, dilute
-      Rational value;
+      Rational value;          // exact: η*, κ*, μ* of the dilute closed forms
+      double approximate = 0;  // otherwise (square roots, solver output; +∞ for L_c* of the elastic gas)
       bool exact = false;
       if ((dense.phi.sign() > 0 || is_dense_only(which)) && sonine == SonineScheme::standard) {
         // The dense closed forms, linear in a2 like Garzó–Dufty's (theory.md §15.7).
@@ -338,16 +339,16 @@ class SmoothInelasticModel final : public TransportModel {
           const NavierStokesValues v1{form(Transport::shear_viscosity), form(Transport::thermal_conductivity),
                                       form(Transport::density_heat_coefficient), form(Transport::bulk_viscosity),
                                       form(Transport::cooling_rate_first_order)};
-          value = Rational::from_double(pick_transport(v1, which, d, zeta_linear, dense, alpha));
+          approximate = pick_transport(v1, which, d, zeta_linear, dense, alpha);
         } else {
-          value = Rational::from_double(form(which));
+          approximate = form(which);
         }
       } else if (dense.phi.sign() > 0 || is_dense_only(which)) {
         // Modified scheme: through the solver (the a2² products of the collisional terms kept).
         auto& solver = ns_[static_cast<std::size_t>(d - 2)];
         if (!solver) solver = std::make_unique<NavierStokesSolver>(d);
         const NavierStokesValues v1 = solver->solve(alpha, 1, {1.0, 0.0, a2.to_double()}, sonine, dense.state());
-        value = Rational::from_double(pick_transport(v1, which, d, zeta_linear, dense, alpha));
+        approximate = pick_transport(v1, which, d, zeta_linear, dense, alpha);
       } else {
         // The closed forms linear in a2 (theory.md (10.8)): exact for η*, κ*, μ* (the stability
         // values take square roots).
@@ -356,12 +357,26 @@ class SmoothInelasticModel final : public TransportModel {
         const auto v = fs->evaluate(alpha, a2, sonine);
         exact = which == Transport::shear_viscosity || which == Transport::thermal_conductivity ||
                 which == Transport::density_heat_coefficient;  // v holds η*, κ*, μ* in enum order
-        value = exact ? v[static_cast<std::size_t>(which)]
-                      : Rational::from_double(pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()},
-                                                             which, d, zeta_linear, dense, alpha));
+        if (exact)
+          value = v[static_cast<std::size_t>(which)];
+        else
+          approximate = pick_transport({v[0].to_double(), v[1].to_double(), v[2].to_double()}, which, d, zeta_linear,
+                                       dense, alpha);
       }
       const auto* n2 = navier_stokes(hcs, d, alpha, 2, sonine, dense);
       const auto* n3 = navier_stokes(hcs, d, alpha, 3, sonine, dense);
+      if (!exact) {
+        const bool alone = n2 == nullptr || n3 == nullptr;  // no error estimate: the value with error 0
+        const OrderValue e = estimate_from_doubles(
+            approximate,
+            alone ? approximate : pick_transport(*n2, which, d, nonlinear(hcs, d, alpha, 3).cooling_rate, dense, alpha),
+            alone ? approximate
+                  : pick_transport(*n3, which, d, nonlinear(hcs, d, alpha, 4).cooling_rate, dense, alpha));
+        CoefficientValue c{e.estimate.value, e.estimate.error, 1, !alone && e.defined && e.estimate.converging, false,
+                           e.defined};
+        c.infinite = e.infinite;
+        return c;
+      }
       if (n2 == nullptr || n3 == nullptr) return {value, Rational(0), 1, false, exact, true};
       const TruncationEstimate e = estimate_truncation(
           value,
@@ -370,20 +385,15 @@ class SmoothInelasticModel final : public TransportModel {
       return {value, e.error, 1, e.converging, exact, true};
     }
     return choose_order(order, max_order(), [&](int n) {
-      OrderValue v;
-      v.exact = false;
       const auto* s0 = navier_stokes(hcs, d, alpha, n, sonine, dense);
       const auto* s1 = navier_stokes(hcs, d, alpha, n + 1, sonine, dense);
       const auto* s2 = navier_stokes(hcs, d, alpha, n + 2, sonine, dense);
-      v.defined = s0 != nullptr && s1 != nullptr && s2 != nullptr;
-      if (!v.defined) return v;
-      v.estimate = estimate_truncation(Rational::from_double(pick_transport(
-                                           *s0, which, d, nonlinear(hcs, d, alpha, n + 1).cooling_rate, dense, alpha)),
-                                       Rational::from_double(pick_transport(
-                                           *s1, which, d, nonlinear(hcs, d, alpha, n + 2).cooling_rate, dense, alpha)),
-                                       Rational::from_double(pick_transport(
-                                           *s2, which, d, nonlinear(hcs, d, alpha, n + 3).cooling_rate, dense, alpha)));
-      return v;
+      if (s0 == nullptr || s1 == nullptr || s2 == nullptr)  // no HCS solution at some order: undefined
+        return OrderValue{{Rational(0), Rational(0), false}, false, false};
+      return estimate_from_doubles(
+          pick_transport(*s0, which, d, nonlinear(hcs, d, alpha, n + 1).cooling_rate, dense, alpha),
+          pick_transport(*s1, which, d, nonlinear(hcs, d, alpha, n + 2).cooling_rate, dense, alpha),
+          pick_transport(*s2, which, d, nonlinear(hcs, d, alpha, n + 3).cooling_rate, dense, alpha));
     });
   }
   /// The dense first-Sonine closed form of a transport coefficient (not a stability value), built once.

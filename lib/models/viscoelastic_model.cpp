@@ -141,10 +141,18 @@ class ViscoelasticModel final : public TransportModel {
         const double x = p.number("delta_prime").to_double();
         out.push_back(choose_order(order, kMaxSonineOrder, [&](int n) {
           const int all = static_cast<int>(restitution.series().size());
-          auto at = [&](int m, int terms) { return Rational::from_double(at_state(series_at(m), *value, x, terms)); };
-          TruncationEstimate e = estimate_truncation(at(n, all), at(n + 1, all), at(n + 2, all));
-          e.error = e.error + (at(n, all) - at(n, all - 1)).abs();  // the last δ'-term as the series' remainder
-          return OrderValue{e, true, false};
+          auto at = [&](int m, int terms) { return at_state(series_at(m), *value, x, terms); };
+          const double v_n = at(n, all), shorter = at(n, all - 1);
+          OrderValue v = estimate_from_doubles(v_n, at(n + 1, all), at(n + 2, all));
+          if (v.infinite) {  // δ' = 0, the elastic gas: L_c* = +∞ whatever the series' length
+            v.defined = shorter == v_n;
+            v.infinite = v.defined;
+          } else if (v.defined && std::isfinite(shorter)) {  // the last δ'-term as the series' remainder
+            v.estimate.error = v.estimate.error + (Rational::from_double(v_n) - Rational::from_double(shorter)).abs();
+          } else {
+            v.defined = false;
+          }
+          return v;
         }));
         continue;
       }

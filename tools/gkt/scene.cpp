@@ -21,7 +21,21 @@ namespace {
 constexpr long kMaxSweepPoints = 1000000;  // rows of a table: the product over every swept key
 constexpr std::size_t kMaxSceneBytes = 64UL << 20;
 
-std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
+/// The error for `message`, kept on one line: control characters a scene or --set may carry into an
+/// echoed key or value are written as \xNN (found by tests/fuzz/fuzz_scene).
+std::invalid_argument error(const std::string& message) {
+  std::string line;
+  for (const char c : message) {
+    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) {
+      line += c;
+      continue;
+    }
+    char escaped[5];
+    std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+    line += escaped;
+  }
+  return std::invalid_argument(line);
+}
 
 }  // namespace
 
@@ -222,7 +236,7 @@ void apply_overrides(toml::table& scene, const std::vector<std::string>& overrid
   for (const auto& o : overrides) apply_override(scene, o);
 }
 
-toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides) {
+toml::table read_scene_table(const std::string& path, const std::vector<std::string>& overrides) try {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored))
     throw error("scene: '" + path + "' is a directory, not a scene file (TOML)");
@@ -239,13 +253,15 @@ toml::table read_scene_table(const std::string& path, const std::vector<std::str
   toml::table table = parse_scene_text(text, path);
   apply_overrides(table, overrides);
   return table;
+} catch (const std::invalid_argument& e) {
+  throw error(e.what());  // one line, also for messages of the library
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, bool require_order) {
   return load_scene(read_scene_table(path, overrides), require_order);
 }
 
-Scene load_scene(toml::table table, bool require_order) {
+Scene load_scene(toml::table table, bool require_order) try {
   flatten_mixture(table);
   Scene scene;
   const auto* model_node = table.get("model");
@@ -353,6 +369,8 @@ Scene load_scene(toml::table table, bool require_order) {
     scene.axes.push_back(std::move(axis));
   }
   return scene;
+} catch (const std::invalid_argument& e) {
+  throw error(e.what());  // one line, also for messages of the library (model names, choices)
 }
 
 }  // namespace gkt::cli

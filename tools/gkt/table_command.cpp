@@ -107,6 +107,8 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
                                     scene.model + "); drop --exact");
       if (!v.defined)
         row.emplace_back("nan");  // no solution at this order
+      else if (v.infinite)
+        row.emplace_back("inf");  // e.g. critical_length of the elastic gas (JSON: null)
       else
         row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double()));
     }

@@ -26,6 +26,9 @@ struct CoefficientValue {
   bool exact = true;            ///< value and error are exact rationals
   bool defined = true;          ///< false if no value with an error estimate exists at this order
   bool error_estimated = true;  ///< false: the approximation's error is not estimated (printed nan)
+  /// true: the value is +∞ at every order used (the critical_length of a gas whose HCS is stable at
+  /// every wave number, e.g. the elastic gas: docs/conventions.md); value and error are then 0.
+  bool infinite = false;
 };
 
 /// What a model can answer, one per front-end subcommand: a table of coefficients (every model),

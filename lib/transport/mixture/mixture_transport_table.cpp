@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -11,6 +14,28 @@
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 
 namespace gkt {
+
+namespace {
+
+/// Returns x with 3 significant digits (measured errors, positions, echoed arguments).
+std::string short_number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", x);
+  return buffer;
+}
+
+/// Throws "<name>: must be <range>, got <value>" (evaluate's arguments), or with an empty range the
+/// over- or underflow of the set at (n, T) = (value, temperature). Out of line and cold: the
+/// per-state path stays a few compares (docs/performance.md).
+[[noreturn, gnu::cold, gnu::noinline]] void refuse_state(const char* name, const char* range, double value,
+                                                         double temperature) {
+  if (*range == '\0')
+    throw std::invalid_argument(std::string(name) + ": the coefficients at n = " + short_number(value) +
+                                ", T = " + short_number(temperature) + " over- or underflow a double");
+  throw std::invalid_argument(std::string(name) + ": must be " + range + ", got " + short_number(value));
+}
+
+}  // namespace
 
 BinaryTransportTable::Reduced BinaryTransportTable::solve(const Mixture& mixture, int order) {
   const MixtureNavierStokes ns(mixture, order);
@@ -51,7 +76,9 @@ void BinaryTransportTable::Axis::factors(double t, std::array<double, kMaxNodes>
   double sum = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const double difference = t - nodes[k];
-    if (difference == 0) {
+    // At a node (or within 1e-290 of it, where weight/difference would overflow and the
+    // interpolant equals the node value in double anyway: found by fuzz_per_cell at t = 4e-315).
+    if (std::abs(difference) < 1e-290) {
       std::fill_n(w.begin(), n, 0.0);
       w[k] = 1;
       return;
@@ -63,7 +90,7 @@ void BinaryTransportTable::Axis::factors(double t, std::array<double, kMaxNodes>
 }
 
 BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, int nodes, double max_packing_fraction,
-                                           int packing_nodes)
+                                           int packing_nodes, double tolerance)
     : dimension_(mixture.dimension),
       max_packing_(max_packing_fraction),
       fraction_axis_(std::clamp(nodes, 3, kMaxNodes), 1.0),
@@ -78,20 +105,30 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   if (!(max_packing_fraction >= 0 && max_packing_fraction < limit.to_double()))
     throw std::invalid_argument("max_packing_fraction: must be a number in [0, " + limit.to_decimal_string() +
                                 ") for dimension = " + std::to_string(mixture.dimension));
+  if (!(tolerance > 0 && tolerance <= 1))
+    throw std::invalid_argument("tolerance: must be a number in (0, 1], got " + short_number(tolerance));
+  Mixture species = mixture;  // what the table keeps: dimension, masses, diameters, α
+  species.species[0].fraction = species.species[1].fraction = 0.5;
+  species.packing_fraction = 0;
+  species.validate();
   for (std::size_t i = 0; i < 2; ++i) {
     mass_[i] = mixture.species[i].mass;
     diameter_[i] = mixture.species[i].diameter;
     species_volume_[i] = unit_sphere_volume(dimension_) * std::pow(diameter_[i], dimension_);
   }
-  auto at = [&](double x1, double phi) {
-    Mixture m = mixture;
+  // Solves by (x_1, φ): refining K → 2K − 1 Chebyshev–Lobatto nodes keeps the old nodes and turns
+  // the angular midpoints into the new ones, bit for bit (the angles πk/(K − 1) and π(k + ½)/(K − 1)
+  // become π(2k)/(2K − 2) and π(2k + 1)/(2K − 2): doubling is exact), so no state is solved twice.
+  std::map<std::pair<double, double>, Reduced> solved;
+  auto at = [&](double x1, double phi) -> const Reduced& {
+    const auto key = std::make_pair(x1, phi);
+    if (const auto it = solved.find(key); it != solved.end()) return it->second;
+    Mixture m = species;
     m.species[0].fraction = x1;
     m.species[1].fraction = 1 - x1;
     m.packing_fraction = phi;
-    return solve(m, order);
+    return solved.emplace(key, solve(m, order)).first->second;
   };
-  for (double phi : packing_axis_.nodes)
-    for (double x1 : fraction_axis_.nodes) values_.push_back(at(x1, phi));
   // Midpoints in the angle (where the interpolant is least pinned): in x_1 at every φ midpoint (or
   // at φ = 0 for a dilute table).
   auto midpoints = [](const Axis& axis) {
@@ -103,13 +140,54 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
     if (out.empty()) out.push_back(0.0);
     return out;
   };
-  for (double phi : midpoints(packing_axis_))
-    for (double x1 : midpoints(fraction_axis_)) {
-      const Reduced solved = at(x1, phi), interpolated = reduced_at(x1, phi);
-      for (int c = 0; c < kReduced; ++c)
-        interpolation_error_ =
-            std::max(interpolation_error_, std::abs(interpolated[c] - solved[c]) / std::max(1.0, std::abs(solved[c])));
+  for (;;) {
+    values_.clear();
+    for (double phi : packing_axis_.nodes)
+      for (double x1 : fraction_axis_.nodes) values_.push_back(at(x1, phi));
+    interpolation_error_ = 0;
+    double worst_fraction = 0, worst_packing = 0;
+    bool finite = true;
+    for (double phi : midpoints(packing_axis_))
+      for (double x1 : midpoints(fraction_axis_)) {
+        const Reduced& exact = at(x1, phi);
+        const Reduced interpolated = reduced_at(x1, phi);
+        for (int c = 0; c < kReduced; ++c) {
+          const double e = std::abs(interpolated[c] - exact[c]) / std::max(1.0, std::abs(exact[c]));
+          if (!std::isfinite(e)) finite = false;
+          if (e > interpolation_error_) interpolation_error_ = e, worst_fraction = x1, worst_packing = phi;
+        }
+      }
+    for (const Reduced& v : values_)
+      for (double c : v) finite = finite && std::isfinite(c);
+    if (finite && interpolation_error_ <= tolerance) {
+      // Interpolated values stay within the Lebesgue constant (< 3.7 per axis for ≤ 64
+      // Chebyshev–Lobatto nodes, [berrut2004]) times the largest node value: 16× bounds both axes.
+      for (const Reduced& v : values_)
+        for (double c : v) reduced_bound_ = std::max(reduced_bound_, 16 * std::abs(c));
+      return;
     }
+    const int refined = 2 * fraction_nodes() - 1,
+              refined_packing = max_packing_ > 0 ? 2 * this->packing_nodes() - 1 : 1;
+    if (finite && refined <= kMaxNodes && refined_packing <= kMaxNodes) {
+      fraction_axis_ = Axis(refined, 1.0);
+      packing_axis_ = Axis(refined_packing, max_packing_);
+      continue;
+    }
+    if (!finite)
+      throw std::invalid_argument("mixture: the order-" + std::to_string(order) +
+                                  " coefficients are not finite at some x_1 in [0, 1] (a pole of the truncated "
+                                  "solution): no table at this order");
+    std::string grid = std::to_string(fraction_nodes()) + " nodes in x_1";
+    std::string where = "x_1 = " + short_number(worst_fraction);
+    if (max_packing_ > 0) {
+      grid += " x " + std::to_string(this->packing_nodes()) + " in phi";
+      where += ", phi = " + short_number(worst_packing);
+    }
+    throw std::invalid_argument("tolerance: the interpolation error " + short_number(interpolation_error_) + " at " +
+                                where + " with " + grid + " exceeds the tolerance " + short_number(tolerance) +
+                                " (the order-" + std::to_string(order) +
+                                " coefficients vary too fast there, e.g. near a pole of the truncated solution)");
+  }
 }
 
 BinaryTransportTable::Reduced BinaryTransportTable::reduced_at(double x, double phi) const {
@@ -131,8 +209,12 @@ BinaryTransportTable::Reduced BinaryTransportTable::reduced_at(double x, double 
 }
 
 BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double temperature) const {
+  if (!(x1 >= 0 && x1 <= 1)) refuse_state("fraction_1", "a number in [0, 1]", x1, temperature);
+  if (!(n > 0 && n < INFINITY)) refuse_state("number_density", "a finite number > 0", n, temperature);
+  if (!(temperature > 0 && temperature < INFINITY))
+    refuse_state("temperature", "a finite number > 0", temperature, temperature);
   const int d = dimension_;
-  const double x[2] = {std::clamp(x1, 0.0, 1.0), 1 - std::clamp(x1, 0.0, 1.0)};
+  const double x[2] = {x1, 1 - x1};
   // φ = n v_d Σ x_i σ_i^d (v_d σ_i^d kept from the build).
   const double phi = max_packing_ > 0 ? n * (x[0] * species_volume_[0] + x[1] * species_volume_[1]) : 0.0;
   BinaryTransport out;
@@ -146,19 +228,26 @@ BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double tempe
   // Reference gas (m̄, σ̄) at n, T (docs/conventions.md).
   const ReferenceGas ref = reference_gas(d, mbar, sbar, n, temperature);
   const double eta0 = ref.viscosity, kappa0 = ref.conductivity, d0 = ref.self_diffusion;
-  out.cooling_rate = r[0] * ref.collision_frequency;
+  const double scales[] = {ref.collision_frequency, eta0, kappa0, n * d0, d0, kappa0 / temperature, n * temperature};
+  out.cooling_rate = r[0] * scales[0];
   out.temperature_ratio = {r[1], r[2]};
   out.shear_viscosity = r[3] * eta0;
   out.thermal_conductivity = r[4] * kappa0;
-  for (std::size_t k = 0; k < 4; ++k) out.mutual_diffusion[k] = r[5 + k] * n * d0;
+  for (std::size_t k = 0; k < 4; ++k) out.mutual_diffusion[k] = r[5 + k] * scales[3];
   for (std::size_t i = 0; i < 2; ++i) {
     out.thermal_diffusion[i] = r[9 + i] * d0;
     out.pressure_diffusion[i] = r[11 + i] * d0;
-    out.dufour[i] = r[13 + i] * kappa0 / temperature;
+    out.dufour[i] = r[13 + i] * scales[5];
   }
-  out.pressure = r[15] * n * temperature;
+  out.pressure = r[15] * scales[6];
   out.bulk_viscosity = r[16] * eta0;
   out.cooling_rate_first_order = r[17];
+  // The scales must be normal doubles (an extreme n or T would otherwise make a coefficient 0 by
+  // underflow without a word), small enough that no |reduced value| ≤ reduced_bound_ overflows.
+  const double smallest = std::min({scales[0], scales[1], scales[2], scales[3], scales[4], scales[5], scales[6]});
+  const double largest = std::max({scales[0], scales[1], scales[2], scales[3], scales[4], scales[5], scales[6]});
+  if (!(smallest >= std::numeric_limits<double>::min() && largest * reduced_bound_ < INFINITY))
+    refuse_state("number_density, temperature", "", n, temperature);
   return out;
 }
 

@@ -69,7 +69,9 @@ struct EnskogFirstSonineValues {
 
 /// Returns the dense first-Sonine set at α and the state (φ, χ, φ dχ/dφ) from the generated
 /// closed forms (lib/transport/generated/, made by `gkt formula --format cpp`): no allocation,
-/// for per-cell use in solvers. Throws std::invalid_argument for α outside (0, 1] or d ∉ {2, 3}.
+/// for per-cell use in solvers. Throws std::invalid_argument naming the argument for α outside
+/// (0, 1], d ∉ {2, 3}, φ outside [0, 1/2] (3D) or [0, 7/10] (2D), χ < 1, φ dχ/dφ < 0, any of them
+/// not finite, or a set that overflows a double (χ or φ dχ/dφ beyond ~1e300).
 EnskogFirstSonineValues enskog_first_sonine_values(int dimension, double alpha, const EnskogState& state);
 
 }  // namespace gkt

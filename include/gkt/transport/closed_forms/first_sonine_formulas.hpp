@@ -30,6 +30,7 @@ struct FirstSonineValues {
 
 /// Returns a2, ζ*, η*, κ*, μ* at α from the generated closed forms (lib/transport/generated/,
 /// made by `gkt formula --format cpp`): no allocation, ~10² flops, for per-cell use in solvers.
+/// Throws std::invalid_argument naming the argument for α outside (0, 1] (nan included) or d ∉ {2, 3}.
 FirstSonineValues first_sonine_values(int dimension, double alpha);
 
 }  // namespace gkt

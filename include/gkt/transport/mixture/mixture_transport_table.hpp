@@ -38,20 +38,31 @@ class BinaryTransportTable {
   /// Solves the mixture (species masses and diameters as given, fractions and φ ignored; α of
   /// `mixture`) at Sonine order `order` on `nodes` Chebyshev–Lobatto points x_1 ∈ [0, 1] — and, if
   /// max_packing_fraction > 0, on packing_nodes points φ ∈ [0, max_packing_fraction] — and measures
-  /// the interpolation error between the nodes. Throws std::invalid_argument on bad input (nodes or
-  /// packing_nodes outside [3, 64], order outside [1, 12], max_packing_fraction outside [0, φ limit)).
+  /// the interpolation error between the nodes. While that error exceeds `tolerance` every axis is
+  /// refined, K → 2K − 1 nodes (the points where the error was measured become nodes), up to 64 nodes
+  /// per axis. Throws std::invalid_argument on bad input (nodes or packing_nodes outside [3, 64],
+  /// order outside [1, 12], max_packing_fraction outside [0, φ limit), tolerance outside (0, 1]), on
+  /// a mixture that fails Mixture::validate, and when no grid of at most 64 nodes per axis meets the
+  /// tolerance (the message names the error reached and where: e.g. a pole of the order-N solution).
   BinaryTransportTable(const Mixture& mixture, int order, int nodes = 24, double max_packing_fraction = 0,
-                       int packing_nodes = 12);
+                       int packing_nodes = 12, double tolerance = 1e-3);
 
   /// Returns the coefficients at x_1 ∈ [0, 1], density n > 0 and temperature T > 0 (no allocation);
   /// every value is nan if φ = n v_d Σ x_i σ_i^d exceeds the table's φ_max (0 for a dilute table,
-  /// which treats any n as dilute).
+  /// which treats any n as dilute). Throws std::invalid_argument naming the argument when x_1, n or
+  /// T is outside its range or not finite, or when the coefficients at (n, T) over- or underflow a
+  /// double.
   [[nodiscard]] BinaryTransport evaluate(double fraction_1, double number_density, double temperature) const;
 
   /// Returns the largest |interpolated − solved| of the reduced coefficients at the midpoints
   /// between nodes (dense: at every pair of midpoints in x_1 and φ), relative to max(1, |value|):
-  /// the interpolation error measured at build time.
+  /// the interpolation error measured at build time (at most the constructor's tolerance).
   [[nodiscard]] double interpolation_error() const { return interpolation_error_; }
+
+  /// Returns the number of nodes in x_1 after refinement.
+  [[nodiscard]] int fraction_nodes() const { return static_cast<int>(fraction_axis_.nodes.size()); }
+  /// Returns the number of nodes in φ after refinement (1 for a dilute table).
+  [[nodiscard]] int packing_nodes() const { return static_cast<int>(packing_axis_.nodes.size()); }
 
  private:
   // ζ*, γ_1, γ_2, η*, λ*, D_ij* (4), D^T_i* (2), D^p_i* (2), D''_j* (2), p*, κ*, ζ_U
@@ -71,6 +82,7 @@ class BinaryTransportTable {
   Axis fraction_axis_, packing_axis_;
   std::vector<Reduced> values_;  // at packing node a, fraction node b: a · nodes + b
   double interpolation_error_ = 0;
+  double reduced_bound_ = 0;  // bounds every interpolated |reduced value| (evaluate's overflow check)
 
   [[nodiscard]] Reduced reduced_at(double fraction_1, double packing) const;
   static Reduced solve(const Mixture& mixture, int order);
