@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gsl/gsl_randist.h>
@@ -25,8 +26,8 @@ struct RoughHcsSample {
 };
 
 inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, double kappa, double theta_start,
-                                         int particles, double relax, int batches, double per_batch,
-                                         unsigned long seed) {
+                                         int particles, double relax, int batches, double per_batch, unsigned long seed,
+                                         double friction = std::numeric_limits<double>::infinity()) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, seed);
   const int dr = d == 3 ? 3 : 1;
@@ -74,7 +75,7 @@ inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, doubl
       c.w[1] = v[j];
       c.w[2] = w[i];
       c.w[3] = w[j];
-      apply_rough_rule(c, sigma, alpha, beta, kappa);
+      apply_rough_rule(c, sigma, alpha, walton_beta(c, sigma, alpha, beta, kappa, friction), kappa);
       v[i] = c.w[4];
       v[j] = c.w[5];
       w[i] = c.w[6];

@@ -535,7 +535,7 @@ TEST(CliRough, SmoothLimitAndBadInput) {
            {"alpha=0", "alpha: must be a number in (0, 1], got 0"},
            {"dimension=4", "dimension: must be 2 or 3, got 4"},
            {"order=2", "order: must be exactly 1, got 2"},
-           {"dimension=2", "coefficients: thermal_conductivity of the rough model needs dimension = 3"},
+           {"dimension=2", "coefficients: orientation_correlation needs dimension = 3"},
            {"'hcs=\"nonlinear\"'", "hcs: must be one of"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;

@@ -1,0 +1,43 @@
+// Rough spheres and disks with Coulomb friction (Walton's model; docs/theory.md §19.10): the
+// tangential restitution depends on the impact angle γ, cot γ = (σ̂·g_c)/|g_c,t|,
+//   β(γ) = min{β0, −1 + ((1+κ)/κ)(1+α) μ_f cot γ}
+// (sticking, β = β0, at grazing angles below γ0; sliding, the tangential impulse μ_f times the normal
+// one, above). Homogeneous cooling state in the first (Maxwellian) approximation and the scalar
+// Navier–Stokes response (bulk viscosity, first-order cooling rate) of rough_bulk_viscosity.hpp.
+#pragma once
+
+#include "gkt/algebra/rational.hpp"
+
+namespace gkt {
+
+/// The Maxwellian energy rates ζ_t/ν0(T_t), ζ_r/ν0(T_t) (ν0 = nT_t/η0(T_t)).
+struct RoughWaltonRates {
+  double translational = 0;
+  double rotational = 0;
+};
+
+/// Returns the rates for two Maxwellians at T_t and T_r = θT_t, d ∈ {2, 3}, α ∈ (0, 1],
+/// β0 ∈ [−1, 1], κ ∈ (0, 1], μ_f ≥ 0 (μ_f = +inf: constant β = β0). The angular average is a 1D
+/// integral (composite Simpson, `intervals` panels on |g_c,t| ≤ 12 standard deviations) after the
+/// normal relative velocity is integrated in closed form; relative error below 1e-10 with the
+/// default (theory.md (19.21)). Throws std::invalid_argument naming the field.
+RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, double kappa, double friction,
+                                    double temperature_ratio, int intervals = 4000);
+
+/// The Walton HCS (Maxwellian) and its scalar response.
+struct RoughWaltonState {
+  double temperature_ratio = 0;         ///< θ = T_r/T_t; +inf when the spin decouples (see below)
+  double cooling_rate = 0;              ///< ζ* = ζ/ν0(T_t)
+  double bulk_viscosity = 0;            ///< η_b/η0(T_t), theory.md (19.18)
+  double cooling_rate_first_order = 0;  ///< ζ_U, theory.md (19.19)
+  /// True when ζ_t = ζ_r has no finite root: μ_f = 0 or β0 = −1 (no torque), or friction too weak
+  /// for the spin to keep up (θ grows without bound); then θ = +inf and the rest NaN.
+  bool spin_decoupled = false;
+};
+
+/// Returns the Walton HCS for exact (α, β0, κ, μ_f) (ranges as above); θ by bisection of
+/// ζ_t = ζ_r on log θ to 1e-13, the slopes of (19.17) by central differences (≈1e-7 relative).
+RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha, const Rational& beta0,
+                                            const Rational& kappa, const Rational& friction);
+
+}  // namespace gkt

@@ -1,0 +1,155 @@
+#include "gkt/transport/rough/rough_walton.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "gkt/transport/rough/rough_bulk_viscosity.hpp"
+
+namespace gkt {
+
+namespace {
+
+void check(int d, double alpha, double beta0, double kappa, double friction) {
+  if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(d));
+  if (!(alpha > 0 && alpha <= 1)) throw std::invalid_argument("alpha: must be a number in (0, 1]");
+  if (!(beta0 >= -1 && beta0 <= 1)) throw std::invalid_argument("beta0: must be a number in [-1, 1]");
+  if (!(kappa > 0 && kappa <= 1)) throw std::invalid_argument("moment_of_inertia: must be a number in (0, 1]");
+  if (!(friction >= 0)) throw std::invalid_argument("friction: must be a number >= 0");
+}
+
+/// A1 = ⟨η_t G²⟩ and A2 = ⟨η_t² G²⟩ over collisions (weight Θ(u)u, velocities in units of √(2T_t/m)),
+/// G = |g_c,t|, η_t = min{η0, M u/G}, M = μ_f(1+α)/2 (theory.md (19.21)). u has density u e^{−u²/2};
+/// each tangential component of g_c has variance s² = 1 + τ, τ = θ/κ.
+struct Averages {
+  double a1 = 0, a2 = 0;
+};
+
+/// ⟨u; u < a⟩ = √(π/2) erf(a/√2) − a e^{−a²/2} and ⟨u²; u < a⟩ = 2 − (a² + 2)e^{−a²/2} for the density
+/// u e^{−u²/2}; below a = 1 by their series (the closed forms cancel to a³/3 and a⁴/4: with μ_f large,
+/// M² ⟨u²; u < a⟩ would lose every digit).
+void truncated_moments(double a, double& u1, double& u2) {
+  const double x = a * a / 2, e = std::exp(-x);
+  if (a >= 1) {
+    u1 = std::sqrt(std::numbers::pi / 2) * std::erf(a / std::sqrt(2.0)) - a * e;
+    u2 = 2 - (a * a + 2) * e;
+    return;
+  }
+  // u1 = Σ_k (−x)^k/k! · a³/(2k + 3);  u2 = 2e^{−x} Σ_{k≥2} x^k/k!.
+  double term = a * a * a, sum1 = 0, power = x * x / 2, sum2 = 0;
+  for (int k = 0; k < 40; ++k) {
+    sum1 += term / (2 * k + 3);
+    term *= -x / (k + 1);
+    sum2 += power;
+    power *= x / (k + 3);
+  }
+  u1 = sum1;
+  u2 = 2 * e * sum2;
+}
+
+Averages averages(int d, double eta0, double m, double s, int intervals) {
+  const double tangential = (d - 1) * s * s;  // ⟨G²⟩
+  if (std::isinf(m)) return {eta0 * tangential, eta0 * eta0 * tangential};
+  if (m == 0) return {0, 0};
+  const double c = eta0 / m;  // sticking for u ≥ cG
+  // Integrand over r = G/s, weighted by the density of r: r e^{−r²/2} (d = 3), √(2/π) e^{−r²/2} (d = 2).
+  const auto integrand = [&](double r, double& i1, double& i2) {
+    const double g = s * r, a = c * g, e = std::exp(-a * a / 2);
+    double u1 = 0, u2 = 0;
+    truncated_moments(a, u1, u2);
+    const double density = (d == 3 ? r : std::sqrt(2 / std::numbers::pi)) * std::exp(-r * r / 2);
+    i1 = density * (eta0 * g * g * e + m * g * u1);
+    i2 = density * (eta0 * eta0 * g * g * e + m * m * u2);
+  };
+  const double upper = 12, h = upper / intervals;
+  Averages out;
+  for (int k = 0; k <= intervals; ++k) {
+    const double weight = (k == 0 || k == intervals) ? 1 : (k % 2 == 1 ? 4 : 2);
+    double i1 = 0, i2 = 0;
+    integrand(k * h, i1, i2);
+    out.a1 += weight * i1;
+    out.a2 += weight * i2;
+  }
+  out.a1 *= h / 3;
+  out.a2 *= h / 3;
+  return out;
+}
+
+}  // namespace
+
+RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, double kappa, double friction,
+                                    double temperature_ratio, int intervals) {
+  check(dimension, alpha, beta0, kappa, friction);
+  if (!(temperature_ratio > 0)) throw std::invalid_argument("temperature_ratio: must be > 0");
+  if (intervals < 2 || intervals % 2 != 0) throw std::invalid_argument("intervals: must be even and >= 2");
+  const int d = dimension;
+  const double dr = d == 3 ? 3.0 : 1.0, g = (d + 2.0) / 4.0;  // g: ν of (5.3) → ν0
+  const double tau = temperature_ratio / kappa, eta0 = (1 + beta0) * kappa / (2 * (1 + kappa));
+  const double m = std::isinf(friction) ? friction : friction * (1 + alpha) / 2;
+  const Averages a = averages(d, eta0, m, std::sqrt(1 + tau), intervals);
+  // ⟨Δc1²⟩ = −(1−α²)/2 − A1/(1+τ) + A2 and ⟨Δw1²⟩ = −(τ/κ)A1/(1+τ) + A2/κ² (theory.md (19.22);
+  // constant η_t gives (19.7)–(19.8)); ζ_t/ν = −(2/d)⟨Δc1²⟩, ζ_r/ν = −(2/(d_rτ))⟨Δw1²⟩.
+  const double dv = -(1 - alpha * alpha) / 2 - a.a1 / (1 + tau) + a.a2;
+  const double dw = -(tau / kappa) * a.a1 / (1 + tau) + a.a2 / (kappa * kappa);
+  return {-g * 2.0 / d * dv, -g * 2.0 / (dr * tau) * dw};
+}
+
+RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha, const Rational& beta0,
+                                            const Rational& kappa, const Rational& friction) {
+  const double a = alpha.to_double(), b = beta0.to_double(), k = kappa.to_double(), mu = friction.to_double();
+  check(dimension, a, b, k, mu);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  RoughWaltonState out;
+  const auto decoupled = [&]() {
+    out.temperature_ratio = std::numeric_limits<double>::infinity();
+    out.cooling_rate = out.bulk_viscosity = out.cooling_rate_first_order = nan;
+    out.spin_decoupled = true;
+    return out;
+  };
+  if (mu == 0 || b == -1) return decoupled();
+  const auto residual = [&](double log_theta) {
+    const RoughWaltonRates r = rough_walton_rates(dimension, a, b, k, mu, std::exp(log_theta));
+    return r.translational - r.rotational;
+  };
+  // ζ_t − ζ_r > 0 as θ → 0 (the cold spin is heated); take the first sign change upwards in log θ.
+  double lo = -20, f_lo = residual(lo), hi = lo;
+  bool found = false;
+  for (double x = lo + 0.25; x <= 20; x += 0.25) {
+    const double f = residual(x);
+    if ((f_lo > 0) != (f > 0)) {
+      hi = x;
+      found = true;
+      break;
+    }
+    lo = x;
+    f_lo = f;
+  }
+  if (!found) return decoupled();
+  while (hi - lo > 1e-13) {
+    const double mid = (lo + hi) / 2, f = residual(mid);
+    if ((f > 0) == (f_lo > 0)) {
+      lo = mid;
+      f_lo = f;
+    } else {
+      hi = mid;
+    }
+  }
+  const double theta = std::exp((lo + hi) / 2);
+  const RoughWaltonRates r = rough_walton_rates(dimension, a, b, k, mu, theta);
+  out.temperature_ratio = theta;
+  out.cooling_rate = r.translational;
+  // Slopes θ∂ζ/∂θ = ∂ζ/∂ln θ by central differences in ln θ.
+  const double h = 1e-4;
+  const RoughWaltonRates up = rough_walton_rates(dimension, a, b, k, mu, theta * std::exp(h));
+  const RoughWaltonRates down = rough_walton_rates(dimension, a, b, k, mu, theta * std::exp(-h));
+  const RoughScalarResponse s =
+      rough_scalar_response(dimension, theta, r.translational, (up.translational - down.translational) / (2 * h),
+                            (up.rotational - down.rotational) / (2 * h));
+  out.bulk_viscosity = s.bulk_viscosity;
+  out.cooling_rate_first_order = s.cooling_rate_first_order;
+  return out;
+}
+
+}  // namespace gkt

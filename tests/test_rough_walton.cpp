@@ -1,0 +1,149 @@
+// Coulomb (Walton) friction, docs/theory.md §19.10: the constant-β limit μ_f → ∞, the angular
+// quadrature against Monte Carlo averages over collisions (error bars), the Maxwellian θ against the
+// in-suite DSMC with the Walton rule, and the scalar response through the rate slopes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "dsmc_rough.hpp"
+#include "gkt/transport/rough/rough_bulk_viscosity.hpp"
+#include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
+#include "gkt/transport/rough/rough_walton.hpp"
+#include "rough_monte_carlo.hpp"
+
+using gkt::Rational;
+
+TEST(RoughWalton, ConstantBetaIsInfiniteFriction) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int d : {3, 2}) {
+    const double a = 0.8, b = 0.3, k = d == 3 ? 0.4 : 0.5, theta = 1.3, tau = theta / k;
+    const double eta = (1 + b) * k / (2 * (1 + k)), g = (d + 2) / 4.0, dr = d == 3 ? 3 : 1;
+    const auto r = gkt::rough_walton_rates(d, a, b, k, inf, theta);
+    // theory.md (19.12) times (d+2)/4.
+    EXPECT_NEAR(r.translational, g * 2 / d * ((1 - a * a) / 2 + (d - 1) * (eta * (1 - eta) - eta * eta * tau)), 1e-14);
+    EXPECT_NEAR(r.rotational, g * 2 * (d - 1) / dr * (eta / k) * (1 - eta / k - eta / (k * tau)), 1e-14);
+    // A large but finite μ_f: sliding only for cot γ < 2η0/(μ_f(1+α)), a fraction O(μ_f⁻²).
+    const auto big = gkt::rough_walton_rates(d, a, b, k, 1e4, theta);
+    EXPECT_NEAR(big.translational, r.translational, 1e-7);
+    EXPECT_NEAR(big.rotational, r.rotational, 1e-7);
+    const Rational alpha(4, 5), beta(3, 10), kappa = d == 3 ? Rational(2, 5) : Rational(1, 2);
+    const auto w = gkt::rough_walton_cooling_state(d, alpha, beta, kappa, Rational(100000));
+    const auto hcs = gkt::rough_homogeneous_cooling_state(d, alpha, beta, kappa, gkt::RoughHcsScheme::maxwellian);
+    EXPECT_NEAR(w.temperature_ratio, hcs.temperature_ratio, 1e-8);
+    EXPECT_NEAR(w.cooling_rate, hcs.cooling_rate, 1e-8);
+    const auto bulk = gkt::rough_bulk_viscosity(d, alpha, beta, kappa);
+    EXPECT_NEAR(w.bulk_viscosity, bulk.bulk_viscosity, 1e-6 * bulk.bulk_viscosity);
+    EXPECT_NEAR(w.cooling_rate_first_order, bulk.cooling_rate_first_order, 1e-6);
+  }
+}
+
+TEST(RoughWalton, QuadratureConverged) {
+  for (const double mu : {0.05, 0.3, 2.0}) {
+    const auto coarse = gkt::rough_walton_rates(3, 0.7, 0.6, 0.4, mu, 2.0, 4000);
+    const auto fine = gkt::rough_walton_rates(3, 0.7, 0.6, 0.4, mu, 2.0, 16000);
+    EXPECT_NEAR(coarse.translational, fine.translational, 1e-11 * std::abs(fine.translational)) << mu;
+    EXPECT_NEAR(coarse.rotational, fine.rotational, 1e-11 * std::abs(fine.rotational)) << mu;
+  }
+}
+
+// Monte Carlo over collisions (weights Θ(u)u, Maxwellians at T_t and T_r = θT_t) with the Walton rule
+// of tests/rough_monte_carlo.hpp applied collision by collision: ζ_t* = −((d+2)/(2d))⟨Δc1²⟩,
+// ζ_r* = −((d+2)/(2d_rτ))⟨Δw1²⟩ (units of (19.22)) within 5 standard errors.
+TEST(RoughWalton, RatesAgainstMonteCarlo) {
+  struct Case {
+    int d;
+    double alpha, beta0, kappa, friction, theta;
+  };
+  for (const Case c :
+       {Case{3, 0.8, 0.5, 0.4, 0.1, 1.5}, Case{3, 0.6, 1.0, 0.4, 0.3, 0.7}, Case{2, 0.9, 0.4, 0.5, 0.15, 1.0}}) {
+    gkt::test::RoughCollisionSampler sampler(c.d, c.alpha, c.beta0, c.kappa, c.theta, 11, c.friction);
+    const int n = 400000;
+    double w_sum = 0, v_sum = 0, v_sq = 0, s_sum = 0, s_sq = 0;
+    for (int i = 0; i < n; ++i) {
+      const auto x = sampler.draw();
+      const double dv = gkt::test::dot3(x.w[4], x.w[4]) - gkt::test::dot3(x.w[0], x.w[0]);
+      const double dw = gkt::test::dot3(x.w[6], x.w[6]) - gkt::test::dot3(x.w[2], x.w[2]);
+      w_sum += x.weight;
+      v_sum += x.weight * dv;
+      v_sq += x.weight * dv * x.weight * dv;
+      s_sum += x.weight * dw;
+      s_sq += x.weight * dw * x.weight * dw;
+    }
+    // Ratio estimators ⟨uX⟩/⟨u⟩; the error of ⟨u⟩ is small against that of ⟨uX⟩ here.
+    const double mean_w = w_sum / n, dv = v_sum / w_sum, ds = s_sum / w_sum;
+    const double dv_err = std::sqrt((v_sq / n - (v_sum / n) * (v_sum / n)) / n) / mean_w;
+    const double ds_err = std::sqrt((s_sq / n - (s_sum / n) * (s_sum / n)) / n) / mean_w;
+    const double tau = c.theta / c.kappa, dr = c.d == 3 ? 3 : 1, g = (c.d + 2) / 4.0;
+    const auto r = gkt::rough_walton_rates(c.d, c.alpha, c.beta0, c.kappa, c.friction, c.theta);
+    const double scale_t = -g * 2 / c.d, scale_r = -g * 2 / (dr * tau);
+    std::printf("walton d=%d: zeta_t %.5f MC %.5f +- %.5f, zeta_r %.5f MC %.5f +- %.5f\n", c.d, r.translational,
+                scale_t * dv, std::abs(scale_t) * dv_err, r.rotational, scale_r * ds, std::abs(scale_r) * ds_err);
+    EXPECT_NEAR(r.translational, scale_t * dv, 5 * std::abs(scale_t) * dv_err);
+    EXPECT_NEAR(r.rotational, scale_r * ds, 5 * std::abs(scale_r) * ds_err);
+    // The friction matters at these points: the constant-β0 rates lie outside the error bars.
+    const auto sticking =
+        gkt::rough_walton_rates(c.d, c.alpha, c.beta0, c.kappa, std::numeric_limits<double>::infinity(), c.theta);
+    EXPECT_GT(std::abs(sticking.rotational - scale_r * ds), 8 * std::abs(scale_r) * ds_err);
+  }
+}
+
+// DSMC of the HCS with the Walton rule (4000 particles, 20 + 100 collisions per particle): the
+// Maxwellian θ is a first approximation, off by 2–6 % here (cumulants left out, as for constant β,
+// theory.md §19.6); the friction moves θ far from the constant-β0 value, and the DSMC sees that.
+TEST(RoughWalton, TemperatureRatioAgainstDsmc) {
+  struct Case {
+    int d;
+    long a10, b10, mu100;
+  };
+  for (const Case c : {Case{3, 9, 10, 50}, Case{3, 8, 0, 100}, Case{2, 9, 10, 50}}) {
+    const double k = c.d == 3 ? 0.4 : 0.5;
+    const Rational kappa = c.d == 3 ? Rational(2, 5) : Rational(1, 2);
+    const auto w =
+        gkt::rough_walton_cooling_state(c.d, Rational(c.a10, 10), Rational(c.b10, 10), kappa, Rational(c.mu100, 100));
+    ASSERT_FALSE(w.spin_decoupled);
+    const auto s = gkt::test::run_rough_hcs_dsmc(c.d, c.a10 / 10.0, c.b10 / 10.0, k, w.temperature_ratio, 4000, 20, 100,
+                                                 1, 5, c.mu100 / 100.0);
+    const auto fixed = gkt::rough_homogeneous_cooling_state(c.d, Rational(c.a10, 10), Rational(c.b10, 10), kappa,
+                                                            gkt::RoughHcsScheme::maxwellian);
+    std::printf("walton HCS d=%d alpha=%.1f beta0=%.1f mu=%.2f: theta %.4f DSMC %.4f +- %.4f (constant beta0: %.4f)\n",
+                c.d, c.a10 / 10.0, c.b10 / 10.0, c.mu100 / 100.0, w.temperature_ratio, s.theta, s.theta_error,
+                fixed.temperature_ratio);
+    EXPECT_NEAR(w.temperature_ratio, s.theta, 0.07 * s.theta + 4 * s.theta_error);
+    if (c.b10 == 10) {
+      EXPECT_GT(std::abs(fixed.temperature_ratio - s.theta), 0.2 * s.theta);
+    }
+  }
+}
+
+// Sliding contacts take at most μ_f times the normal impulse, so a fast spin loses a bounded amount per
+// collision while the translation cools: the spin tail freezes and θ runs away (theory.md §19.10). At
+// (α, β0, μ_f) = (0.7, 0.5, 0.5) the Maxwellian approximation has a finite root (θ = 1.48) but the
+// DSMC's θ and a02 grow without bound — the Maxwellian HCS of the Walton gas is not always reached.
+TEST(RoughWalton, FrozenSpinTailInDsmc) {
+  const auto w = gkt::rough_walton_cooling_state(3, Rational(7, 10), Rational(1, 2), Rational(2, 5), Rational(1, 2));
+  ASSERT_FALSE(w.spin_decoupled);
+  EXPECT_LT(w.temperature_ratio, 2);
+  const auto early = gkt::test::run_rough_hcs_dsmc(3, 0.7, 0.5, 0.4, w.temperature_ratio, 4000, 5, 20, 1, 5, 0.5);
+  const auto late = gkt::test::run_rough_hcs_dsmc(3, 0.7, 0.5, 0.4, w.temperature_ratio, 4000, 80, 20, 1, 5, 0.5);
+  std::printf(
+      "walton runaway: theta %.4f; DSMC after 5 collisions/particle %.3f (a02 %.2f), after 80 %.1f (a02 %.1f)\n",
+      w.temperature_ratio, early.theta, early.a02, late.theta, late.a02);
+  EXPECT_LT(early.theta, 2);
+  EXPECT_GT(late.theta, 100);
+  EXPECT_GT(late.a02, 100);
+  // The same point with constant β = β0 has a stationary DSMC θ (no sliding cap).
+  const auto fixed = gkt::test::run_rough_hcs_dsmc(3, 0.7, 0.5, 0.4, 1.2, 4000, 80, 20, 1, 5);
+  EXPECT_LT(fixed.theta, 2);
+}
+
+TEST(RoughWalton, BadInputAndDecoupledSpin) {
+  EXPECT_THROW(gkt::rough_walton_rates(3, 0.9, 0.5, 0.4, -0.1, 1.0), std::invalid_argument);
+  EXPECT_THROW(gkt::rough_walton_rates(3, 0.9, 1.5, 0.4, 0.1, 1.0), std::invalid_argument);
+  EXPECT_THROW(gkt::rough_walton_rates(4, 0.9, 0.5, 0.4, 0.1, 1.0), std::invalid_argument);
+  const auto smooth = gkt::rough_walton_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), Rational(0));
+  EXPECT_TRUE(smooth.spin_decoupled);
+  EXPECT_TRUE(std::isinf(smooth.temperature_ratio));
+  EXPECT_TRUE(std::isnan(smooth.bulk_viscosity));
+}
