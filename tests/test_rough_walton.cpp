@@ -10,6 +10,7 @@
 #include "dsmc_rough.hpp"
 #include "gkt/transport/rough/rough_bulk_viscosity.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
+#include "gkt/transport/rough/rough_shear_viscosity.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "rough_monte_carlo.hpp"
 
@@ -146,4 +147,50 @@ TEST(RoughWalton, BadInputAndDecoupledSpin) {
   EXPECT_TRUE(smooth.spin_decoupled);
   EXPECT_TRUE(std::isinf(smooth.temperature_ratio));
   EXPECT_TRUE(std::isnan(smooth.bulk_viscosity));
+}
+
+// η* of the Walton gas (theory.md (19.23)): with μ_f = ∞ the conditioned-Gaussian quadrature must give
+// the engine's exact first-Sonine η* (rough_shear_viscosity_at) — a check of the conditioning and of
+// Isserlis' theorem — and with finite μ_f L_η must agree with Monte Carlo over collisions.
+TEST(RoughWalton, ShearViscosity) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int d : {3, 2}) {
+    const double k = d == 3 ? 0.4 : 0.5;
+    const Rational kappa = d == 3 ? Rational(2, 5) : Rational(1, 2);
+    const double exact =
+        gkt::rough_shear_viscosity_at(d, Rational(4, 5), Rational(3, 10), kappa, Rational(13, 10)).to_double();
+    // Simpson's h⁴: 2e-7 with 200 panels, 1e-8 with the default 400.
+    EXPECT_NEAR(gkt::rough_walton_shear_viscosity(d, 0.8, 0.3, k, inf, 1.3), exact, 5e-8) << d;
+    EXPECT_NEAR(gkt::rough_walton_shear_viscosity(d, 0.8, 0.3, k, 1e5, 1.3), exact, 5e-8) << d;
+    // Quadrature converged at the default (against four times the panels).
+    const double coarse = gkt::rough_walton_shear_viscosity(d, 0.7, 1.0, k, 0.3, 1.2);
+    const double fine = gkt::rough_walton_shear_viscosity(d, 0.7, 1.0, k, 0.3, 1.2, 1600);
+    EXPECT_NEAR(coarse, fine, 5e-8 * fine) << d;
+  }
+  struct Case {
+    int d;
+    double alpha, beta0, kappa, friction, theta;
+  };
+  for (const Case c : {Case{3, 0.8, 1.0, 0.4, 0.1, 1.5}, Case{2, 0.7, 0.6, 0.5, 0.2, 0.8}}) {
+    gkt::test::RoughCollisionSampler sampler(c.d, c.alpha, c.beta0, c.kappa, c.theta, 17, c.friction);
+    const auto y2 = [&](const gkt::test::Vec3& a, const gkt::test::Vec3& b) {
+      const double ab = gkt::test::dot3(a, b);
+      return ab * ab - gkt::test::dot3(a, a) * gkt::test::dot3(b, b) / c.d;
+    };
+    const int n = 400000;
+    double w_sum = 0, x_sum = 0, x_sq = 0;
+    for (int i = 0; i < n; ++i) {
+      const auto x = sampler.draw();
+      const double l = y2(x.w[0], x.w[0]) + y2(x.w[1], x.w[0]) - y2(x.w[0], x.w[4]) - y2(x.w[1], x.w[4]);
+      w_sum += x.weight;
+      x_sum += x.weight * l;
+      x_sq += x.weight * l * x.weight * l;
+    }
+    const double l_mc = x_sum / w_sum, err = std::sqrt((x_sq / n - (x_sum / n) * (x_sum / n)) / n) / (w_sum / n);
+    const double zeta = gkt::rough_walton_rates(c.d, c.alpha, c.beta0, c.kappa, c.friction, c.theta).translational;
+    const double eta = gkt::rough_walton_shear_viscosity(c.d, c.alpha, c.beta0, c.kappa, c.friction, c.theta);
+    const double l_quadrature = (c.d - 1) * (1 / eta + zeta / 2);
+    std::printf("walton L_eta d=%d: quadrature %.5f MC %.5f +- %.5f (eta* %.5f)\n", c.d, l_quadrature, l_mc, err, eta);
+    EXPECT_NEAR(l_quadrature, l_mc, 5 * err);
+  }
 }

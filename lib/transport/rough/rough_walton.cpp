@@ -1,10 +1,13 @@
 #include "gkt/transport/rough/rough_walton.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gkt/transport/rough/rough_bulk_viscosity.hpp"
 
@@ -77,7 +80,154 @@ Averages averages(int d, double eta0, double m, double s, int intervals) {
   return out;
 }
 
+/// The Gaussian of the pre-collisional velocities X = (v1, v2, w1, w2) (velocities in units of
+/// √(2T_t/m); variance 1/2 per translational and τ/2 per spin component) conditioned on the normal
+/// relative velocity u and the tangential relative contact velocity g_c,t = (G, 0) (σ̂ = e0):
+/// mean K y (y = (u, G, 0)) and covariance C, of which only the v1, v2 entries are kept.
+struct ConditionedGaussian {
+  int d = 3;
+  std::array<std::array<double, 3>, 6> gain{};  // rows v1_0..v1_{d−1}, v2_0..; columns y
+  std::array<std::array<double, 6>, 6> cov{};   // v1, v2 components
+};
+
+ConditionedGaussian condition(int d, double tau) {
+  const int n = d == 3 ? 12 : 6, m = d;  // v1 (d), v2 (d), w1, w2 (3 each, or 1 each for disks)
+  const int w1 = 2 * d, w2 = d == 3 ? 2 * d + 3 : 2 * d + 1;
+  std::vector<double> prior(static_cast<std::size_t>(n), 0.5);
+  for (int i = 2 * d; i < n; ++i) prior[static_cast<std::size_t>(i)] = tau / 2;
+  // Constraint rows A (m × n): u = v1_0 − v2_0; g_c,t = v1_t − v2_t + ((w1 + w2) × σ̂)_t,
+  // (w × e0) = (0, w_2, −w_1) for spheres, w ŷ for disks.
+  std::vector<std::vector<double>> a(static_cast<std::size_t>(m), std::vector<double>(static_cast<std::size_t>(n), 0));
+  for (int r = 0; r < m; ++r) {
+    a[r][static_cast<std::size_t>(r)] = 1;
+    a[r][static_cast<std::size_t>(d + r)] = -1;
+  }
+  if (d == 3) {
+    a[1][static_cast<std::size_t>(w1 + 2)] = a[1][static_cast<std::size_t>(w2 + 2)] = 1;
+    a[2][static_cast<std::size_t>(w1 + 1)] = a[2][static_cast<std::size_t>(w2 + 1)] = -1;
+  } else {
+    a[1][static_cast<std::size_t>(w1)] = a[1][static_cast<std::size_t>(w2)] = 1;
+  }
+  // S = A Σ Aᵀ (m × m), inverted by Gauss–Jordan (m ≤ 3).
+  std::array<std::array<double, 3>, 3> sm{}, inv{};
+  for (int r = 0; r < m; ++r)
+    for (int c = 0; c < m; ++c) {
+      double x = 0;
+      for (int i = 0; i < n; ++i) x += a[r][i] * prior[i] * a[c][i];
+      sm[r][c] = x;
+      inv[r][c] = r == c ? 1 : 0;
+    }
+  for (int c = 0; c < m; ++c) {
+    const double pivot = sm[c][c];
+    for (int k = 0; k < m; ++k) {
+      sm[c][k] /= pivot;
+      inv[c][k] /= pivot;
+    }
+    for (int r = 0; r < m; ++r) {
+      if (r == c) continue;
+      const double f = sm[r][c];
+      for (int k = 0; k < m; ++k) {
+        sm[r][k] -= f * sm[c][k];
+        inv[r][k] -= f * inv[c][k];
+      }
+    }
+  }
+  ConditionedGaussian g;
+  g.d = d;
+  // K = Σ Aᵀ S⁻¹ restricted to the 2d translational rows; C = Σ − K A Σ on them.
+  for (int i = 0; i < 2 * d; ++i)
+    for (int c = 0; c < m; ++c) {
+      double x = 0;
+      for (int r = 0; r < m; ++r) x += prior[i] * a[r][i] * inv[r][c];
+      g.gain[i][c] = x;
+    }
+  for (int i = 0; i < 2 * d; ++i)
+    for (int j = 0; j < 2 * d; ++j) {
+      double x = 0;
+      for (int r = 0; r < m; ++r) x += g.gain[i][r] * a[r][j] * prior[j];
+      g.cov[i][j] = (i == j ? prior[i] : 0) - x;
+    }
+  return g;
+}
+
+/// E[Y1Y2Y3Y4] for jointly Gaussian Y with means mu and covariances s (Isserlis with means).
+double quartic(const double* mu, const double (*s)[4]) {
+  return mu[0] * mu[1] * mu[2] * mu[3] + s[0][1] * mu[2] * mu[3] + s[0][2] * mu[1] * mu[3] + s[0][3] * mu[1] * mu[2] +
+         s[1][2] * mu[0] * mu[3] + s[1][3] * mu[0] * mu[2] + s[2][3] * mu[0] * mu[1] + s[0][1] * s[2][3] +
+         s[0][2] * s[1][3] + s[0][3] * s[1][2];
+}
+
+/// E[Y2(a):Y2(b)] = Σ_kl E[a_k b_k a_l b_l] − (1/d) Σ_kl E[a_k a_k b_l b_l]; a, b ∈ {c1, c2, c1'} given by
+/// their conditional means and their index into the covariance of (v1, v2) (c1' shares c1's).
+double y2_pair(int d, const std::array<double, 3>& mean_a, int base_a, const std::array<double, 3>& mean_b, int base_b,
+               const ConditionedGaussian& g) {
+  double cross = 0, trace = 0;
+  for (int k = 0; k < d; ++k)
+    for (int l = 0; l < d; ++l) {
+      const int idx1[4] = {base_a + k, base_b + k, base_a + l, base_b + l};
+      const double mu1[4] = {mean_a[k], mean_b[k], mean_a[l], mean_b[l]};
+      const int idx2[4] = {base_a + k, base_a + k, base_b + l, base_b + l};
+      const double mu2[4] = {mean_a[k], mean_a[k], mean_b[l], mean_b[l]};
+      double s1[4][4], s2[4][4];
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+          s1[i][j] = g.cov[idx1[i]][idx1[j]];
+          s2[i][j] = g.cov[idx2[i]][idx2[j]];
+        }
+      cross += quartic(mu1, s1);
+      trace += quartic(mu2, s2);
+    }
+  return cross - trace / d;
+}
+
 }  // namespace
+
+double rough_walton_shear_viscosity(int dimension, double alpha, double beta0, double kappa, double friction,
+                                    double temperature_ratio, int intervals) {
+  check(dimension, alpha, beta0, kappa, friction);
+  if (!(temperature_ratio > 0)) throw std::invalid_argument("temperature_ratio: must be > 0");
+  if (intervals < 2 || intervals % 2 != 0) throw std::invalid_argument("intervals: must be even and >= 2");
+  const int d = dimension;
+  const double tau = temperature_ratio / kappa, s = std::sqrt(1 + tau), eta_n = (1 + alpha) / 2;
+  const double eta0 = (1 + beta0) * kappa / (2 * (1 + kappa));
+  const double m = std::isinf(friction) ? friction : friction * (1 + alpha) / 2;
+  const double c = std::isinf(m) ? 0 : (m == 0 ? std::numeric_limits<double>::infinity() : eta0 / m);
+  const ConditionedGaussian g = condition(d, tau);
+  // The conditional L_η integrand at (u, G) with η_t fixed.
+  const auto integrand = [&](double u, double big_g) {
+    const double eta_t = (big_g == 0 || u >= c * big_g) ? eta0 : m * u / big_g;  // G = 0: head-on, sticking
+    std::array<double, 3> c1{}, c2{}, c1p{};
+    for (int k = 0; k < d; ++k) {
+      c1[k] = g.gain[k][0] * u + g.gain[k][1] * big_g;
+      c2[k] = g.gain[d + k][0] * u + g.gain[d + k][1] * big_g;
+      c1p[k] = c1[k] - (k == 0 ? eta_n * u : 0) - (k == 1 ? eta_t * big_g : 0);
+    }
+    return y2_pair(d, c1, 0, c1, 0, g) + y2_pair(d, c2, d, c1, 0, g) - y2_pair(d, c1, 0, c1p, 0, g) -
+           y2_pair(d, c2, d, c1p, 0, g);
+  };
+  const auto simpson = [&](double lo, double hi, const auto& f) {
+    if (!(hi > lo)) return 0.0;
+    const double h = (hi - lo) / intervals;
+    double sum = 0;
+    for (int k = 0; k <= intervals; ++k) {
+      const double w = (k == 0 || k == intervals) ? 1 : (k % 2 == 1 ? 4 : 2);
+      sum += w * f(lo + k * h);
+    }
+    return sum * h / 3;
+  };
+  const double upper = 12;
+  const auto over_u = [&](double big_g) {
+    const auto f = [&](double u) { return u * std::exp(-u * u / 2) * integrand(u, big_g); };
+    const double kink = big_g > 0 ? std::min(c * big_g, upper) : 0.0;
+    return simpson(0, kink, f) + simpson(kink, upper, f);
+  };
+  const double l_eta = simpson(0, upper, [&](double r) {
+    const double density = (d == 3 ? r : std::sqrt(2 / std::numbers::pi)) * std::exp(-r * r / 2);
+    return density * over_u(s * r);
+  });
+  const double zeta = rough_walton_rates(d, alpha, beta0, kappa, friction, temperature_ratio).translational;
+  return 1 / (l_eta / (d - 1) - zeta / 2);  // theory.md (19.13)
+}
 
 RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, double kappa, double friction,
                                     double temperature_ratio, int intervals) {
@@ -104,7 +254,7 @@ RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha
   RoughWaltonState out;
   const auto decoupled = [&]() {
     out.temperature_ratio = std::numeric_limits<double>::infinity();
-    out.cooling_rate = out.bulk_viscosity = out.cooling_rate_first_order = nan;
+    out.cooling_rate = out.bulk_viscosity = out.cooling_rate_first_order = out.shear_viscosity = nan;
     out.spin_decoupled = true;
     return out;
   };
@@ -149,6 +299,7 @@ RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha
                             (up.rotational - down.rotational) / (2 * h));
   out.bulk_viscosity = s.bulk_viscosity;
   out.cooling_rate_first_order = s.cooling_rate_first_order;
+  out.shear_viscosity = rough_walton_shear_viscosity(dimension, a, b, k, mu, theta);
   return out;
 }
 

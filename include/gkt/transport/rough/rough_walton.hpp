@@ -24,12 +24,22 @@ struct RoughWaltonRates {
 RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, double kappa, double friction,
                                     double temperature_ratio, int intervals = 4000);
 
+/// Returns the first-Sonine shear viscosity η* = η/η0(T_t) = 1/(L_η/(d − 1) − ζ*/2) (theory.md (19.13))
+/// of the Walton gas at θ (Maxwellians at T_t and θT_t), ranges as above. L_η is a collision average of
+/// quartic forms: conditioned on the normal relative velocity u and g_c,t (which fix η_t) the velocities
+/// are Gaussian, the quartic moments follow from Isserlis' theorem, and (u, |g_c,t|) are integrated by
+/// composite Simpson with the sticking–sliding kink u = (η0/M)|g_c,t| as a panel edge (`intervals`
+/// panels per piece; relative error ≈ 1e-8 with the default, h⁴; theory.md (19.23)).
+double rough_walton_shear_viscosity(int dimension, double alpha, double beta0, double kappa, double friction,
+                                    double temperature_ratio, int intervals = 400);
+
 /// The Walton HCS (Maxwellian) and its scalar response.
 struct RoughWaltonState {
   double temperature_ratio = 0;         ///< θ = T_r/T_t; +inf when the spin decouples (see below)
   double cooling_rate = 0;              ///< ζ* = ζ/ν0(T_t)
   double bulk_viscosity = 0;            ///< η_b/η0(T_t), theory.md (19.18)
   double cooling_rate_first_order = 0;  ///< ζ_U, theory.md (19.19)
+  double shear_viscosity = 0;           ///< η/η0(T_t) at first Sonine, theory.md (19.23)
   /// True when ζ_t = ζ_r has no finite root: μ_f = 0 or β0 = −1 (no torque), or friction too weak
   /// for the spin to keep up (θ grows without bound); then θ = +inf and the rest NaN.
   bool spin_decoupled = false;
