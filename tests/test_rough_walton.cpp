@@ -11,6 +11,7 @@
 #include "gkt/transport/rough/rough_bulk_viscosity.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_shear_viscosity.hpp"
+#include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "rough_monte_carlo.hpp"
 
@@ -192,5 +193,59 @@ TEST(RoughWalton, ShearViscosity) {
     const double l_quadrature = (c.d - 1) * (1 / eta + zeta / 2);
     std::printf("walton L_eta d=%d: quadrature %.5f MC %.5f +- %.5f (eta* %.5f)\n", c.d, l_quadrature, l_mc, err, eta);
     EXPECT_NEAR(l_quadrature, l_mc, 5 * err);
+  }
+}
+
+// κ*, μ* of the Walton gas: at μ_f = ∞ the conditioned-Gaussian quadrature of the sextic forms must give
+// the engine's exact first-Sonine κ*, μ* at the same θ (rough_thermal_conductivity_at).
+TEST(RoughWalton, ThermalConductivityConstantBetaLimit) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int d : {3, 2}) {
+    const double k = d == 3 ? 0.4 : 0.5;
+    const Rational kappa = d == 3 ? Rational(2, 5) : Rational(1, 2);
+    const auto exact = gkt::rough_thermal_conductivity_at(d, Rational(4, 5), Rational(3, 10), kappa, 1.3);
+    const auto w = gkt::rough_walton_thermal_conductivity(d, 0.8, 0.3, k, inf, 1.3);
+    EXPECT_NEAR(w.total, exact.total, 1e-9 * exact.total) << d;
+    EXPECT_NEAR(w.density_heat_total, exact.density_heat_total, 1e-9 * exact.density_heat_total) << d;
+  }
+  // Converged with finite friction (the kink as a panel edge): 8 against 16 panels.
+  const auto coarse = gkt::rough_walton_thermal_conductivity(3, 0.7, 1.0, 0.4, 0.3, 1.2);
+  const auto fine = gkt::rough_walton_thermal_conductivity(3, 0.7, 1.0, 0.4, 0.3, 1.2, 16);
+  EXPECT_NEAR(coarse.total, fine.total, 1e-9 * fine.total);
+  EXPECT_NEAR(coarse.density_heat_total, fine.density_heat_total, 1e-9 * fine.density_heat_total);
+}
+
+// The heat operator with sliding contacts against Monte Carlo over collisions (the spin enters through
+// ψ2 = c(ŵ² − 3/2), ŵ² = w²/τ): L_ij = ⟨ψ_j(1)·(ψ_i(1) − ψ_i(1'))⟩ + ⟨ψ_j(2)·(ψ_i(1) − ψ_i(1'))⟩.
+TEST(RoughWalton, HeatOperatorAgainstMonteCarlo) {
+  const double alpha = 0.8, beta0 = 1.0, kappa = 0.4, friction = 0.15, theta = 1.4, tau = theta / kappa;
+  gkt::test::RoughCollisionSampler sampler(3, alpha, beta0, kappa, theta, 23, friction);
+  const auto psi = [&](int i, const gkt::test::Vec3& v, const gkt::test::Vec3& w) {
+    const double f = i == 1 ? gkt::test::dot3(v, v) - 2.5 : gkt::test::dot3(w, w) / tau - 1.5;
+    return gkt::test::Vec3{v[0] * f, v[1] * f, v[2] * f};
+  };
+  const int n = 400000;
+  double w_sum = 0;
+  std::array<double, 4> sum{}, sq{};
+  for (int s = 0; s < n; ++s) {
+    const auto x = sampler.draw();
+    w_sum += x.weight;
+    for (int i = 1; i <= 2; ++i)
+      for (int j = 1; j <= 2; ++j) {
+        const auto a1 = psi(j, x.w[0], x.w[2]), a2 = psi(j, x.w[1], x.w[3]);
+        const auto b = psi(i, x.w[0], x.w[2]), bp = psi(i, x.w[4], x.w[6]);
+        const gkt::test::Vec3 diff{b[0] - bp[0], b[1] - bp[1], b[2] - bp[2]};
+        const double value = x.weight * (gkt::test::dot3(a1, diff) + gkt::test::dot3(a2, diff));
+        const auto e = static_cast<std::size_t>(2 * (i - 1) + (j - 1));
+        sum[e] += value;
+        sq[e] += value * value;
+      }
+  }
+  const auto l = gkt::rough_walton_heat_operator(3, alpha, beta0, kappa, friction, theta);
+  for (std::size_t e = 0; e < 4; ++e) {
+    const double mc = sum[e] / w_sum, err = std::sqrt((sq[e] / n - (sum[e] / n) * (sum[e] / n)) / n) / (w_sum / n);
+    const double q = l[e / 2][e % 2];
+    std::printf("walton heat L%zu%zu: quadrature %.5f MC %.5f +- %.5f\n", e / 2 + 1, e % 2 + 1, q, mc, err);
+    EXPECT_NEAR(q, mc, 5 * err);
   }
 }

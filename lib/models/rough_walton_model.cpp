@@ -1,7 +1,7 @@
 // The "rough-walton" model: rough inelastic hard spheres (d = 3) or disks (d = 2) with Coulomb
 // friction in Walton's form, β(γ) = min{β0, −1 + ((1+κ)/κ)(1+α) μ_f cot γ}
-// (rough_walton.hpp; docs/theory.md §19.10): the Maxwellian HCS (θ, ζ*), the first-Sonine shear
-// viscosity and the scalar Navier–Stokes response (bulk viscosity, first-order cooling rate). μ_f → ∞ is the "rough"
+// (rough_walton.hpp; docs/theory.md §19.10): the Maxwellian HCS (θ, ζ*), the first-Sonine η*, κ*, μ*
+// and the scalar Navier–Stokes response (bulk viscosity, first-order cooling rate). μ_f → ∞ is the "rough"
 // model.
 #include <cmath>
 #include <stdexcept>
@@ -19,11 +19,16 @@ class RoughWaltonModel final : public TransportModel {
   [[nodiscard]] std::string description() const override {
     return "rough inelastic hard spheres (d = 3) or disks (d = 2) with Coulomb friction (Walton): "
            "beta = min{beta0, -1 + ((1+kappa)/kappa)(1+alpha) friction cot(impact angle)}; Maxwellian "
-           "homogeneous cooling state (temperature ratio, cooling rate), first-Sonine shear and bulk viscosity "
-           "and first-order cooling rate";
+           "homogeneous cooling state (temperature ratio, cooling rate); first-Sonine shear and bulk viscosity, "
+           "thermal conductivity, density heat coefficient and first-order cooling rate";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"rotational_temperature_ratio", "cooling_rate", "shear_viscosity", "bulk_viscosity",
+    return {"rotational_temperature_ratio",
+            "cooling_rate",
+            "shear_viscosity",
+            "bulk_viscosity",
+            "thermal_conductivity",
+            "density_heat_coefficient",
             "cooling_rate_first_order"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -101,6 +106,10 @@ class RoughWaltonModel final : public TransportModel {
         x = s.cooling_rate;
       } else if (name == "shear_viscosity") {
         x = s.shear_viscosity;  // theory.md (19.23)
+      } else if (name == "thermal_conductivity") {
+        x = s.thermal_conductivity;  // theory.md (19.15) with (19.23)
+      } else if (name == "density_heat_coefficient") {
+        x = s.density_heat_coefficient;  // theory.md (19.16)
       } else if (name == "bulk_viscosity") {
         x = s.bulk_viscosity;  // theory.md (19.18)
       } else if (name == "cooling_rate_first_order") {

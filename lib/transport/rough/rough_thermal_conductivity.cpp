@@ -51,15 +51,23 @@ RoughThermalConductivity solve(int d, const Rational& alpha, const Rational& bet
                                double zeta_star, bool spin_decoupled) {
   const auto p = rough_parameters_symbolic_temperature(d, alpha, beta, kappa);
   const double tau = spin_decoupled ? 1.0 : theta / kappa.to_double();
+  const RoughHeatOperator l{{{operator_element(p, 1, 1, tau, d), operator_element(p, 1, 2, tau, d)},
+                             {operator_element(p, 2, 1, tau, d), operator_element(p, 2, 2, tau, d)}}};
+  return rough_heat_flux_response(d, l, spin_decoupled ? std::numeric_limits<double>::infinity() : theta, zeta_star);
+}
+
+}  // namespace
+
+RoughThermalConductivity rough_heat_flux_response(int d, const RoughHeatOperator& l, double theta, double zeta_star) {
+  if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3");
   // (𝓛 − 2ζ)𝔄 = ψ1 + ψ2 (theory.md (19.15)): M = L − 2z diag(⟨ψ1²⟩, ⟨ψ2²⟩), z = (4/(d+2))ζ*,
   // ⟨ψ1²⟩ = d(d+2)/4, ⟨ψ2²⟩ = d d_r/4 (15/4, 9/4 for spheres; 2, 1/2 for disks).
   const double dr = d == 3 ? 3.0 : 1.0;
   const double z = 4.0 / (d + 2) * zeta_star, n1 = d * (d + 2) / 4.0, n2 = d * dr / 4.0;
-  const double m11 = operator_element(p, 1, 1, tau, d) - 2 * z * n1, m12 = operator_element(p, 1, 2, tau, d),
-               m21 = operator_element(p, 2, 1, tau, d), m22 = operator_element(p, 2, 2, tau, d) - 2 * z * n2;
+  const double m11 = l[0][0] - 2 * z * n1, m12 = l[0][1], m21 = l[1][0], m22 = l[1][1] - 2 * z * n2;
   RoughThermalConductivity out;
   const double reference = n1 * n1 / (d - 1);  // the smooth elastic flux n1²/L11, L11 = d − 1
-  if (spin_decoupled) {                        // β = −1: m12 = m21 = 0, the translational channel alone
+  if (std::isinf(theta)) {                     // β = −1: m12 = m21 = 0, the translational channel alone
     const double x1 = n1 / m11;
     out.translational = n1 * x1 / reference;
     out.density_heat_translational = n1 * (z * n1 * x1 / (m11 + 0.5 * z * n1)) / reference;
@@ -71,7 +79,7 @@ RoughThermalConductivity solve(int d, const Rational& alpha, const Rational& bet
     return std::array<double, 2>{(a22 * r1 - a12 * r2) / det, (a11 * r2 - a21 * r1) / det};
   };
   const auto x = solve2(m11, m12, m21, m22, n1, n2);  // 𝔄 = x1 ψ1 + x2 ψ2
-  // Flux ⟨c(c² + θŵ²)·𝔄⟩ = n1 x1 + θ n2 x2, against the smooth elastic n1²/2.
+  // Flux ⟨c(c² + θŵ²)·𝔄⟩ = n1 x1 + θ n2 x2, against the smooth elastic n1²/(d − 1).
   out.translational = n1 * x[0] / reference;
   out.total = (n1 * x[0] + theta * n2 * x[1]) / reference;
   // (𝓛 − (3/2)ζ)𝔅 = ζ𝔄: M + (1/2)z diag(n1, n2) on the left, z diag(n1, n2) x on the right.
@@ -80,8 +88,6 @@ RoughThermalConductivity solve(int d, const Rational& alpha, const Rational& bet
   out.density_heat_total = (n1 * y[0] + theta * n2 * y[1]) / reference;
   return out;
 }
-
-}  // namespace
 
 RoughThermalConductivity rough_thermal_conductivity_at(int dimension, const Rational& alpha, const Rational& beta,
                                                        const Rational& kappa, double temperature_ratio) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gkt/transport/rough/rough_bulk_viscosity.hpp"
+#include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 
 namespace gkt {
 
@@ -83,11 +84,11 @@ Averages averages(int d, double eta0, double m, double s, int intervals) {
 /// The Gaussian of the pre-collisional velocities X = (v1, v2, w1, w2) (velocities in units of
 /// √(2T_t/m); variance 1/2 per translational and τ/2 per spin component) conditioned on the normal
 /// relative velocity u and the tangential relative contact velocity g_c,t = (G, 0) (σ̂ = e0):
-/// mean K y (y = (u, G, 0)) and covariance C, of which only the v1, v2 entries are kept.
+/// mean K y (y = (u, G, 0)) and covariance C. Variables: v1 (d), v2 (d), w1, w2 (3 each; 1 each for disks).
 struct ConditionedGaussian {
-  int d = 3;
-  std::array<std::array<double, 3>, 6> gain{};  // rows v1_0..v1_{d−1}, v2_0..; columns y
-  std::array<std::array<double, 6>, 6> cov{};   // v1, v2 components
+  int d = 3, n = 12;
+  std::array<std::array<double, 3>, 12> gain{};  // rows: variables; columns: y
+  std::array<std::array<double, 12>, 12> cov{};
 };
 
 ConditionedGaussian condition(int d, double tau) {
@@ -134,15 +135,16 @@ ConditionedGaussian condition(int d, double tau) {
   }
   ConditionedGaussian g;
   g.d = d;
-  // K = Σ Aᵀ S⁻¹ restricted to the 2d translational rows; C = Σ − K A Σ on them.
-  for (int i = 0; i < 2 * d; ++i)
+  // K = Σ Aᵀ S⁻¹; C = Σ − K A Σ.
+  g.n = n;
+  for (int i = 0; i < n; ++i)
     for (int c = 0; c < m; ++c) {
       double x = 0;
       for (int r = 0; r < m; ++r) x += prior[i] * a[r][i] * inv[r][c];
       g.gain[i][c] = x;
     }
-  for (int i = 0; i < 2 * d; ++i)
-    for (int j = 0; j < 2 * d; ++j) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
       double x = 0;
       for (int r = 0; r < m; ++r) x += g.gain[i][r] * a[r][j] * prior[j];
       g.cov[i][j] = (i == j ? prior[i] : 0) - x;
@@ -180,7 +182,183 @@ double y2_pair(int d, const std::array<double, 3>& mean_a, int base_a, const std
   return cross - trace / d;
 }
 
+/// E[Π_i X_{idx_i}] for the conditioned Gaussian with the given means (Isserlis' theorem with means,
+/// by recursion on the first factor: E[Y1 R] = μ1 E[R] + Σ_j C_1j E[R without Y_j]); count ≤ 6.
+double gaussian_moment(const int* idx, const double* mean, int count, const ConditionedGaussian& g) {
+  if (count == 0) return 1;
+  int rest_idx[6] = {};
+  double rest_mean[6] = {};
+  for (int i = 1; i < count; ++i) {
+    rest_idx[i - 1] = idx[i];
+    rest_mean[i - 1] = mean[i];
+  }
+  double value = mean[0] * gaussian_moment(rest_idx, rest_mean, count - 1, g);
+  for (int j = 1; j < count; ++j) {
+    const double c = g.cov[static_cast<std::size_t>(idx[0])][static_cast<std::size_t>(idx[j])];
+    if (c == 0) continue;
+    int sub_idx[6] = {};
+    double sub_mean[6] = {};
+    int k = 0;
+    for (int i = 1; i < count; ++i) {
+      if (i == j) continue;
+      sub_idx[k] = idx[i];
+      sub_mean[k++] = mean[i];
+    }
+    value += c * gaussian_moment(sub_idx, sub_mean, count - 2, g);
+  }
+  return value;
+}
+
+/// One particle's velocities in the conditioned Gaussian: the index of its first translational and spin
+/// component and their conditional means (post-collisional: shifted by the collision at (u, G)).
+struct Particle {
+  int v = 0, w = 0;
+  std::array<double, 3> v_mean{}, w_mean{};
+};
+
+/// E[ψ_a(X)·ψ_b(Y)], ψ1 = c(c² − (d+2)/2), ψ2 = c(ŵ² − d_r/2), ŵ² = w²/τ (theory.md (19.15)).
+double heat_pair(const Particle& x, int a, const Particle& y, int b, int d, double tau, const ConditionedGaussian& g) {
+  const int dr = d == 3 ? 3 : 1;
+  const double ca = a == 1 ? (d + 2) / 2.0 : dr / 2.0, cb = b == 1 ? (d + 2) / 2.0 : dr / 2.0;
+  const double sa = a == 1 ? 1 : 1 / tau, sb = b == 1 ? 1 : 1 / tau;
+  const int la = a == 1 ? d : dr, lb = b == 1 ? d : dr;
+  const auto sq = [&](const Particle& p, int kind, int l, int& index, double& mean) {
+    index = kind == 1 ? p.v + l : p.w + l;
+    mean = kind == 1 ? p.v_mean[static_cast<std::size_t>(l)] : p.w_mean[static_cast<std::size_t>(l)];
+  };
+  double total = 0;
+  for (int k = 0; k < d; ++k) {
+    const int xk = x.v + k, yk = y.v + k;
+    const double mxk = x.v_mean[static_cast<std::size_t>(k)], myk = y.v_mean[static_cast<std::size_t>(k)];
+    {
+      const int idx[2] = {xk, yk};
+      const double mu[2] = {mxk, myk};
+      total += ca * cb * gaussian_moment(idx, mu, 2, g);
+    }
+    for (int l = 0; l < la; ++l) {
+      int i = 0;
+      double m = 0;
+      sq(x, a, l, i, m);
+      const int idx[4] = {xk, yk, i, i};
+      const double mu[4] = {mxk, myk, m, m};
+      total -= cb * sa * gaussian_moment(idx, mu, 4, g);
+    }
+    for (int l = 0; l < lb; ++l) {
+      int i = 0;
+      double m = 0;
+      sq(y, b, l, i, m);
+      const int idx[4] = {xk, yk, i, i};
+      const double mu[4] = {mxk, myk, m, m};
+      total -= ca * sb * gaussian_moment(idx, mu, 4, g);
+    }
+    for (int l = 0; l < la; ++l)
+      for (int q = 0; q < lb; ++q) {
+        int i = 0, j = 0;
+        double mi = 0, mj = 0;
+        sq(x, a, l, i, mi);
+        sq(y, b, q, j, mj);
+        const int idx[6] = {xk, yk, i, i, j, j};
+        const double mu[6] = {mxk, myk, mi, mi, mj, mj};
+        total += sa * sb * gaussian_moment(idx, mu, 6, g);
+      }
+  }
+  return total;
+}
+
+/// Composite 8-point Gauss–Legendre rule on [lo, hi] with `panels` panels, for f returning N values.
+template <std::size_t N, class F>
+std::array<double, N> gauss_legendre(double lo, double hi, int panels, const F& f) {
+  static constexpr std::array<double, 4> x{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                           0.9602898564975363};
+  static constexpr std::array<double, 4> w{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                           0.1012285362903763};
+  std::array<double, N> sum{};
+  if (!(hi > lo)) return sum;
+  const double h = (hi - lo) / panels;
+  for (int p = 0; p < panels; ++p) {
+    const double mid = lo + (p + 0.5) * h;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::array<double, N> a = f(mid - x[i] * h / 2), b = f(mid + x[i] * h / 2);
+      for (std::size_t k = 0; k < N; ++k) sum[k] += w[i] * (a[k] + b[k]);
+    }
+  }
+  for (auto& v : sum) v *= h / 2;
+  return sum;
+}
+
 }  // namespace
+
+RoughHeatOperator rough_walton_heat_operator(int dimension, double alpha, double beta0, double kappa, double friction,
+                                             double temperature_ratio, int panels) {
+  check(dimension, alpha, beta0, kappa, friction);
+  if (!(temperature_ratio > 0)) throw std::invalid_argument("temperature_ratio: must be > 0");
+  if (panels < 1) throw std::invalid_argument("panels: must be >= 1");
+  const int d = dimension, dr = d == 3 ? 3 : 1;
+  const double tau = temperature_ratio / kappa, s = std::sqrt(1 + tau), eta_n = (1 + alpha) / 2;
+  const double eta0 = (1 + beta0) * kappa / (2 * (1 + kappa));
+  const double m = std::isinf(friction) ? friction : friction * (1 + alpha) / 2;
+  const double c = std::isinf(m) ? 0 : (m == 0 ? std::numeric_limits<double>::infinity() : eta0 / m);
+  const ConditionedGaussian g = condition(d, tau);
+  const auto integrand = [&](double u, double big_g) {
+    const double eta_t = (big_g == 0 || u >= c * big_g) ? eta0 : m * u / big_g;
+    const auto mean = [&](int i) {
+      return g.gain[static_cast<std::size_t>(i)][0] * u + g.gain[static_cast<std::size_t>(i)][1] * big_g;
+    };
+    Particle p1{0, 2 * d, {}, {}}, p2{d, 2 * d + dr, {}, {}};
+    for (int k = 0; k < d; ++k) {
+      p1.v_mean[static_cast<std::size_t>(k)] = mean(k);
+      p2.v_mean[static_cast<std::size_t>(k)] = mean(d + k);
+    }
+    for (int k = 0; k < dr; ++k) {
+      p1.w_mean[static_cast<std::size_t>(k)] = mean(2 * d + k);
+      p2.w_mean[static_cast<std::size_t>(k)] = mean(2 * d + dr + k);
+    }
+    // 1': v1 − η_n u σ̂ − η_t g_c,t and w1 − (η_t/κ) σ̂ × g_c,t (σ̂ × G e1 = G e2 for spheres; disks: the scalar).
+    Particle post = p1;
+    post.v_mean[0] -= eta_n * u;
+    post.v_mean[1] -= eta_t * big_g;
+    post.w_mean[d == 3 ? 2 : 0] -= eta_t / kappa * big_g;
+    std::array<double, 4> l{};
+    for (int i = 1; i <= 2; ++i)
+      for (int j = 1; j <= 2; ++j)
+        l[static_cast<std::size_t>(2 * (i - 1) + (j - 1))] =
+            heat_pair(p1, j, p1, i, d, tau, g) - heat_pair(p1, j, post, i, d, tau, g) +
+            heat_pair(p2, j, p1, i, d, tau, g) - heat_pair(p2, j, post, i, d, tau, g);
+    return l;
+  };
+  const double upper = 12;
+  const auto over_u = [&](double big_g) {
+    const auto f = [&](double u) {
+      std::array<double, 4> v = integrand(u, big_g);
+      for (auto& x : v) x *= u * std::exp(-u * u / 2);
+      return v;
+    };
+    const double kink = big_g > 0 ? std::min(c * big_g, upper) : 0.0;
+    std::array<double, 4> v = gauss_legendre<4>(0, kink, panels, f);
+    const std::array<double, 4> rest = gauss_legendre<4>(kink, upper, panels, f);
+    for (std::size_t k = 0; k < 4; ++k) v[k] += rest[k];
+    return v;
+  };
+  const auto outer = [&](double r) {
+    const double density = (d == 3 ? r : std::sqrt(2 / std::numbers::pi)) * std::exp(-r * r / 2);
+    std::array<double, 4> v = over_u(s * r);
+    for (auto& x : v) x *= density;
+    return v;
+  };
+  // The kink u = cG leaves the u-range at r = upper/(cs): a panel edge there too.
+  const double edge = c > 0 && std::isfinite(c) ? std::min(upper / (c * s), upper) : upper;
+  const std::array<double, 4> a = gauss_legendre<4>(0, edge, panels, outer),
+                              b = gauss_legendre<4>(edge, upper, panels, outer);
+  return RoughHeatOperator{{{a[0] + b[0], a[1] + b[1]}, {a[2] + b[2], a[3] + b[3]}}};
+}
+
+RoughThermalConductivity rough_walton_thermal_conductivity(int dimension, double alpha, double beta0, double kappa,
+                                                           double friction, double temperature_ratio, int panels) {
+  const RoughHeatOperator l =
+      rough_walton_heat_operator(dimension, alpha, beta0, kappa, friction, temperature_ratio, panels);
+  const double zeta = rough_walton_rates(dimension, alpha, beta0, kappa, friction, temperature_ratio).translational;
+  return rough_heat_flux_response(dimension, l, temperature_ratio, zeta);
+}
 
 double rough_walton_shear_viscosity(int dimension, double alpha, double beta0, double kappa, double friction,
                                     double temperature_ratio, int intervals) {
@@ -221,10 +399,13 @@ double rough_walton_shear_viscosity(int dimension, double alpha, double beta0, d
     const double kink = big_g > 0 ? std::min(c * big_g, upper) : 0.0;
     return simpson(0, kink, f) + simpson(kink, upper, f);
   };
-  const double l_eta = simpson(0, upper, [&](double r) {
+  const auto outer = [&](double r) {
     const double density = (d == 3 ? r : std::sqrt(2 / std::numbers::pi)) * std::exp(-r * r / 2);
     return density * over_u(s * r);
-  });
+  };
+  // The kink u = cG leaves the u-range at r = upper/(cs): a panel edge there too.
+  const double edge = c > 0 && std::isfinite(c) ? std::min(upper / (c * s), upper) : upper;
+  const double l_eta = simpson(0, edge, outer) + simpson(edge, upper, outer);
   const double zeta = rough_walton_rates(d, alpha, beta0, kappa, friction, temperature_ratio).translational;
   return 1 / (l_eta / (d - 1) - zeta / 2);  // theory.md (19.13)
 }
@@ -255,6 +436,7 @@ RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha
   const auto decoupled = [&]() {
     out.temperature_ratio = std::numeric_limits<double>::infinity();
     out.cooling_rate = out.bulk_viscosity = out.cooling_rate_first_order = out.shear_viscosity = nan;
+    out.thermal_conductivity = out.density_heat_coefficient = nan;
     out.spin_decoupled = true;
     return out;
   };
@@ -300,6 +482,9 @@ RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha
   out.bulk_viscosity = s.bulk_viscosity;
   out.cooling_rate_first_order = s.cooling_rate_first_order;
   out.shear_viscosity = rough_walton_shear_viscosity(dimension, a, b, k, mu, theta);
+  const RoughThermalConductivity heat = rough_walton_thermal_conductivity(dimension, a, b, k, mu, theta);
+  out.thermal_conductivity = heat.total;
+  out.density_heat_coefficient = heat.density_heat_total;
   return out;
 }
 

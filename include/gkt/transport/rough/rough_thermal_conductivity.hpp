@@ -4,6 +4,8 @@
 // total energy flux q = −κ∇T_t − μ∇n; μ from (𝓛 − (3/2)ζ)𝔅 = ζ𝔄.
 #pragma once
 
+#include <array>
+
 #include "gkt/algebra/rational.hpp"
 
 namespace gkt {
@@ -16,6 +18,16 @@ struct RoughThermalConductivity {
   double density_heat_total = 0;
   double density_heat_translational = 0;  ///< its translational flux alone
 };
+
+/// The 2×2 first-Sonine heat operator L_ij = ⟨ψ_i, 𝓛ψ_j⟩ (ψ1 = c(c² − (d+2)/2), ψ2 = c(ŵ² − d_r/2); the
+/// normalisation of theory.md (5.2)).
+using RoughHeatOperator = std::array<std::array<double, 2>, 2>;
+
+/// Returns κ*, μ* (reduction as above) from L at θ and ζ* = ζ/ν0(T_t) (theory.md (19.15)–(19.16)), for
+/// any collision rule with Maxwellian weights (constant β or Coulomb friction); θ = +inf: the spin
+/// decoupled (β = −1), translational channel only.
+RoughThermalConductivity rough_heat_flux_response(int dimension, const RoughHeatOperator& l, double theta,
+                                                  double zeta_star);
 
 /// Returns κ* for spheres with α ∈ (0, 1], β ∈ (−1, 1], κ ∈ (0, 1] at the Maxwellian HCS θ. At
 /// β = −1 the rotational flux of the non-cooling spin has no HCS value: total = NaN, translational

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "gkt/algebra/rational.hpp"
+#include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 
 namespace gkt {
 
@@ -33,6 +34,18 @@ RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, d
 double rough_walton_shear_viscosity(int dimension, double alpha, double beta0, double kappa, double friction,
                                     double temperature_ratio, int intervals = 400);
 
+/// Returns the first-Sonine heat operator L_ij = ⟨ψ_i, 𝓛ψ_j⟩ of the Walton gas at θ (as
+/// rough_thermal_conductivity.hpp; sextic forms by Isserlis' theorem on the conditioned Gaussian of
+/// (19.23), (u, |g_c,t|) by composite 8-point Gauss–Legendre, `panels` panels per piece, the
+/// sticking–sliding kink a panel edge; relative error ≈ 1e-10 with the default).
+RoughHeatOperator rough_walton_heat_operator(int dimension, double alpha, double beta0, double kappa, double friction,
+                                             double temperature_ratio, int panels = 8);
+
+/// Returns κ*, μ* of the Walton gas at θ (theory.md (19.15)–(19.16) with the operator above and the
+/// Maxwellian ζ* of rough_walton_rates).
+RoughThermalConductivity rough_walton_thermal_conductivity(int dimension, double alpha, double beta0, double kappa,
+                                                           double friction, double temperature_ratio, int panels = 8);
+
 /// The Walton HCS (Maxwellian) and its scalar response.
 struct RoughWaltonState {
   double temperature_ratio = 0;         ///< θ = T_r/T_t; +inf when the spin decouples (see below)
@@ -40,6 +53,8 @@ struct RoughWaltonState {
   double bulk_viscosity = 0;            ///< η_b/η0(T_t), theory.md (19.18)
   double cooling_rate_first_order = 0;  ///< ζ_U, theory.md (19.19)
   double shear_viscosity = 0;           ///< η/η0(T_t) at first Sonine, theory.md (19.23)
+  double thermal_conductivity = 0;      ///< κ/κ0(T_t), total energy flux (theory.md (19.15))
+  double density_heat_coefficient = 0;  ///< nμ/(T_tκ0(T_t)), q = −κ∇T_t − μ∇n (theory.md (19.16))
   /// True when ζ_t = ζ_r has no finite root: μ_f = 0 or β0 = −1 (no torque), or friction too weak
   /// for the spin to keep up (θ grows without bound); then θ = +inf and the rest NaN.
   bool spin_decoupled = false;
