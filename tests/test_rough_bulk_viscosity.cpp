@@ -7,7 +7,10 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
+#include "dsmc_rough.hpp"
 #include "gkt/transport/rough/rough_bulk_viscosity.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_thermal_conductivity.hpp"
@@ -152,4 +155,34 @@ TEST(RoughThermalConductivity, DisksSmoothLimitAndSpheresOverload) {
   const auto pidduck = gkt::rough_thermal_conductivity_at(2, Rational(1), Rational(1), Rational(1, 2), 1.0);
   EXPECT_NEAR(pidduck.density_heat_total, 0, 1e-14);
   EXPECT_GT(pidduck.total, pidduck.translational);
+}
+
+// DSMC of a uniformly dilated gas (tests/dsmc_rough.hpp with ∇·u = ±ε ν0(T_t), ε = 0.05, 3D, κ = 2/5):
+// with the dilatation slaved to ν0 the ratio settles where Γ* δ = (2/d) ε, δ = ln(θ_ε/θ_0), so the DSMC
+// measures the relaxation rate Γ* of (19.17) — the kinetic input of η_b and ζ_U — including everything the
+// Maxwellian approximation leaves out. Central difference ±ε removes the O(ε²) term; the same seed for
+// ±ε (correlated runs) and batches of 5 collisions per particle (longer than the relaxation time 1/Γ*).
+TEST(RoughBulkViscosity, RelaxationRateAgainstDsmc) {
+  struct Case {
+    long a10, b10;
+  };
+  for (const Case c : {Case{9, 5}, Case{7, 10}, Case{7, 0}, Case{5, 5}}) {
+    const double alpha = c.a10 / 10.0, beta = c.b10 / 10.0, kappa = 0.4, eps = 0.05;
+    const double inf = std::numeric_limits<double>::infinity();
+    const auto run = [&](double e) {
+      return gkt::test::run_rough_hcs_dsmc(3, alpha, beta, kappa, 1.0, 4000, 20, 60, 5, 5, inf, e);
+    };
+    const auto plus = run(eps), minus = run(-eps), zero = run(0);
+    const double delta = (std::log(plus.theta) - std::log(minus.theta)) / 2;
+    const double delta_error = 0.5 * std::hypot(plus.theta_error / plus.theta, minus.theta_error / minus.theta);
+    const double measured = 2.0 / 3 * eps / delta, measured_error = measured * delta_error / delta;
+    // (19.17) at the DSMC's own θ, and the library's at the Maxwellian θ.
+    const double eta = (1 + beta) * kappa / (2 * (1 + kappa)), theta = zero.theta;
+    const double maxwellian = 1.25 * 4 * eta * eta / kappa * (1 / (3 * theta) + theta / 3);
+    const auto s = gkt::rough_bulk_viscosity(3, Rational(c.a10, 10), Rational(c.b10, 10), Rational(2, 5));
+    std::printf(
+        "Gamma* alpha=%.1f beta=%.1f: DSMC %.4f +- %.4f, (19.17) at DSMC theta %.4f, at Maxwellian theta %.4f\n", alpha,
+        beta, measured, measured_error, maxwellian, s.relaxation_rate);
+    EXPECT_NEAR(maxwellian, measured, 0.1 * measured + 3 * measured_error);
+  }
 }
