@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gsl/gsl_randist.h>
@@ -25,8 +26,9 @@ struct RoughHcsSample {
 };
 
 inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, double kappa, double theta_start,
-                                         int particles, double relax, int batches, double per_batch,
-                                         unsigned long seed) {
+                                         int particles, double relax, int batches, double per_batch, unsigned long seed,
+                                         double friction = std::numeric_limits<double>::infinity(),
+                                         double dilatation = 0) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, seed);
   const int dr = d == 3 ? 3 : 1;
@@ -36,7 +38,20 @@ inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, doubl
     for (int k = 3 - dr; k < 3; ++k) w[p][k] = gsl_ran_gaussian(rng, std::sqrt(theta_start / (2 * kappa)));
   }
   double vmax = 0;
+  // Uniform dilatation ∇·u = ε ν0(T_t) (3D; ε = `dilatation`): peculiar velocities shrink as
+  // dV/dt = −(∇·u/d)V, the spin is untouched. One accepted collision advances ν0 t by (4/5)(2/N)
+  // (collision frequency per particle 4nσ²√(πT/m) = (5/4)ν0); applied to v before every rescaling.
+  long pending = 0;
+  auto dilate = [&]() {
+    if (dilatation != 0 && pending > 0) {
+      const double shrink = std::exp(-dilatation / d * 1.6 * static_cast<double>(pending) / particles);
+      for (auto& p : v)
+        for (int k = 0; k < d; ++k) p[k] *= shrink;
+    }
+    pending = 0;
+  };
   auto rescale = [&]() {
+    dilate();
     Vec3 mean{0, 0, 0};
     for (const auto& p : v)
       for (int k = 0; k < d; ++k) mean[k] += p[k] / particles;
@@ -74,13 +89,15 @@ inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, doubl
       c.w[1] = v[j];
       c.w[2] = w[i];
       c.w[3] = w[j];
-      apply_rough_rule(c, sigma, alpha, beta, kappa);
+      apply_rough_rule(c, sigma, alpha, walton_beta(c, sigma, alpha, beta, kappa, friction), kappa);
       v[i] = c.w[4];
       v[j] = c.w[5];
       w[i] = c.w[6];
       w[j] = c.w[7];
       vmax = std::max({vmax, std::sqrt(dot3(v[i], v[i])), std::sqrt(dot3(v[j], v[j]))});
       ++accepted;
+      // in small steps (every N/100 collisions), so that no sawtooth phase biases the batch means
+      if (dilatation != 0 && ++pending * 100 >= particles) dilate();
       if (++since_rescale == particles) {
         rescale();
         since_rescale = 0;

@@ -6,8 +6,10 @@
 //   v1' = v1 + J/m, v2' = v2 − J/m, w_k' = w_k + (1/κ) σ̂ × J/m  (disks: z component).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
@@ -49,14 +51,33 @@ inline void apply_rough_rule(RoughCollision& c, const Vec3& sigma, double alpha,
   c.weight = u > 0 ? u : 0;
 }
 
-/// Draws collisions: v ~ exp(−v²), w ~ exp(−(κ/θ) w²) (θ = T_r/T_t), σ̂ uniform.
+/// Walton's tangential restitution for this pre-collisional pair (docs/theory.md §19.10):
+/// β(γ) = min{β0, −1 + ((1+κ)/κ)(1+α) μ_f cot γ}, cot γ = (σ̂·g_c)/|g_c,t|; μ_f = inf gives β0.
+inline double walton_beta(const RoughCollision& c, const Vec3& sigma, double alpha, double beta0, double kappa,
+                          double friction) {
+  if (std::isinf(friction)) return beta0;
+  const Vec3 spin_sum{c.w[2][0] + c.w[3][0], c.w[2][1] + c.w[3][1], c.w[2][2] + c.w[3][2]};
+  const Vec3 rim = cross(spin_sum, sigma);
+  Vec3 gc{};
+  for (int k = 0; k < 3; ++k) gc[k] = c.w[0][k] - c.w[1][k] + rim[k];
+  const double u = dot3(sigma, gc);
+  double t2 = 0;
+  for (int k = 0; k < 3; ++k) t2 += (gc[k] - u * sigma[k]) * (gc[k] - u * sigma[k]);
+  if (t2 == 0) return beta0;
+  return std::min(beta0, -1 + (1 + kappa) / kappa * (1 + alpha) * friction * u / std::sqrt(t2));
+}
+
+/// Draws collisions: v ~ exp(−v²), w ~ exp(−(κ/θ) w²) (θ = T_r/T_t), σ̂ uniform; with a finite
+/// friction the tangential restitution of each collision is walton_beta(…, beta, …, friction).
 class RoughCollisionSampler {
  public:
-  RoughCollisionSampler(int d, double alpha, double beta, double kappa, double theta, unsigned long seed)
+  RoughCollisionSampler(int d, double alpha, double beta, double kappa, double theta, unsigned long seed,
+                        double friction = std::numeric_limits<double>::infinity())
       : d_(d),
         alpha_(alpha),
         beta_(beta),
         kappa_(kappa),
+        friction_(friction),
         spin_sd_(std::sqrt(theta / (2 * kappa))),
         rng_(gsl_rng_alloc(gsl_rng_mt19937)) {
     gsl_rng_set(rng_, seed);
@@ -79,13 +100,13 @@ class RoughCollisionSampler {
     }
     const double norm = std::sqrt(dot3(n, n));
     for (auto& x : n) x /= norm;
-    apply_rough_rule(c, n, alpha_, beta_, kappa_);
+    apply_rough_rule(c, n, alpha_, walton_beta(c, n, alpha_, beta_, kappa_, friction_), kappa_);
     return c;
   }
 
  private:
   int d_;
-  double alpha_, beta_, kappa_, spin_sd_;
+  double alpha_, beta_, kappa_, friction_, spin_sd_;
   gsl_rng* rng_;
 };
 

@@ -535,9 +535,43 @@ TEST(CliRough, SmoothLimitAndBadInput) {
            {"alpha=0", "alpha: must be a number in (0, 1], got 0"},
            {"dimension=4", "dimension: must be 2 or 3, got 4"},
            {"order=2", "order: must be exactly 1, got 2"},
-           {"dimension=2", "coefficients: thermal_conductivity of the rough model needs dimension = 3"},
+           {"dimension=2", "coefficients: orientation_correlation needs dimension = 3"},
            {"'hcs=\"nonlinear\"'", "hcs: must be one of"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
+    EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+}
+
+// The rough-walton model (theory.md §19.10): friction = 1e6 reproduces the rough model with beta = beta0
+// (Maxwellian), and bad input is refused with one line.
+TEST(CliRoughWalton, ConstantBetaLimitAndBadInput) {
+  const CliRun walton = run_gkt("table " + scene_path("rough_walton.toml") +
+                                " --set friction=1000000 --set 'coefficients=[\"rotational_temperature_ratio\", "
+                                "\"cooling_rate\", \"bulk_viscosity\"]'");
+  const CliRun rough =
+      run_gkt("table " + scene_path("rough_hcs.toml") +
+              " --set beta=1 --set 'alpha=[0.9, 0.7]' --set 'hcs=\"maxwellian\"' --set "
+              "'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\", \"bulk_viscosity\"]'");
+  ASSERT_EQ(walton.status, 0) << walton.err;
+  ASSERT_EQ(rough.status, 0) << rough.err;
+  const auto wt = parse_csv(walton.out), rt = parse_csv(rough.out);
+  ASSERT_EQ(wt.size(), 3U);
+  ASSERT_EQ(rt.size(), 3U);
+  for (std::size_t row = 1; row < 3; ++row) {
+    EXPECT_NEAR(std::stod(wt[row][1]), std::stod(rt[row][1]), 1e-8);  // theta (columns: alpha, ...)
+    EXPECT_NEAR(std::stod(wt[row][2]), std::stod(rt[row][2]), 1e-8);  // cooling_rate
+    EXPECT_NEAR(std::stod(wt[row][3]), std::stod(rt[row][3]), 1e-6);  // bulk_viscosity
+  }
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"friction=-0.5", "friction: must be a number in [0, 1000000], got -0.5"},
+           {"beta0=1.5", "beta0: must be a number in [-1, 1], got 1.5"},
+           {"moment_of_inertia=0", "moment_of_inertia: must be a number in (0, 1], got 0"},
+           {"beta=0.5", "beta: unknown key for model \"rough-walton\""},
+           {"order=2", "order: must be exactly 1, got 2"}}) {
+    const CliRun bad = run_gkt("table " + scene_path("rough_walton.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
     EXPECT_TRUE(bad.out.empty());

@@ -18,6 +18,7 @@ const std::map<std::string, Factory>& registry() {
       {"hard-spheres", detail::make_hard_sphere_model},
       {"mixture", detail::make_mixture_model},
       {"rough", detail::make_rough_model},
+      {"rough-walton", detail::make_rough_walton_model},
       {"smooth-inelastic", detail::make_smooth_inelastic_model},
       {"viscoelastic", detail::make_viscoelastic_model},
   };

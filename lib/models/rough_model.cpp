@@ -3,10 +3,12 @@
 // homogeneous cooling state in the Maxwellian or the linear first-Sonine approximation
 // (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11; and the
 // shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7) and the orientational
-// correlation C (rough_orientation_correlation.hpp, §19.8).
+// correlation C (rough_orientation_correlation.hpp, §19.8); κ*, μ* (rough_thermal_conductivity.hpp) and
+// the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3.
 #include <cmath>
 #include <stdexcept>
 
+#include "gkt/transport/rough/rough_bulk_viscosity.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_orientation_correlation.hpp"
 #include "gkt/transport/rough/rough_shear_viscosity.hpp"
@@ -23,8 +25,9 @@ class RoughModel final : public TransportModel {
   [[nodiscard]] std::string description() const override {
     return "rough inelastic hard spheres (d = 3) or disks (d = 2), constant normal and tangential restitution "
            "alpha, beta and reduced moment of inertia: homogeneous cooling state (temperature ratio, cooling "
-           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; first-Sonine shear viscosity; "
-           "translation-rotation correlation (3D)";
+           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; first-Sonine shear and bulk viscosity, "
+           "thermal conductivity, density heat coefficient, first-order cooling rate; translation-rotation "
+           "correlation (3D)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     return {"rotational_temperature_ratio",
@@ -33,8 +36,10 @@ class RoughModel final : public TransportModel {
             "a02",
             "a11",
             "shear_viscosity",
+            "bulk_viscosity",
             "thermal_conductivity",
             "density_heat_coefficient",
+            "cooling_rate_first_order",
             "orientation_correlation"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
@@ -124,13 +129,13 @@ class RoughModel final : public TransportModel {
               "coefficients: orientation_correlation needs dimension = 3 (disks spin normal to the plane)");
         x = rough_orientation_correlation(alpha, beta, kappa).correlation;  // theory.md §19.8
       } else if (name == "thermal_conductivity") {
-        if (d != 3)
-          throw std::invalid_argument("coefficients: thermal_conductivity of the rough model needs dimension = 3");
-        x = rough_thermal_conductivity(alpha, beta, kappa).total;  // theory.md §19.7; NaN at β = −1
+        x = rough_thermal_conductivity(d, alpha, beta, kappa).total;  // theory.md §19.7; NaN at β = −1
       } else if (name == "density_heat_coefficient") {
-        if (d != 3)
-          throw std::invalid_argument("coefficients: density_heat_coefficient of the rough model needs dimension = 3");
-        x = rough_thermal_conductivity(alpha, beta, kappa).density_heat_total;  // theory.md (19.16)
+        x = rough_thermal_conductivity(d, alpha, beta, kappa).density_heat_total;  // theory.md (19.16)
+      } else if (name == "bulk_viscosity") {
+        x = rough_bulk_viscosity(d, alpha, beta, kappa).bulk_viscosity;  // theory.md (19.18); NaN at β = −1
+      } else if (name == "cooling_rate_first_order") {
+        x = rough_bulk_viscosity(d, alpha, beta, kappa).cooling_rate_first_order;  // theory.md (19.19)
       } else if (name == "shear_viscosity") {
         // First Sonine with Maxwellian weights at the Maxwellian θ, whatever `hcs` (theory.md §19.7).
         x = rough_shear_viscosity(d, alpha, beta, kappa);
