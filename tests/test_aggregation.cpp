@@ -134,6 +134,15 @@ TEST(SuccessFactor, HcsCumulantAgainstMonteCarlo) {
     }
 }
 
+TEST(SuccessFactor, CollisionRateOfTheHcs) {
+  // The mean flux ⟨Θ(g·σ̂) g·σ̂⟩ of first-Sonine HCS partners over its Maxwellian value: 1 − a2/16
+  // (3D, linear in a2; van Noije & Ernst's collision frequency) plus (3a2²/8)⟨S_4⟩ = −15a2²/1024 (theory.md (16.7)).
+  for (auto criterion :
+       {StickingCriterion::relative_speed, StickingCriterion::normal_impact, StickingCriterion::always})
+    for (double a2 : {-0.1, 0.05, 0.3})
+      EXPECT_NEAR(pair_collision_averages(3, criterion, 1.0, a2).rate_factor, 1 - a2 / 16 - 15 * a2 * a2 / 1024, 1e-14);
+}
+
 TEST(SuccessFactor, UnequalTemperaturesAgainstMonteCarlo) {
   // A pair of a mixture: masses 1 and 3, temperatures 1 and 0.4; x = θ*/T_ij.
   const double t12 = pair_temperature(1, 1, 3, 0.4);

@@ -14,6 +14,7 @@ using Factory = std::function<std::unique_ptr<TransportModel>()>;
 
 const std::map<std::string, Factory>& registry() {
   static const std::map<std::string, Factory> models{
+      {"aggregation", detail::make_aggregation_model},
       {"hard-spheres", detail::make_hard_sphere_model},
       {"mixture", detail::make_mixture_model},
       {"rough", detail::make_rough_model},

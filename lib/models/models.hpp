@@ -15,6 +15,7 @@ std::unique_ptr<TransportModel> make_smooth_inelastic_model();
 std::unique_ptr<TransportModel> make_viscoelastic_model();
 std::unique_ptr<TransportModel> make_mixture_model();
 std::unique_ptr<TransportModel> make_rough_model();
+std::unique_ptr<TransportModel> make_aggregation_model();
 
 /// A value at one order as a model computes it: estimate plus whether it exists at all.
 struct OrderValue {

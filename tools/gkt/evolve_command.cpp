@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "evolve_aggregation.hpp"
 #include "gkt/evolution/hcs_stability.hpp"
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/operators/viscoelastic_hierarchy.hpp"
@@ -43,6 +44,8 @@ const char* table_model(bool viscoelastic) { return viscoelastic ? "viscoelastic
 Table evolve(const std::string& scene_path, const std::vector<std::string>& overrides, std::string& counters) {
   const toml::table t = read_scene_table(scene_path, overrides);
   const auto* model_node = t.get("model");
+  if (model_node != nullptr && model_node->is_string() && model_node->as_string()->get() == "aggregation")
+    return evolve_aggregation_scene(t, counters);  // sticking grains (issue 21): evolve_aggregation.cpp
   const bool viscoelastic =
       model_node != nullptr && model_node->is_string() && model_node->as_string()->get() == "viscoelastic";
   std::set<std::string> valid{"model", "dimension", "order", "t_end", "points",
@@ -61,7 +64,8 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   }
   if (model_node == nullptr || !model_node->is_string() ||
       (!viscoelastic && model_node->as_string()->get() != "smooth-inelastic"))
-    throw error("model: gkt evolve supports \"smooth-inelastic\" (constant restitution) and \"viscoelastic\"");
+    throw error(
+        "model: gkt evolve supports \"smooth-inelastic\" (constant restitution), \"viscoelastic\" and \"aggregation\"");
   const double dim = number(t, "dimension", 3, 2, false, 3, "2 or 3");
   if (dim != 2 && dim != 3) throw error("dimension: must be 2 or 3, got " + format_number(dim));
   const int d = static_cast<int>(dim);

@@ -99,6 +99,7 @@ PairCollisionAverages pair_collision_averages(int dimension, StickingCriterion c
     const std::array<double, 5> wt{t * (1 - a2 / 16 - 15 * a2 * a2 / 1024), t * (-a2 / 4 - 15 * a2 * a2 / 128),
                                    t * (a2 / 4 + 45 * a2 * a2 / 128), t * (-10 * a2 * a2 / 64), t * (a2 * a2 / 64)};
     const Moments mt = moments(wt, 1, x);
+    r.rate_factor = norm;  // Γ(1) = 1
     r.success_factor = m1.lower / norm;
     r.sticking_energy = (m2.lower + mt.lower) / norm;
     r.normal_energy = m2.upper / norm;
@@ -109,6 +110,7 @@ PairCollisionAverages pair_collision_averages(int dimension, StickingCriterion c
   const auto w = sonine_weight(d / 2 - 1, a2);
   if (criterion == StickingCriterion::always) {
     const Moments m0 = moments(w, s, 0), m1 = moments(w, s + 1, 0);
+    r.rate_factor = m0.upper / std::tgamma(s);
     r.success_factor = 1;
     r.sticking_energy = m1.upper / m0.upper;
     r.normal_energy = 0;
@@ -116,6 +118,7 @@ PairCollisionAverages pair_collision_averages(int dimension, StickingCriterion c
   }
   const Moments m0 = moments(w, s, x), m1 = moments(w, s + 1, x);
   const double norm = m0.lower + m0.upper;
+  r.rate_factor = norm / std::tgamma(s);
   r.success_factor = m0.lower / norm;
   r.sticking_energy = m1.lower / norm;
   r.normal_energy = m1.upper / (s * norm);  // ⟨(ĝ·σ̂)²⟩ over the impact directions = 1/s = 2/(d+1)

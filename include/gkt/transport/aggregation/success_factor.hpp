@@ -18,6 +18,7 @@ struct PairCollisionAverages {
   double sticking_energy = 0;  ///< ⟨μ g²/2; stick⟩ / T_ij: relative kinetic energy lost by sticking, per collision
   double normal_energy = 0;  ///< ⟨μ g_n²/2; bounce⟩ / T_ij: normal relative energy of the rebounding collisions;
                              ///< a rebound with restitution α loses (1 − α²) times it
+  double rate_factor = 1;    ///< collision rate over its Maxwellian value (3D: 1 − a2/16 − 15a2²/1024)
 };
 
 /// Returns ψ and the energy averages of pairs at reduced critical energy x = θ*_ij/T_ij ≥ 0 in
