@@ -18,12 +18,17 @@ void validate(const AggregationGas& gas) {
 }
 
 double collision_rate_coefficient(int dimension, int i, int j, double theta, double pair_correlation) {
-  const double d = dimension;
-  const double sigma = 0.5 * (std::pow(i, 1.0 / d) + std::pow(j, 1.0 / d));  // contact distance
   const double reduced_mass = static_cast<double>(i) * j / (i + j);
-  // ∫dσ̂ Θ(ĝ·σ̂)(ĝ·σ̂) = π^{(d−1)/2}/Γ((d+1)/2); mean speed √(2θ/μ) Γ((d+1)/2)/Γ(d/2).
-  const double solid = std::pow(std::numbers::pi, (d - 1) / 2) / std::tgamma(d / 2);
-  return pair_correlation * std::pow(sigma, d - 1) * solid * std::sqrt(2 * theta / reduced_mass);
+  // ∫dσ̂ Θ(ĝ·σ̂)(ĝ·σ̂) = π^{(d−1)/2}/Γ((d+1)/2) times the mean speed √(2θ/μ) Γ((d+1)/2)/Γ(d/2):
+  // σ² 2√π √(2θ/μ) (3D, contact distance σ = (i^{1/3} + j^{1/3})/2), σ √π √(2θ/μ) (2D).
+  const double speed = std::sqrt(2 * theta / reduced_mass);
+  const double root_pi = std::sqrt(std::numbers::pi);
+  if (dimension == 3) {
+    const double sigma = 0.5 * (std::cbrt(i) + std::cbrt(j));
+    return pair_correlation * sigma * sigma * 2 * root_pi * speed;
+  }
+  const double sigma = 0.5 * (std::sqrt(i) + std::sqrt(j));
+  return pair_correlation * sigma * root_pi * speed;
 }
 
 double critical_pair_energy(const AggregationGas& gas, int i, int j) {
