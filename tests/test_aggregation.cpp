@@ -88,7 +88,7 @@ void expect_mc(const McEstimate& mc, double exact, const char* what) {
 }
 
 TEST(SuccessFactor, SeedClosedFormInThreeDimensions) {
-  // liu2011aggregation eq. (48): ψ = 1 − (1 + x) e^{−x}, re-derived in docs/theory.md (16.3).
+  // liu2011aggregation eq. (48): ψ = 1 − (1 + x) e^{−x}, re-derived in docs/theory.md (20.3).
   for (double x : {0.0, 1e-6, 0.05, 0.5, 1.0, 3.0, 10.0, 40.0, 200.0}) {
     const double expected = -std::expm1(-x) - x * std::exp(-x);
     const double psi = success_factor(3, StickingCriterion::relative_speed, x);
@@ -120,7 +120,7 @@ TEST(SuccessFactor, MaxwellianAgainstMonteCarlo) {
 
 TEST(SuccessFactor, HcsCumulantAgainstMonteCarlo) {
   // a2 at the edge of its range makes the correction visible: the Monte Carlo must exclude the
-  // Maxwellian value and agree with the closed form (theory.md (16.7)).
+  // Maxwellian value and agree with the closed form (theory.md (20.7)).
   for (int d : {2, 3})
     for (auto criterion : {StickingCriterion::relative_speed, StickingCriterion::normal_impact}) {
       const double a2 = 0.3, x = 4.0;
@@ -136,7 +136,7 @@ TEST(SuccessFactor, HcsCumulantAgainstMonteCarlo) {
 
 TEST(SuccessFactor, CollisionRateOfTheHcs) {
   // The mean flux ⟨Θ(g·σ̂) g·σ̂⟩ of first-Sonine HCS partners over its Maxwellian value: 1 − a2/16
-  // (3D, linear in a2; van Noije & Ernst's collision frequency) plus (3a2²/8)⟨S_4⟩ = −15a2²/1024 (theory.md (16.7)).
+  // (3D, linear in a2; van Noije & Ernst's collision frequency) plus (3a2²/8)⟨S_4⟩ = −15a2²/1024 (theory.md (20.7)).
   for (auto criterion :
        {StickingCriterion::relative_speed, StickingCriterion::normal_impact, StickingCriterion::always})
     for (double a2 : {-0.1, 0.05, 0.3})
@@ -267,7 +267,7 @@ TEST(AggregationEvolution, KineticKernelConservesMassAndCools) {
 
 TEST(AggregationEvolution, BallisticAggregationScaling) {
   // ψ = 1 with the kinetic kernel: mean-field ballistic aggregation, N ∝ t^{−2d/(d+3)} and
-  // θ ∝ t^{−2/(d+3)}, θ ∝ N^{1/d} exactly (theory.md §16.4). Local exponents between two times
+  // θ ∝ t^{−2/(d+3)}, θ ∝ N^{1/d} exactly (theory.md §20.4). Local exponents between two times
   // once the mean size is ≈ 20–30 and before the grid's largest size K is felt.
   struct Case {
     int d, sizes;

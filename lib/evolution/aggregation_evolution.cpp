@@ -35,15 +35,15 @@ struct CvodeDeleter {
 
 constexpr int kDenseLimit = 64;  // dense direct solver up to K = 64, Krylov (SPGMR) above
 
-/// y = (n_1 … n_K, E) with E = (d/2) θ Σ n_k the granular energy density (theory.md (16.12)).
+/// y = (n_1 … n_K, E) with E = (d/2) θ Σ n_k the granular energy density (theory.md (20.12)).
 struct Problem {
   AggregationGas gas;
   int sizes = 0;
   mutable double events = 0, collisions = 0;  // totals of the last right-hand side
 };
 
-/// The right-hand side: Smoluchowski's birth and death terms (theory.md (16.12)) over unordered
-/// pairs i ≤ j, each event moving mass i + j exactly, and the energy sink (16.13).
+/// The right-hand side: Smoluchowski's birth and death terms (theory.md (20.12)) over unordered
+/// pairs i ≤ j, each event moving mass i + j exactly, and the energy sink (20.13).
 void balance(const Problem& p, const double* y, double* dy) {
   const int K = p.sizes;
   double number = 0;

@@ -1,6 +1,6 @@
 // The "aggregation" model: sticking grains (issue 21). For one pair of sizes i, j (monomer units)
 // at temperatures T_i, T_j it gives the collision success factor ψ, the collision rate, the
-// aggregation kernel β_ij and the energy a collision loses (docs/theory.md §16; reduced units of
+// aggregation kernel β_ij and the energy a collision loses (docs/theory.md §20; reduced units of
 // gkt/transport/aggregation/aggregation_kernel.hpp).
 #include <cmath>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 // `gkt evolve` with model = "aggregation": the population balance of sticking grains coupled to
-// the granular temperature (docs/theory.md §16, docs/conventions.md).
+// the granular temperature (docs/theory.md §20, docs/conventions.md).
 #pragma once
 
 #include <string>

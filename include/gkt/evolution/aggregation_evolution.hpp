@@ -1,6 +1,6 @@
 #pragma once
 // The population balance of sticking grains (sizes k = 1 … K in monomer units) coupled to the
-// granular temperature, integrated with CVODE (BDF). docs/theory.md §16.3; reduced units of
+// granular temperature, integrated with CVODE (BDF). docs/theory.md §20.3; reduced units of
 // gkt/transport/aggregation/aggregation_kernel.hpp (n_1(0) = 1, θ0 = 1, time in t_0).
 
 #include <string>

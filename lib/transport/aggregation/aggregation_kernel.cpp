@@ -52,7 +52,7 @@ PairRates pair_rates(const AggregationGas& gas, int i, int j, double theta, bool
     return r;
   }
   // Velocity-blind kernels: a sticking pair carries the mean relative energy (d/2)θ; the kinetic
-  // collisions rebound inelastically (theory.md (16.11)).
+  // collisions rebound inelastically (theory.md (20.11)).
   r.aggregation = gas.kernel == AggregationKernel::constant ? gas.kernel_constant : gas.kernel_constant * (i + j);
   r.energy_loss = r.aggregation * 0.5 * gas.dimension * theta + r.collisions * theta * inelastic;
   return r;

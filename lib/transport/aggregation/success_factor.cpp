@@ -53,7 +53,7 @@ IncompleteGamma incomplete_gamma(double a, double x) {
   return r;
 }
 
-/// Coefficients of 1 + (a2/2) S_2^{(m)}(y) + (3 a2²/8) S_4^{(m)}(y) in powers of y (theory.md (16.7)):
+/// Coefficients of 1 + (a2/2) S_2^{(m)}(y) + (3 a2²/8) S_4^{(m)}(y) in powers of y (theory.md (20.7)):
 /// the flux-free density of the reduced relative energy of two HCS partners, over e^{−y} y^m.
 std::array<double, 5> sonine_weight(double m, double a2) {
   std::array<double, 5> w{};
@@ -104,11 +104,11 @@ PairCollisionAverages pair_collision_averages(int dimension, StickingCriterion c
     throw std::invalid_argument("a2: must be in [" + std::to_string(a2_lo) + ", " + std::to_string(a2_hi) + "]");
   PairCollisionAverages r;
   if (criterion == StickingCriterion::normal_impact) {
-    // y_n = μ g_n²/(2T): flux-weighted density e^{−y_n} w_n(y_n), w_n with m = −1/2 (theory.md (16.5)).
+    // y_n = μ g_n²/(2T): flux-weighted density e^{−y_n} w_n(y_n), w_n with m = −1/2 (theory.md (20.5)).
     const auto wn = sonine_weight(-0.5, a2);
     const Moments m1 = moments(wn, 1, x), m2 = moments(wn, 2, x);
     const double norm = m1.lower + m1.upper;
-    // Transverse relative energy ⟨μ g_t²/2 | y_n⟩/T as a polynomial in y_n (theory.md (16.6)).
+    // Transverse relative energy ⟨μ g_t²/2 | y_n⟩/T as a polynomial in y_n (theory.md (20.6)).
     const double t = (d - 1) / 2;
     const std::array<double, 5> wt{t * (1 - a2 / 16 - 15 * a2 * a2 / 1024), t * (-a2 / 4 - 15 * a2 * a2 / 128),
                                    t * (a2 / 4 + 45 * a2 * a2 / 128), t * (-10 * a2 * a2 / 64), t * (a2 * a2 / 64)};
@@ -119,7 +119,7 @@ PairCollisionAverages pair_collision_averages(int dimension, StickingCriterion c
     r.normal_energy = m2.upper / norm;
     return r;
   }
-  // y = μ g²/(2T): flux-weighted density y^{s−1} e^{−y} w(y), s = (d+1)/2, m = d/2 − 1 (theory.md (16.3)).
+  // y = μ g²/(2T): flux-weighted density y^{s−1} e^{−y} w(y), s = (d+1)/2, m = d/2 − 1 (theory.md (20.3)).
   const double s = (d + 1) / 2;
   const auto w = sonine_weight(d / 2 - 1, a2);
   if (criterion == StickingCriterion::always) {

@@ -1,6 +1,6 @@
 #pragma once
 // Aggregation kernels β_ij and the granular energy lost per unit time by collisions of sizes i, j
-// (monomer units: mass ∝ i, diameter ∝ i^{1/d}). docs/theory.md §16.2; reduced units: monomer mass
+// (monomer units: mass ∝ i, diameter ∝ i^{1/d}). docs/theory.md §20.2; reduced units: monomer mass
 // m_1 = 1, monomer diameter σ_1 = 1, initial temperature θ0 = 1, initial monomer density n_1(0) = 1,
 // so time is in units of t_0 = 1/(n_1(0) σ_1^{d−1} √(θ0/m_1)).
 
@@ -10,7 +10,7 @@ namespace gkt {
 
 /// Which aggregation kernel β_ij drives the size distribution.
 enum class AggregationKernel {
-  kinetic,   ///< β_ij = R_ij(θ) ψ_ij(θ*_ij/θ): collision rate times success factor (theory.md (16.9))
+  kinetic,   ///< β_ij = R_ij(θ) ψ_ij(θ*_ij/θ): collision rate times success factor (theory.md (20.9))
   constant,  ///< β_ij = β0 (velocity-blind; analytic Smoluchowski solution)
   sum,       ///< β_ij = β0 (i + j) (Golovin; analytic solution)
 };
@@ -30,13 +30,13 @@ struct AggregationGas {
 void validate(const AggregationGas& gas);
 
 /// Returns R_ij = χ σ_ij^{d−1} (π^{(d−1)/2}/Γ(d/2)) √(2θ/μ_ij) (reduced units): collisions per unit
-/// time and volume are R_ij n_i n_j for i ≠ j and R_ii n_i²/2 (theory.md (16.8)).
+/// time and volume are R_ij n_i n_j for i ≠ j and R_ii n_i²/2 (theory.md (20.8)).
 double collision_rate_coefficient(int dimension, int i, int j, double theta, double pair_correlation);
 
 /// Returns θ*_ij = θ*_11 μ_ij/μ_11 with μ_ij = ij/(i + j): one critical relative speed for all pairs.
 double critical_pair_energy(const AggregationGas& gas, int i, int j);
 
-/// Rates per n_i n_j (i ≠ j; halve for i = j), reduced units (theory.md (16.9)–(16.11)).
+/// Rates per n_i n_j (i ≠ j; halve for i = j), reduced units (theory.md (20.9)–(20.11)).
 struct PairRates {
   double aggregation = 0;  ///< β_ij
   double collisions = 0;   ///< R_ij

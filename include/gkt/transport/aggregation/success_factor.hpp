@@ -1,18 +1,18 @@
 #pragma once
 // The collision success factor ψ of sticking grains and the energy a collision loses, averaged over
-// colliding pairs (collision-rate weighted). docs/theory.md §16 (derivations; the errata of
+// colliding pairs (collision-rate weighted). docs/theory.md §20 (derivations; the errata of
 // liu2011aggregation eqs. 44–49).
 
 namespace gkt {
 
-/// When a colliding pair sticks (docs/theory.md §16.1).
+/// When a colliding pair sticks (docs/theory.md §20.1).
 enum class StickingCriterion {
   relative_speed,  ///< μ g²/2 < θ* (liu2011aggregation, assumption 4 and eq. 47)
   normal_impact,   ///< μ (ĝ·σ̂)² g²/2 < θ*: only the normal part of the impact decides
   always,          ///< every collision sticks (ψ = 1; ballistic aggregation)
 };
 
-/// Per-collision averages over the colliding pairs of one pair of species (docs/theory.md (16.3)–(16.6)).
+/// Per-collision averages over the colliding pairs of one pair of species (docs/theory.md (20.3)–(20.6)).
 struct PairCollisionAverages {
   double success_factor = 0;   ///< ψ: fraction of the collisions that stick
   double sticking_energy = 0;  ///< ⟨μ g²/2; stick⟩ / T_ij: relative kinetic energy lost by sticking, per collision
@@ -23,7 +23,7 @@ struct PairCollisionAverages {
 
 /// Returns ψ and the energy averages of pairs at reduced critical energy x = θ*_ij/T_ij ≥ 0 in
 /// dimension 2 or 3. a2 (default 0: Maxwellian) is the HCS kurtosis cumulant of both partners, valid
-/// for a pair of equal masses in a one-component gas, kept exactly to order a2² (theory.md (16.7));
+/// for a pair of equal masses in a one-component gas, kept exactly to order a2² (theory.md (20.7));
 /// a2 ∈ [−8/(d(d+2)), 4/(d+2)] (a positive distribution). Throws std::invalid_argument otherwise.
 PairCollisionAverages pair_collision_averages(int dimension, StickingCriterion criterion, double x, double a2 = 0);
 
