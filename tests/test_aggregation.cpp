@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "dsmc_aggregation.hpp"
 #include "gkt/evolution/aggregation_evolution.hpp"
 #include "gkt/transport/aggregation/aggregation_kernel.hpp"
 #include "gkt/transport/aggregation/success_factor.hpp"
@@ -299,6 +300,49 @@ TEST(AggregationEvolution, BadInput) {
   EXPECT_THROW(evolve_aggregation(gas, 10, {1.0}, 1e-8, 1e-12, false), std::invalid_argument);
   gas.critical_energy = 1;
   EXPECT_THROW(evolve_aggregation(gas, 10, {1.0, 0.5}, 1e-8, 1e-12, false), std::invalid_argument);
+}
+
+// DSMC with merging against the population balance at early times (docs/theory.md §20.6): N(t),
+// θ(t) and the fraction of collisions that stick in each window, eight replicas for error bars.
+// The population balance assumes every size Maxwellian at one θ; sticking of the slow pairs makes
+// the monomers' distribution drift from that, so only early times are compared.
+TEST(AggregationDsmc, EarlyTimesAgreeWithThePopulationBalance) {
+  const std::vector<double> times{0.05, 0.1, 0.15, 0.2};
+  for (int criterion : {0, 1}) {
+    AggregationGas gas;
+    gas.alpha = 0.8;
+    gas.critical_energy = 1.0;
+    gas.criterion = criterion == 0 ? StickingCriterion::relative_speed : StickingCriterion::normal_impact;
+    const auto pbe = evolve_aggregation(gas, 40, times, 1e-10, 1e-14, false);
+    constexpr int kReplicas = 8;
+    std::vector<std::vector<double>> number(times.size()), temperature(times.size()), psi(times.size());
+    for (int r = 0; r < kReplicas; ++r) {
+      const auto run = test::run_aggregation_dsmc(3, 0.8, 1.0, criterion, 20000, times, 1000u + 17u * r + criterion);
+      for (std::size_t i = 0; i < times.size(); ++i) {
+        number[i].push_back(run[i].number);
+        temperature[i].push_back(run[i].temperature);
+        psi[i].push_back(run[i].sticks / run[i].collisions);
+      }
+    }
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      double m = 0, e = 0;
+      test::batch_mean(number[i], m, e);
+      EXPECT_LT(std::abs(m - pbe.samples[i].number_density), 4 * e + 1e-4)
+          << "N, criterion " << criterion << ", t = " << times[i] << ": DSMC " << m << " ± " << e << ", PBE "
+          << pbe.samples[i].number_density;
+      test::batch_mean(temperature[i], m, e);
+      EXPECT_LT(std::abs(m - pbe.samples[i].temperature), 4 * e + 1e-3)
+          << "theta, criterion " << criterion << ", t = " << times[i] << ": DSMC " << m << " ± " << e << ", PBE "
+          << pbe.samples[i].temperature;
+      // ψ of the window (t_{i−1}, t_i] against the population balance at its middle.
+      test::batch_mean(psi[i], m, e);
+      const double previous = i == 0 ? pbe.samples[0].success_factor : pbe.samples[i - 1].success_factor;
+      const double middle =
+          i == 0 ? success_factor(3, gas.criterion, 1.0) : 0.5 * (previous + pbe.samples[i].success_factor);
+      EXPECT_LT(std::abs(m - middle), 4 * e + 2e-3) << "psi, criterion " << criterion << ", t = " << times[i]
+                                                    << ": DSMC " << m << " ± " << e << ", PBE " << middle;
+    }
+  }
 }
 
 }  // namespace
