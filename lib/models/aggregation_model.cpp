@@ -57,7 +57,7 @@ class AggregationModel final : public TransportModel {
             size("size_j"),
             real("temperature_i", Rational(0), false, Rational(1000000), Rational(1), "T_i/theta0 of size i"),
             real("temperature_j", Rational(0), false, Rational(1000000), Rational(1), "T_j/theta0 of size j"),
-            real("a2", Rational(-1, 3), true, Rational(1), Rational(0),
+            real("a2", Rational(-1), true, Rational(1), Rational(0),
                  "HCS kurtosis cumulant of both partners (equal sizes and temperatures only); "
                  "[-8/(d(d+2)), 4/(d+2)]"),
             real("packing_fraction", Rational(0), true, Rational(7, 10), Rational(0),
