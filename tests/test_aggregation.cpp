@@ -293,6 +293,35 @@ TEST(AggregationEvolution, BallisticAggregationScaling) {
   }
 }
 
+TEST(AggregationEvolution, SectionalGridConservesAndConverges) {
+  // Fixed pivot on the geometric grid x_{k+1} = max(x_k + 1, r x_k) (theory.md (20.15)): number and
+  // mass are conserved by every merger, so the constant kernel's N = 1/(1 + β0 t/2) holds on any grid
+  // (while nothing passes the last pivot); the kinetic kernel's mean size and θ converge to the
+  // discrete balance on sizes 1 … K.
+  const auto pivots = geometric_pivots(1.2, 5000);
+  EXPECT_EQ(pivots[4], 5.0);  // integers while r x_k < x_k + 1
+  EXPECT_NEAR(pivots[6], 1.2 * 6, 1e-12);
+  EXPECT_NEAR(pivots[7], 1.2 * 1.2 * 6, 1e-12);
+  AggregationGas constant;
+  constant.kernel = AggregationKernel::constant;
+  for (const auto& s : evolve_aggregation(constant, pivots, {1.0, 5.0, 20.0}, 1e-10, 1e-16, false).samples) {
+    EXPECT_NEAR(s.number_density * (1 + s.time / 2) - 1, 0, 1e-8) << "t = " << s.time;
+    EXPECT_NEAR(s.mass - 1, 0, 1e-12);
+  }
+  AggregationGas gas;
+  gas.alpha = 0.9;
+  gas.critical_energy = 1.0;
+  const auto discrete = evolve_aggregation(gas, 160, {4.0}, 1e-9, 1e-15, false).samples[0];
+  const auto sectional = evolve_aggregation(gas, geometric_pivots(1.1, 2000), {4.0}, 1e-9, 1e-15, false).samples[0];
+  EXPECT_NEAR(sectional.mean_size / discrete.mean_size - 1, 0, 3e-3)
+      << sectional.mean_size << " vs " << discrete.mean_size;
+  EXPECT_NEAR(sectional.temperature / discrete.temperature - 1, 0, 1e-3);
+  EXPECT_NEAR(sectional.mass - 1, 0, 1e-12);
+  EXPECT_THROW(geometric_pivots(2.5, 100), std::invalid_argument);
+  EXPECT_THROW(evolve_aggregation(gas, std::vector<double>{1.0, 1.5}, {1.0}, 1e-8, 1e-12, false),
+               std::invalid_argument);
+}
+
 TEST(AggregationEvolution, BadInput) {
   AggregationGas gas;
   EXPECT_THROW(evolve_aggregation(gas, 1, {1.0}, 1e-8, 1e-12, false), std::invalid_argument);

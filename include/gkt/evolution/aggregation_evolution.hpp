@@ -36,4 +36,16 @@ struct AggregationResult {
 AggregationResult evolve_aggregation(const AggregationGas& gas, int sizes, const std::vector<double>& times,
                                      double rtol, double atol, bool keep_distribution);
 
+/// Returns the pivots of a geometric sectional grid: x_1 = 1, x_{k+1} = max(x_k + 1, r x_k), up to
+/// the first pivot ≥ largest (ratio r ∈ (1, 2], largest ≥ 2); sizes below 1/(r − 1) stay integers.
+std::vector<double> geometric_pivots(double ratio, double largest);
+
+/// As above on a sectional grid (fixed pivot, theory.md (20.15)): n_k counts clusters represented
+/// by pivot x_k (increasing, x_1 = 1, pivots 1 … K give the discrete balance); a merger of mass
+/// x_i + x_j between two pivots is shared between them so that number and mass are both conserved,
+/// one beyond the last pivot rebounds. distribution holds n_k per pivot.
+AggregationResult evolve_aggregation(const AggregationGas& gas, const std::vector<double>& pivots,
+                                     const std::vector<double>& times, double rtol, double atol,
+                                     bool keep_distribution);
+
 }  // namespace gkt

@@ -17,8 +17,8 @@ void validate(const AggregationGas& gas) {
     throw std::invalid_argument("kernel_constant: must be a finite number > 0");
 }
 
-double collision_rate_coefficient(int dimension, int i, int j, double theta, double pair_correlation) {
-  const double reduced_mass = static_cast<double>(i) * j / (i + j);
+double collision_rate_coefficient(int dimension, double i, double j, double theta, double pair_correlation) {
+  const double reduced_mass = i * j / (i + j);
   // ∫dσ̂ Θ(ĝ·σ̂)(ĝ·σ̂) = π^{(d−1)/2}/Γ((d+1)/2) times the mean speed √(2θ/μ) Γ((d+1)/2)/Γ(d/2):
   // σ² 2√π √(2θ/μ) (3D, contact distance σ = (i^{1/3} + j^{1/3})/2), σ √π √(2θ/μ) (2D).
   const double speed = std::sqrt(2 * theta / reduced_mass);
@@ -31,12 +31,12 @@ double collision_rate_coefficient(int dimension, int i, int j, double theta, dou
   return pair_correlation * sigma * root_pi * speed;
 }
 
-double critical_pair_energy(const AggregationGas& gas, int i, int j) {
-  const double reduced_mass = static_cast<double>(i) * j / (i + j);
+double critical_pair_energy(const AggregationGas& gas, double i, double j) {
+  const double reduced_mass = i * j / (i + j);
   return gas.critical_energy * reduced_mass / 0.5;
 }
 
-PairRates pair_rates(const AggregationGas& gas, int i, int j, double theta, bool may_stick) {
+PairRates pair_rates(const AggregationGas& gas, double i, double j, double theta, bool may_stick) {
   PairRates r;
   r.collisions = collision_rate_coefficient(gas.dimension, i, j, theta, gas.pair_correlation);
   const double inelastic = 1 - gas.alpha * gas.alpha;

@@ -31,10 +31,10 @@ void validate(const AggregationGas& gas);
 
 /// Returns R_ij = χ σ_ij^{d−1} (π^{(d−1)/2}/Γ(d/2)) √(2θ/μ_ij) (reduced units): collisions per unit
 /// time and volume are R_ij n_i n_j for i ≠ j and R_ii n_i²/2 (theory.md (20.8)).
-double collision_rate_coefficient(int dimension, int i, int j, double theta, double pair_correlation);
+double collision_rate_coefficient(int dimension, double i, double j, double theta, double pair_correlation);
 
 /// Returns θ*_ij = θ*_11 μ_ij/μ_11 with μ_ij = ij/(i + j): one critical relative speed for all pairs.
-double critical_pair_energy(const AggregationGas& gas, int i, int j);
+double critical_pair_energy(const AggregationGas& gas, double i, double j);
 
 /// Rates per n_i n_j (i ≠ j; halve for i = j), reduced units (theory.md (20.9)–(20.11)).
 struct PairRates {
@@ -43,8 +43,8 @@ struct PairRates {
   double energy_loss = 0;  ///< granular energy lost by sticking and by inelastic rebounds
 };
 
-/// Returns β_ij, R_ij and the energy loss of sizes i, j ≥ 1 at temperature θ > 0; with
-/// may_stick = false (a merger the size grid cannot hold) every collision rebounds.
-PairRates pair_rates(const AggregationGas& gas, int i, int j, double theta, bool may_stick = true);
+/// Returns β_ij, R_ij and the energy loss of sizes i, j ≥ 1 (monomers; a sectional grid's pivots need not be integers)
+/// at temperature θ > 0; with may_stick = false (a merger the size grid cannot hold) every collision rebounds.
+PairRates pair_rates(const AggregationGas& gas, double i, double j, double theta, bool may_stick = true);
 
 }  // namespace gkt
