@@ -755,7 +755,9 @@ TEST(CliAggregation, EvolveTableAndBadInput) {
            {" --set sizes=1", "sizes: must be an integer in [2, 20000]"},
            {" --set 'kernel=\"foo\"'", "kernel: must be one of \"kinetic\", \"constant\", \"sum\""},
            {" --set 'criterion=\"sticky\"'", "criterion: must be one of"},
-           {" --set order=2", "order: unknown key for gkt evolve with model \"aggregation\""}}) {
+           {" --set order=2", "order: unknown key for gkt evolve with model \"aggregation\""},
+           {" --set grid_ratio=1.2", "grid_ratio: only with grid = \"geometric\""},
+           {" --set 'grid=\"geometric\"' --set grid_ratio=3", "grid_ratio: must be a number in (1, 2]"}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("aggregation_evolve.toml") + args);
     EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;

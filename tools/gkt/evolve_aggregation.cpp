@@ -45,7 +45,8 @@ std::string choice(const toml::table& t, const std::string& key, const std::vect
 Table evolve_aggregation_scene(const toml::table& t, std::string& counters) {
   const std::set<std::string> valid{
       "model", "dimension",        "alpha", "critical_energy", "criterion", "kernel", "kernel_constant",
-      "sizes", "packing_fraction", "t_end", "points",          "rtol",      "atol",   "distribution"};
+      "sizes", "packing_fraction", "t_end", "points",          "rtol",      "atol",   "distribution",
+      "grid",  "grid_ratio"};
   for (const auto& [key, value] : t) {
     const std::string k(key.str());
     if (!valid.contains(k))
@@ -77,8 +78,24 @@ Table evolve_aggregation_scene(const toml::table& t, std::string& counters) {
   const auto* phi_node = t.get("packing_fraction");
   const Rational phi_exact = phi_node != nullptr ? scene_number(*phi_node, "packing_fraction") : Rational(0);
   gas.pair_correlation = pair_correlations().front().contact_value(gas.dimension, phi_exact).to_double();
-  const double sizes = number(t, "sizes", 100, 2, false, kMaxSizes, "an integer in [2, 20000]");
-  if (sizes != std::floor(sizes)) throw std::invalid_argument("sizes: must be an integer in [2, 20000]");
+  const std::string grid = choice(t, "grid", {"uniform", "geometric"});
+  const double sizes = number(t, "sizes", 100, 2, false, grid == "uniform" ? kMaxSizes : 1e12,
+                              grid == "uniform" ? "an integer in [2, 20000]" : "an integer in [2, 1e12]");
+  if (sizes != std::floor(sizes))
+    throw std::invalid_argument(std::string("sizes: must be an integer in [2, ") +
+                                (grid == "uniform" ? "20000]" : "1e12]"));
+  if (grid == "uniform" && t.contains("grid_ratio"))
+    throw std::invalid_argument("grid_ratio: only with grid = \"geometric\"");
+  const double ratio = number(t, "grid_ratio", 1.1, 1, true, 2, "a number in (1, 2]");
+  std::vector<double> pivots;
+  if (grid == "uniform") {
+    for (int k = 1; k <= static_cast<int>(sizes); ++k) pivots.push_back(k);
+  } else {
+    pivots = geometric_pivots(ratio, sizes);
+    if (pivots.size() > static_cast<std::size_t>(kMaxSizes))
+      throw std::invalid_argument("grid_ratio: the grid has " + std::to_string(pivots.size()) +
+                                  " pivots; at most 20000");
+  }
   if (!t.contains("t_end")) throw std::invalid_argument("t_end: required (a number > 0, in units of t_0)");
   const double t_end = number(t, "t_end", 1, 0, true, 1e12, "a number in (0, 1e12]");
   const double points = number(t, "points", 50, 1, false, kMaxPoints, "an integer in [1, 100000]");
@@ -90,7 +107,7 @@ Table evolve_aggregation_scene(const toml::table& t, std::string& counters) {
     if (!node->is_boolean()) throw std::invalid_argument("distribution: must be true or false");
     distribution = node->as_boolean()->get();
   }
-  const int n = static_cast<int>(points), k_max = static_cast<int>(sizes);
+  const int n = static_cast<int>(points), k_max = static_cast<int>(pivots.size());
   if (distribution && static_cast<long>(n) * k_max > kMaxDistributionRows)
     throw std::invalid_argument("distribution: points x sizes = " + std::to_string(static_cast<long>(n) * k_max) +
                                 " rows; at most 1000000");
@@ -101,7 +118,7 @@ Table evolve_aggregation_scene(const toml::table& t, std::string& counters) {
 
   AggregationResult result;
   try {
-    result = evolve_aggregation(gas, k_max, times, rtol, atol, distribution);
+    result = evolve_aggregation(gas, pivots, times, rtol, atol, distribution);
   } catch (const EvolutionFailure& e) {
     const std::string message = e.what();
     if (e.tolerances()) throw;
@@ -125,7 +142,7 @@ Table evolve_aggregation_scene(const toml::table& t, std::string& counters) {
     }
     for (int k = 1; k <= k_max; ++k) {
       auto long_row = row;
-      long_row.push_back(std::to_string(k));
+      long_row.push_back(format_number(pivots[static_cast<std::size_t>(k - 1)]));
       long_row.push_back(format_number(s.distribution[static_cast<std::size_t>(k - 1)]));
       table.rows.push_back(std::move(long_row));
     }
