@@ -683,7 +683,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"order_and_tolerance", kGood + "tolerance = 1e-6\n", "", "order: give exactly one"},
         BadInput{"neither_order_nor_tolerance", "model = \"hard-spheres\"\n", "", "order: give exactly one"},
         BadInput{"unknown_model", "model = \"soft-spheres\"\norder = 1\n", "",
-                 "model: unknown model \"soft-spheres\"; valid models: \"hard-spheres\""},
+                 "model: unknown model \"soft-spheres\"; valid models: \"aggregation\", \"hard-spheres\""},
         BadInput{"missing_model", "order = 1\n", "", "model: required"},
         BadInput{"unknown_coefficient", kGood + "coefficients = [\"bulk_viscosity\"]\n", "",
                  "coefficients: unknown coefficient"},
@@ -765,4 +765,50 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Cli, MissingSubcommandExitsTwo) {
   const CliRun r = run_gkt("");
   EXPECT_EQ(r.status, 2);
+}
+
+// Sticking grains (issue 21; the physics is checked in tests/test_aggregation.cpp): the columns,
+// exact mass conservation, the long-format size distribution, ψ of the seed's closed form through
+// `gkt table`, and bad input as one line with exit status 2.
+TEST(CliAggregation, EvolveTableAndBadInput) {
+  const CliRun r = run_gkt("evolve " + scene_path("aggregation_evolve.toml"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = parse_csv(r.out);
+  ASSERT_EQ(rows.size(), 13U);
+  EXPECT_EQ(rows[0],
+            (std::vector<std::string>{"time", "temperature", "number_density", "mass", "mean_size", "success_factor"}));
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_NEAR(std::stod(rows[i][3]), 1.0, 1e-12);
+    EXPECT_NEAR(std::stod(rows[i][4]) * std::stod(rows[i][2]), std::stod(rows[i][3]), 1e-12);
+  }
+  const CliRun dist = run_gkt("evolve " + scene_path("aggregation_evolve.toml") +
+                              " --set distribution=true --set points=2 --set sizes=10");
+  ASSERT_EQ(dist.status, 0) << dist.err;
+  const auto long_rows = parse_csv(dist.out);
+  ASSERT_EQ(long_rows.size(), 21U);
+  double mass = 0;
+  for (std::size_t i = 11; i < long_rows.size(); ++i) mass += std::stod(long_rows[i][6]) * std::stod(long_rows[i][7]);
+  EXPECT_NEAR(mass, 1.0, 1e-12);
+
+  const CliRun table = run_gkt("table " + scene_path("aggregation_pair.toml") +
+                               " --set critical_energy=1 --set size_j=1 --set 'coefficients=[\"success_factor\"]'");
+  ASSERT_EQ(table.status, 0) << table.err;
+  const auto t = parse_csv(table.out);
+  ASSERT_EQ(t.size(), 2U);
+  ASSERT_EQ(t[0][0], "success_factor");
+  EXPECT_NEAR(std::stod(t[1][0]), 1 - 2 * std::exp(-1.0), 1e-14);  // liu2011aggregation eq. (48), x = 1
+
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {" --set critical_energy=-1", "critical_energy: must be a number in [0, 1e6]"},
+           {" --set sizes=1", "sizes: must be an integer in [2, 20000]"},
+           {" --set 'kernel=\"foo\"'", "kernel: must be one of \"kinetic\", \"constant\", \"sum\""},
+           {" --set 'criterion=\"sticky\"'", "criterion: must be one of"},
+           {" --set order=2", "order: unknown key for gkt evolve with model \"aggregation\""},
+           {" --set grid_ratio=1.2", "grid_ratio: only with grid = \"geometric\""},
+           {" --set 'grid=\"geometric\"' --set grid_ratio=3", "grid_ratio: must be a number in (1, 2]"}}) {
+    const CliRun bad = run_gkt("evolve " + scene_path("aggregation_evolve.toml") + args);
+    EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_EQ(bad.err.find('\n'), bad.err.size() - 1) << bad.err;
+  }
 }

@@ -37,6 +37,7 @@ ROOM_MAY_INCLUDE = {
     "mixture": {"common", "mixture"},
     "viscoelastic": {"common", "viscoelastic"},
     "rough": {"common", "rough"},  # rough spheres (issue 18), arriving on their own branch
+    "aggregation": {"common", "aggregation"},  # sticking grains: success factor, kernels (issue 21)
 }
 # Declared exceptions (including room -> included room), each with its reason. Keep this empty.
 ROOM_EXCEPTIONS = {}

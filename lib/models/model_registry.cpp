@@ -15,11 +15,9 @@ using Factory = std::function<std::unique_ptr<TransportModel>()>;
 
 const std::map<std::string, Factory>& registry() {
   static const std::map<std::string, Factory> models{
-      {"hard-spheres", detail::make_hard_sphere_model},
-      {"mixture", detail::make_mixture_model},
-      {"rough", detail::make_rough_model},
-      {"rough-walton", detail::make_rough_walton_model},
-      {"smooth-inelastic", detail::make_smooth_inelastic_model},
+      {"aggregation", detail::make_aggregation_model},   {"hard-spheres", detail::make_hard_sphere_model},
+      {"mixture", detail::make_mixture_model},           {"rough", detail::make_rough_model},
+      {"rough-walton", detail::make_rough_walton_model}, {"smooth-inelastic", detail::make_smooth_inelastic_model},
       {"viscoelastic", detail::make_viscoelastic_model},
   };
   return models;

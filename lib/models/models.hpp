@@ -25,6 +25,7 @@ std::unique_ptr<TransportModel> make_smooth_inelastic_model();
 std::unique_ptr<TransportModel> make_viscoelastic_model();
 std::unique_ptr<TransportModel> make_mixture_model();
 std::unique_ptr<TransportModel> make_rough_model();
+std::unique_ptr<TransportModel> make_aggregation_model();
 std::unique_ptr<TransportModel> make_rough_walton_model();
 
 /// Returns `model` behind a guard that validates every call against the model's schema first

@@ -4,6 +4,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "evolve_aggregation.hpp"
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/models/transport_model.hpp"
 #include "scene.hpp"
@@ -46,6 +47,8 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
 
 Table evolve(const toml::table& t, std::string& counters) {
   const auto* model_node = t.get("model");
+  if (model_node != nullptr && model_node->is_string() && model_node->as_string()->get() == "aggregation")
+    return evolve_aggregation_scene(t, counters);  // sticking grains (issue 21): evolve_aggregation.cpp
   if (model_node == nullptr || !model_node->is_string()) throw unsupported_model();
   const std::string model_name = model_node->as_string()->get();
   const auto names = transport_model_names();
