@@ -3,7 +3,8 @@
 # whole suite (with the Python module's pytest suite), install into a temporary prefix and build
 # examples/consumer/ against it (tools/check_install.sh), check the shipped tables against their
 # scenes (tools/check_tables.sh), then rebuild with AddressSanitizer + UndefinedBehaviorSanitizer
-# and run the suite again; last, execute the notebooks (tools/run_notebooks.sh).
+# and run the suite again; then a short fuzz run (tools/fuzz.sh) and, last, execute the notebooks
+# (tools/run_notebooks.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh
@@ -29,4 +30,5 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGKT_SANITIZE=ON
 cmake --build build-sanitize -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure --no-tests=error -j"$jobs"
+bash tools/fuzz.sh                 # libFuzzer: scene parser and per-cell calls, 45 s each (docs/fuzzing.md)
 bash tools/run_notebooks.sh build  # every notebook still executes (the module of the Release build)
