@@ -36,7 +36,7 @@ ROOM_MAY_INCLUDE = {
     "closed_forms": {"common", "monodisperse", "closed_forms"},
     "mixture": {"common", "mixture"},
     "viscoelastic": {"common", "viscoelastic"},
-    "rough": {"common", "rough"},  # rough spheres (issue 18), arriving on their own branch
+    "rough": {"common", "rough"},  # rough spheres and disks (issue 18)
     "aggregation": {"common", "aggregation"},  # sticking grains: success factor, kernels (issue 21)
 }
 # Declared exceptions (including room -> included room), each with its reason. Keep this empty.
