@@ -1,4 +1,5 @@
-// gkt: command-line front end. Exit codes: 0 success, 2 bad input, usage or lost output, 1 internal error.
+// gkt: command-line front end. Exit codes: 0 success, 2 bad input, usage or lost output, 1 internal error,
+// 128 + signal for a table interrupted by SIGINT (130), SIGTERM (143) or SIGHUP (129).
 #include <algorithm>
 #include <chrono>
 #include <csignal>
@@ -92,22 +93,41 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
   }
   const bool csv = run.format != "json";
   Progress progress(!run.quiet && ::isatty(STDERR_FILENO) == 1);
+  const std::string header = gkt::cli::csv_line(gkt::cli::table_header(scene, {run.exact, run.jobs}).columns);
   gkt::cli::RowObserver observer;
   observer.stop = [] { return stop_signal != 0; };
   observer.on_wait = [&progress](std::size_t done, std::size_t total) { progress.show(done, total); };
   observer.on_row = [&](const std::vector<std::string>& row, std::size_t done, std::size_t total) {
     if (csv) {
       progress.clear();  // standard output may be the same terminal
-      target.append(gkt::cli::csv_line(row));
+      // The header goes with the first row: input the model refuses at once leaves no output.
+      target.append(done == 1 ? header + gkt::cli::csv_line(row) : gkt::cli::csv_line(row));
     }
     progress.show(done, total);
   };
   catch_stop_signals();
-  if (csv) target.append(gkt::cli::csv_line(gkt::cli::table_header(scene, {run.exact, run.jobs}).columns));
   std::vector<std::string> warnings;
-  const auto table = gkt::cli::compute_table(scene, {run.exact, run.jobs}, warnings, observer);
+  std::size_t rows_written = 0;
+  observer.on_row = [&, show_row = observer.on_row](const std::vector<std::string>& row, std::size_t done,
+                                                    std::size_t total) {
+    show_row(row, done, total);
+    rows_written = done;
+  };
+  gkt::cli::Table table;
+  try {
+    table = gkt::cli::compute_table(scene, {run.exact, run.jobs}, warnings, observer);
+  } catch (const std::invalid_argument&) {
+    // The rows already on standard output (or a FIFO) are not mistaken for the whole table.
+    if (csv && rows_written > 0) try {
+        target.append("# stopped by an error after " + std::to_string(rows_written) + " of " +
+                      std::to_string(gkt::cli::sweep_size(scene)) + " rows\n");
+      } catch (const std::invalid_argument&) {  // the output itself failed: the error says so
+      }
+    throw;
+  }
   progress.clear();
   if (csv) {
+    if (table.rows.empty()) target.append(header);  // no row yet, or none in the sweep
     if (table.interrupted) target.append(gkt::cli::csv_interrupted_line(table));
   } else {
     target.append(gkt::cli::to_json(table));

@@ -134,13 +134,13 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
 /// The rows of a sweep shared between the workers and the thread that collects them in order.
 /// Held by shared pointer: after an interrupt, detached workers may still finish their row.
 struct Sweep {
-  Sweep(const Scene& s, const TableOptions& o) : scene(s), options(o), total(sweep_size(s)), results(total) {}
+  Sweep(const Scene& s, const TableOptions& o) : scene(s), options(o), total(sweep_size(s)) {}
   const Scene scene;
   const TableOptions options;
   const std::size_t total;
   std::mutex mutex;
   std::condition_variable finished;
-  std::vector<std::optional<RowResult>> results;  ///< guarded by mutex
+  std::map<std::size_t, RowResult> results;  ///< finished, not yet collected rows by index; guarded by mutex
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
 };
@@ -162,7 +162,7 @@ void work(const std::shared_ptr<Sweep>& sweep) {
     }
     {
       const std::lock_guard lock(sweep->mutex);
-      sweep->results[r] = std::move(result);
+      sweep->results.emplace(r, std::move(result));
     }
     sweep->finished.notify_all();
   }
@@ -247,15 +247,15 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
     std::optional<RowResult> finished;
     {
       std::unique_lock lock(sweep->mutex);
-      while (!sweep->results[r] && !stop_requested()) {
+      while (sweep->results.count(r) == 0 && !stop_requested()) {
         sweep->finished.wait_for(lock, std::chrono::milliseconds(100));
-        if (!sweep->results[r] && observer.on_wait) {
+        if (sweep->results.count(r) == 0 && observer.on_wait) {
           lock.unlock();
           observer.on_wait(r, sweep->total);
           lock.lock();
         }
       }
-      finished.swap(sweep->results[r]);
+      if (auto node = sweep->results.extract(r)) finished = std::move(node.mapped());
     }
     if (!finished) {  // interrupted: the rows finished in order are kept
       table.interrupted = true;
