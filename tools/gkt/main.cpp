@@ -26,6 +26,21 @@ namespace {
 constexpr int kBadInput = 2;
 constexpr int kMaxJobs = 64;  ///< --jobs cap: far above the cores of a workstation, a guard against typos
 
+/// Returns `message` as one line of bounded length: control characters (a newline in a value)
+/// become spaces and anything beyond 400 characters is cut with "…".
+std::string one_line(std::string message) {
+  for (char& c : message)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  constexpr std::size_t kMaxLength = 400;
+  if (message.size() > kMaxLength) {
+    std::size_t cut = kMaxLength;
+    while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+    message.resize(cut);
+    message += "…";
+  }
+  return message;
+}
+
 /// The signal (SIGINT, SIGTERM, SIGHUP) that asked a running table to stop; 0 while none did.
 volatile std::sig_atomic_t stop_signal = 0;
 
@@ -126,13 +141,19 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
     throw;
   }
   progress.clear();
-  if (csv) {
-    if (table.rows.empty()) target.append(header);  // no row yet, or none in the sweep
-    if (table.interrupted) target.append(gkt::cli::csv_interrupted_line(table));
-  } else {
-    target.append(gkt::cli::to_json(table));
+  try {
+    if (csv) {
+      if (table.rows.empty()) target.append(header);  // no row yet, or none in the sweep
+      if (table.interrupted) target.append(gkt::cli::csv_interrupted_line(table));
+    } else {
+      target.append(gkt::cli::to_json(table));
+    }
+    target.commit();
+  } catch (const std::invalid_argument& e) {
+    if (!table.interrupted) throw;
+    std::cerr << "gkt: error: " << one_line(e.what()) << "\n";
+    std::_Exit(kBadInput);  // detached workers may still run: no normal exit
   }
-  target.commit();
   for (const auto& w : warnings) std::cerr << "gkt: warning: " << w << "\n";
   if (!table.interrupted) return 0;
   std::cerr << "gkt: interrupted after " << table.rows.size() << " of " << table.planned_rows
@@ -200,21 +221,6 @@ int printed(int status) {
   if (std::cout && std::fflush(stdout) == 0 && std::ferror(stdout) == 0) return status;
   std::cerr << "gkt: error: standard output: write failed\n";
   return kBadInput;
-}
-
-/// Returns `message` as one line of bounded length: control characters (a newline in a value)
-/// become spaces and anything beyond 400 characters is cut with "…".
-std::string one_line(std::string message) {
-  for (char& c : message)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-  constexpr std::size_t kMaxLength = 400;
-  if (message.size() > kMaxLength) {
-    std::size_t cut = kMaxLength;
-    while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
-    message.resize(cut);
-    message += "…";
-  }
-  return message;
 }
 
 int run(int argc, char** argv) {
