@@ -190,8 +190,9 @@ TEST(CliOutput, RegularFileKeepsPermissionsAndSurvivesFailure) {
   fs::remove_all(dir);
 }
 
-// The temporary file is created before the computation; a run ended by SIGTERM removes it (a
-// guard for that early creation: builds that created it only at the end never left one either).
+// The temporary file is created before the computation; a run ended by SIGTERM leaves no
+// temporary file: the finished rows replace the target, ending with the interrupted marker
+// (docs/conventions.md "Long runs"; tests/test_cli_streaming.cpp covers the marker itself).
 TEST(CliOutput, TerminatedRunLeavesNoTemporaryFile) {
   const fs::path dir = scratch("terminated");
   const std::string scene = write_scene(dir,
@@ -205,7 +206,9 @@ TEST(CliOutput, TerminatedRunLeavesNoTemporaryFile) {
   EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 124);  // still computing when terminated
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
-  EXPECT_EQ(files, 1U);  // the scene only
+  EXPECT_EQ(files, 2U);  // the scene and the table
+  const std::string table = read_file(dir / "table.csv");
+  EXPECT_NE(table.find(" of 1000000 rows\n"), std::string::npos) << table.substr(0, 200);
   fs::remove_all(dir);
 }
 

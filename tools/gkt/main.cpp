@@ -1,5 +1,8 @@
-// gkt: command-line front end. Exit codes: 0 success, 2 bad input, usage or lost output, 1 internal error.
+// gkt: command-line front end. Exit codes: 0 success, 2 bad input, usage or lost output, 1 internal error,
+// 128 + signal for a table interrupted by SIGINT (130), SIGTERM (143) or SIGHUP (129).
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -8,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include "evolve_command.hpp"
@@ -20,23 +24,142 @@
 namespace {
 
 constexpr int kBadInput = 2;
+constexpr int kMaxJobs = 64;  ///< --jobs cap: far above the cores of a workstation, a guard against typos
 
-int run_table(const std::string& scene_path, const std::vector<std::string>& overrides, const std::string& format,
-              const std::string& output, bool exact, bool stability = false) {
-  gkt::cli::OutputTarget target(output);  // refused before any work if it cannot be written
+/// Returns `message` as one line of bounded length: control characters (a newline in a value)
+/// become spaces and anything beyond 400 characters is cut with "…".
+std::string one_line(std::string message) {
+  for (char& c : message)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  constexpr std::size_t kMaxLength = 400;
+  if (message.size() > kMaxLength) {
+    std::size_t cut = kMaxLength;
+    while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+    message.resize(cut);
+    message += "…";
+  }
+  return message;
+}
+
+/// The signal (SIGINT, SIGTERM, SIGHUP) that asked a running table to stop; 0 while none did.
+volatile std::sig_atomic_t stop_signal = 0;
+
+extern "C" void request_stop(int signal_number) { stop_signal = signal_number; }
+
+/// From here on SIGINT, SIGTERM and SIGHUP end the sweep after the finished rows instead of the
+/// process (docs/conventions.md "Long runs"); the handler only records the signal.
+void catch_stop_signals() {
+  struct sigaction action {};
+  action.sa_handler = request_stop;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal_number, &action, nullptr);
+}
+
+/// The progress line "gkt: row 12/40 (30 %), 3.1 s" on standard error, redrawn in place (\r);
+/// silent unless standard error is a terminal and --quiet was not given.
+class Progress {
+ public:
+  explicit Progress(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+  ~Progress() { clear(); }
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  void show(std::size_t done, std::size_t total) {
+    if (!enabled_) return;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    char line[128];
+    const int n = std::snprintf(line, sizeof line, "\rgkt: row %zu/%zu (%d %%), %.1f s", done, total,
+                                total == 0 ? 100 : static_cast<int>(100 * done / total), seconds);
+    if (n <= 0) return;
+    std::fputs(line, stderr);
+    width_ = static_cast<std::size_t>(n) - 1;
+  }
+  void clear() {
+    if (!enabled_ || width_ == 0) return;
+    std::fprintf(stderr, "\r%*s\r", static_cast<int>(width_), "");
+    width_ = 0;
+  }
+
+ private:
+  bool enabled_;
+  std::chrono::steady_clock::time_point start_;
+  std::size_t width_ = 0;  ///< characters on screen
+};
+
+struct TableRun {
+  std::string format = "csv", output;
+  bool exact = false, stability = false, quiet = false;
+  int jobs = 1;
+};
+
+int run_table(const std::string& scene_path, const std::vector<std::string>& overrides, const TableRun& run) {
+  if (run.jobs < 1 || run.jobs > kMaxJobs)
+    throw std::invalid_argument("--jobs: must be an integer in [1, " + std::to_string(kMaxJobs) + "], got " +
+                                std::to_string(run.jobs));
+  gkt::cli::OutputTarget target(run.output);  // refused before any work if it cannot be written
   auto scene = gkt::cli::load_scene(scene_path, overrides);
   // `gkt stability` is `gkt table` whose default coefficients are the HCS stability values.
-  if (stability && !scene.coefficients_given) {
+  if (run.stability && !scene.coefficients_given) {
     if (!gkt::make_transport_model(scene.model)->supports(gkt::Capability::stability))
       throw std::invalid_argument("model: \"" + scene.model +
                                   "\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\"");
     scene.coefficients = gkt::stability_coefficient_names();
   }
+  const bool csv = run.format != "json";
+  Progress progress(!run.quiet && ::isatty(STDERR_FILENO) == 1);
+  const std::string header = gkt::cli::csv_line(gkt::cli::table_header(scene, {run.exact, run.jobs}).columns);
+  gkt::cli::RowObserver observer;
+  observer.stop = [] { return stop_signal != 0; };
+  observer.on_wait = [&progress](std::size_t done, std::size_t total) { progress.show(done, total); };
+  observer.on_row = [&](const std::vector<std::string>& row, std::size_t done, std::size_t total) {
+    if (csv) {
+      progress.clear();  // standard output may be the same terminal
+      // The header goes with the first row: input the model refuses at once leaves no output.
+      target.append(done == 1 ? header + gkt::cli::csv_line(row) : gkt::cli::csv_line(row));
+    }
+    progress.show(done, total);
+  };
+  catch_stop_signals();
   std::vector<std::string> warnings;
-  const auto table = gkt::cli::compute_table(scene, {exact}, warnings);
-  target.write(format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table));
+  std::size_t rows_written = 0;
+  observer.on_row = [&, show_row = observer.on_row](const std::vector<std::string>& row, std::size_t done,
+                                                    std::size_t total) {
+    show_row(row, done, total);
+    rows_written = done;
+  };
+  gkt::cli::Table table;
+  try {
+    table = gkt::cli::compute_table(scene, {run.exact, run.jobs}, warnings, observer);
+  } catch (const std::invalid_argument&) {
+    // The rows already on standard output (or a FIFO) are not mistaken for the whole table.
+    if (csv && rows_written > 0) try {
+        target.append("# stopped by an error after " + std::to_string(rows_written) + " of " +
+                      std::to_string(gkt::cli::sweep_size(scene)) + " rows\n");
+      } catch (const std::invalid_argument&) {  // the output itself failed: the error says so
+      }
+    throw;
+  }
+  progress.clear();
+  try {
+    if (csv) {
+      if (table.rows.empty()) target.append(header);  // no row yet, or none in the sweep
+      if (table.interrupted) target.append(gkt::cli::csv_interrupted_line(table));
+    } else {
+      target.append(gkt::cli::to_json(table));
+    }
+    target.commit();
+  } catch (const std::invalid_argument& e) {
+    if (!table.interrupted) throw;
+    std::cerr << "gkt: error: " << one_line(e.what()) << "\n";
+    std::_Exit(kBadInput);  // detached workers may still run: no normal exit
+  }
   for (const auto& w : warnings) std::cerr << "gkt: warning: " << w << "\n";
-  return 0;
+  if (!table.interrupted) return 0;
+  std::cerr << "gkt: interrupted after " << table.rows.size() << " of " << table.planned_rows
+            << " rows; the output ends with the marker (docs/conventions.md)\n";
+  std::cerr.flush();
+  std::_Exit(128 + stop_signal);  // rows still computing run in detached threads: no normal exit
 }
 
 int run_models() {
@@ -100,21 +223,6 @@ int printed(int status) {
   return kBadInput;
 }
 
-/// Returns `message` as one line of bounded length: control characters (a newline in a value)
-/// become spaces and anything beyond 400 characters is cut with "…".
-std::string one_line(std::string message) {
-  for (char& c : message)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-  constexpr std::size_t kMaxLength = 400;
-  if (message.size() > kMaxLength) {
-    std::size_t cut = kMaxLength;
-    while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
-    message.resize(cut);
-    message += "…";
-  }
-  return message;
-}
-
 int run(int argc, char** argv) {
   CLI::App app{
       "gkt: Chapman-Enskog transport coefficients of granular and molecular gases from exact "
@@ -123,15 +231,22 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
 
   auto* table = app.add_subcommand("table", "Compute a table of transport coefficients for a scene (TOML)");
-  std::string scene_path, format = "csv", output;
+  std::string scene_path;
+  TableRun table_run;
   std::vector<std::string> overrides;
-  bool exact = false;
   table->add_option("scene", scene_path, "Scene file (TOML), e.g. tables/scenes/*.toml")->required();
   table->add_option("--set", overrides, "Override a scene key: KEY=VALUE (VALUE in TOML syntax); repeatable")
       ->allow_extra_args(false);
-  table->add_option("--format", format, "Output format")->check(CLI::IsMember({"csv", "json"}));
-  table->add_option("--output", output, "Output file (written atomically); default: standard output");
-  table->add_flag("--exact", exact, "Print exact rationals (refused where a result is not rational)");
+  table->add_option("--format", table_run.format, "Output format")->check(CLI::IsMember({"csv", "json"}));
+  table->add_option(
+      "--output", table_run.output,
+      "Output file (replaced when complete, or ends with an interrupted marker); default: standard output");
+  table->add_flag("--exact", table_run.exact, "Print exact rationals (refused where a result is not rational)");
+  const auto add_long_run_options = [](CLI::App* command, TableRun& run) {
+    command->add_option("--jobs", run.jobs, "Rows evaluated in parallel, 1 to 64 (default 1); output unchanged");
+    command->add_flag("--quiet", run.quiet, "No progress line on standard error (warnings stay)");
+  };
+  add_long_run_options(table, table_run);
 
   auto* formula = app.add_subcommand("formula", "Print a coefficient's exact closed form (text, LaTeX or C++)");
   std::string formula_scene, coefficient, formula_format = "text", formula_output;
@@ -146,13 +261,18 @@ int run(int argc, char** argv) {
 
   auto* stability = app.add_subcommand(
       "stability", "Critical wave numbers and system size of the homogeneous cooling state (like table)");
-  std::string stability_scene, stability_format = "csv", stability_output;
+  std::string stability_scene;
+  TableRun stability_run;
+  stability_run.stability = true;
   std::vector<std::string> stability_overrides;
   stability->add_option("scene", stability_scene, "Scene file (TOML), model smooth-inelastic, mixture or viscoelastic")
       ->required();
   stability->add_option("--set", stability_overrides, "Override a scene key: KEY=VALUE; repeatable");
-  stability->add_option("--format", stability_format, "Output format")->check(CLI::IsMember({"csv", "json"}));
-  stability->add_option("--output", stability_output, "Output file (written atomically); default: standard output");
+  stability->add_option("--format", stability_run.format, "Output format")->check(CLI::IsMember({"csv", "json"}));
+  stability->add_option(
+      "--output", stability_run.output,
+      "Output file (replaced when complete, or ends with an interrupted marker); default: standard output");
+  add_long_run_options(stability, stability_run);
 
   auto* evolve = app.add_subcommand("evolve", "Integrate the cooling of a homogeneous gas: T(t), a2(t), ... (CVODE)");
   std::string evolve_scene, evolve_format = "csv", evolve_output;
@@ -182,9 +302,8 @@ int run(int argc, char** argv) {
   }
 
   try {
-    if (table->parsed()) return run_table(scene_path, overrides, format, output, exact);
-    if (stability->parsed())
-      return run_table(stability_scene, stability_overrides, stability_format, stability_output, false, true);
+    if (table->parsed()) return run_table(scene_path, overrides, table_run);
+    if (stability->parsed()) return run_table(stability_scene, stability_overrides, stability_run);
     if (evolve->parsed()) {
       gkt::cli::OutputTarget target(evolve_output);
       std::string counters;

@@ -1,11 +1,20 @@
 #include "table_command.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <exception>
 #include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <thread>
+#include <utility>
 
 namespace gkt::cli {
 
@@ -23,10 +32,180 @@ std::string format_parameter(const Rational& v) {
   return integer_part == v ? v.to_string() : format_number(v.to_double());
 }
 
+/// One finished row: its cells and what the in-order bookkeeping (warnings) needs.
+struct RowResult {
+  std::vector<std::string> cells;
+  std::string tolerance_warning;  ///< empty unless a tolerance was not reached
+  int order = 0;
+  struct Flag {
+    bool unreliable = false;  ///< estimated error above |value|
+    double value = 0, error = 0;
+  };
+  std::vector<Flag> flags;  ///< per coefficient
+  std::exception_ptr failure;
+};
+
+/// Returns the axis indices of row `r` (last axis fastest).
+std::vector<std::size_t> row_index(const Scene& scene, std::size_t r) {
+  std::vector<std::size_t> index(scene.axes.size(), 0);
+  for (std::size_t a = scene.axes.size(); a > 0;) {
+    --a;
+    const std::size_t n = scene.axes[a].values.size();
+    index[a] = r % n;
+    r /= n;
+  }
+  return index;
+}
+
+/// Returns row `r` of the sweep evaluated with `model`.
+RowResult compute_row(TransportModel& model, const Scene& scene, const TableOptions& options, std::size_t r) {
+  const auto index = row_index(scene, r);
+  RowResult result;
+  ParameterPoint parameters;
+  parameters.choices = scene.choices;
+  OrderRequest request;
+  std::vector<std::string>& row = result.cells;
+  for (std::size_t a = 0; a < scene.axes.size(); ++a) {
+    const auto& axis = scene.axes[a];
+    const Rational& v = axis.values[index[a]];
+    if (axis.key == "order")
+      request.order = static_cast<int>(fmpz_get_si(fmpq_numref(v.raw())));
+    else if (axis.key == "tolerance")
+      request.tolerance = v;
+    else
+      parameters.numbers[axis.key] = v;
+    if (axis.swept && axis.key != "order") row.push_back(options.exact ? v.to_string() : format_parameter(v));
+  }
+  auto values = model.evaluate(parameters, scene.coefficients, request);
+  if (request.tolerance) {
+    // One order per row: the smallest at which every requested coefficient meets the tolerance.
+    int common = 0;
+    for (const auto& v : values) common = std::max(common, v.order);
+    const Rational tolerance = *request.tolerance;
+    request.tolerance.reset();
+    request.order = common;
+    auto flags = values;
+    values = model.evaluate(parameters, scene.coefficients, request);
+    for (std::size_t k = 0; k < values.size(); ++k) values[k].converged = flags[k].converged;
+    std::string worst;
+    double worst_error = -1;
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (!values[k].converged && values[k].error.to_double() > worst_error) {
+        worst_error = values[k].error.to_double();
+        worst = scene.coefficients[k];
+      }
+    if (!worst.empty()) {
+      std::string at;
+      for (std::size_t a = 0; a < scene.axes.size(); ++a)
+        if (scene.axes[a].swept && scene.axes[a].key != "tolerance")
+          at += scene.axes[a].key + "=" + format_parameter(scene.axes[a].values[index[a]]) + " ";
+      result.tolerance_warning = at + "tolerance " + format_error(tolerance.to_double()) +
+                                 " not reached: row at order " + std::to_string(common) + ", largest estimated error " +
+                                 format_error(worst_error) + " (" + worst + ")";
+    }
+  }
+  for (const auto& v : values) {
+    if (options.exact && !v.exact)
+      throw std::invalid_argument("--exact: a requested coefficient is not a rational number here (model " +
+                                  scene.model + "); drop --exact");
+    if (!v.defined)
+      row.emplace_back("nan");  // no solution at this order
+    else if (v.infinite)
+      row.emplace_back("inf");  // e.g. critical_length of the elastic gas (JSON: null)
+    else
+      row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double()));
+  }
+  for (const auto& v : values)
+    row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double()) : "nan");
+  result.order = values.empty() ? request.order : values.front().order;
+  row.push_back(std::to_string(result.order));
+  for (const auto& v : values) {
+    RowResult::Flag flag;
+    if (v.defined && v.error_estimated && v.error > v.value.abs()) {
+      flag.unreliable = true;
+      flag.value = v.value.to_double();
+      flag.error = v.error.to_double();
+    }
+    result.flags.push_back(flag);
+  }
+  return result;
+}
+
+/// The rows of a sweep shared between the workers and the thread that collects them in order.
+/// Held by shared pointer: after an interrupt, detached workers may still finish their row.
+struct Sweep {
+  Sweep(const Scene& s, const TableOptions& o) : scene(s), options(o), total(sweep_size(s)) {}
+  const Scene scene;
+  const TableOptions options;
+  const std::size_t total;
+  std::mutex mutex;
+  std::condition_variable finished;
+  std::map<std::size_t, RowResult> results;  ///< finished, not yet collected rows by index; guarded by mutex
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+};
+
+/// Takes the next unclaimed row until none is left or the sweep stops; its own model instance
+/// (models cache state, and so never share one between threads).
+void work(const std::shared_ptr<Sweep>& sweep) {
+  std::unique_ptr<TransportModel> model;
+  while (!sweep->stop) {
+    const std::size_t r = sweep->next.fetch_add(1);
+    if (r >= sweep->total) return;
+    RowResult result;
+    try {
+      if (!model) model = make_transport_model(sweep->scene.model);
+      result = compute_row(*model, sweep->scene, sweep->options, r);
+    } catch (...) {
+      result.failure = std::current_exception();
+      sweep->stop = true;  // rows after a failure are not needed
+    }
+    {
+      const std::lock_guard lock(sweep->mutex);
+      sweep->results.emplace(r, std::move(result));
+    }
+    sweep->finished.notify_all();
+  }
+}
+
+/// The worker threads: joined when the sweep ends normally or by an error, detached on interrupt.
+class Workers {
+ public:
+  Workers(const std::shared_ptr<Sweep>& sweep, int jobs) : sweep_(sweep) {
+    const std::size_t n =
+        std::min<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), std::max<std::size_t>(sweep->total, 1));
+    for (std::size_t i = 0; i < n; ++i) threads_.emplace_back(work, sweep);
+  }
+  ~Workers() {
+    sweep_->stop = true;
+    for (auto& t : threads_)
+      if (t.joinable()) t.join();
+  }
+  Workers(const Workers&) = delete;
+  Workers& operator=(const Workers&) = delete;
+  void detach() {
+    sweep_->stop = true;
+    for (auto& t : threads_) t.detach();
+  }
+
+ private:
+  std::shared_ptr<Sweep> sweep_;
+  std::vector<std::thread> threads_;
+};
+
 }  // namespace
 
+std::size_t sweep_size(const Scene& scene) {
+  std::size_t n = 1;
+  for (const auto& axis : scene.axes) n *= axis.values.size();
+  return n;
+}
+
 Table compute_table(const Scene& scene, const TableOptions& options, std::vector<std::string>& warnings) {
-  auto model = make_transport_model(scene.model);
+  return compute_table(scene, options, warnings, RowObserver{});
+}
+
+Table table_header(const Scene& scene, const TableOptions& options) {
   Table table;
   table.model = scene.model;
   for (const auto& axis : scene.axes)
@@ -44,6 +223,13 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
   }
   table.columns.push_back("order");
   table.numeric.push_back(true);
+  table.planned_rows = sweep_size(scene);
+  return table;
+}
+
+Table compute_table(const Scene& scene, const TableOptions& options, std::vector<std::string>& warnings,
+                    const RowObserver& observer) {
+  Table table = table_header(scene, options);
 
   // Values whose estimated error exceeds their magnitude: counted per coefficient, the worst
   // (largest error/|value|) kept, one warning line each at the end.
@@ -53,97 +239,53 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
     std::string where;
   };
   std::vector<Unreliable> unreliable(scene.coefficients.size());
-  std::size_t row_count = 0;
 
-  // Cartesian product of the axes, last axis fastest.
-  std::vector<std::size_t> index(scene.axes.size(), 0);
-  for (bool more = true; more;) {
-    ParameterPoint parameters;
-    parameters.choices = scene.choices;
-    OrderRequest request;
-    std::vector<std::string> row;
-    for (std::size_t a = 0; a < scene.axes.size(); ++a) {
-      const auto& axis = scene.axes[a];
-      const Rational& v = axis.values[index[a]];
-      if (axis.key == "order")
-        request.order = static_cast<int>(fmpz_get_si(fmpq_numref(v.raw())));
-      else if (axis.key == "tolerance")
-        request.tolerance = v;
-      else
-        parameters.numbers[axis.key] = v;
-      if (axis.swept && axis.key != "order") row.push_back(options.exact ? v.to_string() : format_parameter(v));
-    }
-    auto values = model->evaluate(parameters, scene.coefficients, request);
-    if (request.tolerance) {
-      // One order per row: the smallest at which every requested coefficient meets the tolerance.
-      int common = 0;
-      for (const auto& v : values) common = std::max(common, v.order);
-      const Rational tolerance = *request.tolerance;
-      request.tolerance.reset();
-      request.order = common;
-      auto flags = values;
-      values = model->evaluate(parameters, scene.coefficients, request);
-      for (std::size_t k = 0; k < values.size(); ++k) values[k].converged = flags[k].converged;
-      std::string worst;
-      double worst_error = -1;
-      for (std::size_t k = 0; k < values.size(); ++k)
-        if (!values[k].converged && values[k].error.to_double() > worst_error) {
-          worst_error = values[k].error.to_double();
-          worst = scene.coefficients[k];
+  auto sweep = std::make_shared<Sweep>(scene, options);
+  Workers workers(sweep, options.jobs);
+  const auto stop_requested = [&observer] { return observer.stop && observer.stop(); };
+  for (std::size_t r = 0; r < sweep->total; ++r) {
+    std::optional<RowResult> finished;
+    {
+      std::unique_lock lock(sweep->mutex);
+      while (sweep->results.count(r) == 0 && !stop_requested()) {
+        sweep->finished.wait_for(lock, std::chrono::milliseconds(100));
+        if (sweep->results.count(r) == 0 && observer.on_wait) {
+          lock.unlock();
+          observer.on_wait(r, sweep->total);
+          lock.lock();
         }
-      if (!worst.empty()) {
-        std::string at;
-        for (std::size_t a = 0; a < scene.axes.size(); ++a)
-          if (scene.axes[a].swept && scene.axes[a].key != "tolerance")
-            at += scene.axes[a].key + "=" + format_parameter(scene.axes[a].values[index[a]]) + " ";
-        warnings.push_back(at + "tolerance " + format_error(tolerance.to_double()) + " not reached: row at order " +
-                           std::to_string(common) + ", largest estimated error " + format_error(worst_error) + " (" +
-                           worst + ")");
       }
+      if (auto node = sweep->results.extract(r)) finished = std::move(node.mapped());
     }
-    for (const auto& v : values) {
-      if (options.exact && !v.exact)
-        throw std::invalid_argument("--exact: a requested coefficient is not a rational number here (model " +
-                                    scene.model + "); drop --exact");
-      if (!v.defined)
-        row.emplace_back("nan");  // no solution at this order
-      else if (v.infinite)
-        row.emplace_back("inf");  // e.g. critical_length of the elastic gas (JSON: null)
-      else
-        row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double()));
+    if (!finished) {  // interrupted: the rows finished in order are kept
+      table.interrupted = true;
+      workers.detach();
+      break;
     }
-    for (const auto& v : values)
-      row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double()) : "nan");
-    const int row_order = values.empty() ? request.order : values.front().order;
-    row.push_back(std::to_string(row_order));
-    table.rows.push_back(std::move(row));
-    ++row_count;
-    for (std::size_t k = 0; k < values.size(); ++k) {
-      const auto& v = values[k];
-      if (!v.defined || !v.error_estimated || !(v.error > v.value.abs())) continue;
+    if (finished->failure) std::rethrow_exception(finished->failure);  // ~Workers joins
+    if (!finished->tolerance_warning.empty()) warnings.push_back(std::move(finished->tolerance_warning));
+    const auto index = row_index(scene, r);
+    for (std::size_t k = 0; k < finished->flags.size(); ++k) {
+      const auto& flag = finished->flags[k];
+      if (!flag.unreliable) continue;
       auto& u = unreliable[k];
       ++u.rows;
-      const double value = v.value.to_double(), error = v.error.to_double();
-      const double ratio = value == 0 ? HUGE_VAL : error / std::abs(value);
+      const double ratio = flag.value == 0 ? HUGE_VAL : flag.error / std::abs(flag.value);
       if (ratio > u.ratio) {
         u.ratio = ratio;
-        u.value = value;
-        u.error = error;
+        u.value = flag.value;
+        u.error = flag.error;
         u.where.clear();
         for (std::size_t a = 0; a < scene.axes.size(); ++a)
           if (scene.axes[a].swept && scene.axes[a].key != "order")
             u.where += scene.axes[a].key + "=" + format_parameter(scene.axes[a].values[index[a]]) + ", ";
-        u.where += "order " + std::to_string(row_order);
+        u.where += "order " + std::to_string(finished->order);
       }
     }
-
-    more = false;
-    for (std::size_t a = scene.axes.size(); a > 0 && !more;) {
-      --a;
-      more = ++index[a] < scene.axes[a].values.size();
-      if (!more) index[a] = 0;
-    }
+    table.rows.push_back(std::move(finished->cells));
+    if (observer.on_row) observer.on_row(table.rows.back(), table.rows.size(), sweep->total);
   }
+  const std::size_t row_count = table.rows.size();
   for (std::size_t k = 0; k < unreliable.size(); ++k) {
     const auto& u = unreliable[k];
     if (u.rows == 0) continue;

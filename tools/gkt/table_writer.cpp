@@ -42,17 +42,24 @@ std::string quote_short(const std::string& text) {
   return text.substr(0, cut) + "…";
 }
 
-std::string to_csv(const Table& t) {
+std::string csv_line(const std::vector<std::string>& cells) {
   std::string out;
-  auto append_line = [&out](const std::vector<std::string>& cells) {
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-      if (c > 0) out += ',';
-      out += cells[c];
-    }
-    out += '\n';
-  };
-  append_line(t.columns);
-  for (const auto& row : t.rows) append_line(row);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    if (c > 0) out += ',';
+    out += cells[c];
+  }
+  out += '\n';
+  return out;
+}
+
+std::string csv_interrupted_line(const Table& t) {
+  return "# interrupted after " + std::to_string(t.rows.size()) + " of " + std::to_string(t.planned_rows) + " rows\n";
+}
+
+std::string to_csv(const Table& t) {
+  std::string out = csv_line(t.columns);
+  for (const auto& row : t.rows) out += csv_line(row);
+  if (t.interrupted) out += csv_interrupted_line(t);
   return out;
 }
 
@@ -74,6 +81,10 @@ std::string to_json(const Table& t) {
     rows.push_back(std::move(r));
   }
   doc["rows"] = std::move(rows);
+  if (t.interrupted) {
+    doc["interrupted"] = true;
+    doc["planned_rows"] = t.planned_rows;
+  }
   return doc.dump(2) + "\n";
 }
 
@@ -179,31 +190,60 @@ OutputTarget::~OutputTarget() {
 }
 
 void OutputTarget::write(const std::string& content) {
+  append(content);
+  commit();
+}
+
+void OutputTarget::append(const std::string& chunk) {
   switch (kind_) {
     case Kind::standard_output: {
       std::cout.flush();
       errno = 0;
-      const std::size_t written = std::fwrite(content.data(), 1, content.size(), stdout);
-      const bool failed = written != content.size() || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+      const std::size_t written = std::fwrite(chunk.data(), 1, chunk.size(), stdout);
+      const bool failed = written != chunk.size() || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
       if (failed) throw output_error("standard output", "write failed (" + reason(errno != 0 ? errno : EIO) + ")");
       return;
     }
     case Kind::direct: {
-      const int descriptor = ::open(path_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
-      if (descriptor < 0) throw output_error(path_, "cannot open for writing (" + reason(errno) + ")");
-      const int failure = write_all(descriptor, content);
-      const int closed = ::close(descriptor) == 0 ? 0 : errno;
-      if (failure != 0 || closed != 0)
-        throw output_error(path_, "write failed (" + reason(failure != 0 ? failure : closed) + ")");
+      if (descriptor_ < 0) {
+        descriptor_ = ::open(path_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+        if (descriptor_ < 0) throw output_error(path_, "cannot open for writing (" + reason(errno) + ")");
+      }
+      const int failure = write_all(descriptor_, chunk);
+      if (failure != 0) {
+        ::close(descriptor_);
+        descriptor_ = -1;
+        throw output_error(path_, "write failed (" + reason(failure) + ")");
+      }
       return;
     }
     case Kind::replace: {
-      int failure = write_all(descriptor_, content);
+      const int failure = descriptor_ < 0 ? EBADF : write_all(descriptor_, chunk);
+      if (failure != 0) throw output_error(path_, "write failed (" + reason(failure) + "); nothing was written");
+      return;  // ~OutputTarget removes the temporary file unless commit() renamed it
+    }
+  }
+}
+
+void OutputTarget::commit() {
+  switch (kind_) {
+    case Kind::standard_output:
+      append("");
+      return;
+    case Kind::direct: {
+      if (descriptor_ < 0) append("");  // opens: an empty output still reaches the FIFO or device
+      const int closed = ::close(descriptor_) == 0 ? 0 : errno;
+      descriptor_ = -1;
+      if (closed != 0) throw output_error(path_, "write failed (" + reason(closed) + ")");
+      return;
+    }
+    case Kind::replace: {
+      int failure = descriptor_ < 0 ? EBADF : 0;
       if (failure == 0 && owner_ >= 0 && ::geteuid() == 0)  // root replacing a user's file keeps its owner
         static_cast<void>(::fchown(descriptor_, static_cast<uid_t>(owner_), static_cast<gid_t>(group_)));
       if (failure == 0 && ::fchmod(descriptor_, static_cast<mode_t>(mode_)) != 0) failure = errno;
       if (failure == 0 && ::fsync(descriptor_) != 0 && errno != EINVAL) failure = errno;
-      const int closed = ::close(descriptor_) == 0 ? 0 : errno;
+      const int closed = descriptor_ < 0 || ::close(descriptor_) == 0 ? 0 : errno;
       descriptor_ = -1;
       if (failure == 0) failure = closed;
       if (failure != 0) throw output_error(path_, "write failed (" + reason(failure) + "); nothing was written");

@@ -1,7 +1,8 @@
-// Formatting of result tables (CSV, JSON) and atomic output: nothing is written unless the
-// whole table was computed.
+// Formatting of result tables (CSV, JSON) and output that replaces a file only when it is complete
+// (or carries an end marker, docs/conventions.md "Long runs").
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,9 @@ struct Table {
   std::string model;
   std::vector<std::string> columns;
   std::vector<std::vector<std::string>> rows;
-  std::vector<bool> numeric;  ///< per column: emit as a JSON number (else a string)
+  std::vector<bool> numeric;     ///< per column: emit as a JSON number (else a string)
+  std::size_t planned_rows = 0;  ///< rows of the whole sweep (more than rows.size() if interrupted)
+  bool interrupted = false;      ///< the sweep was ended by a signal: rows holds the finished ones
 };
 
 /// Returns x in the shortest decimal that reads back as the same double (std::to_chars).
@@ -27,7 +30,12 @@ std::string quote_short(const std::string& text);
 
 /// Returns the table as CSV (header line, one line per row).
 std::string to_csv(const Table& t);
-/// Returns the table as JSON: {"model": …, "columns": […], "rows": [{column: value, …}, …]}.
+/// Returns the CSV line of a header or a row (cells joined by ',', then a newline).
+std::string csv_line(const std::vector<std::string>& cells);
+/// Returns the last line of an interrupted CSV table: "# interrupted after N of M rows".
+std::string csv_interrupted_line(const Table& t);
+/// Returns the table as JSON: {"model": …, "columns": […], "rows": [{column: value, …}, …]},
+/// for an interrupted table followed by "interrupted": true and "planned_rows": M.
 std::string to_json(const Table& t);
 
 /// Where a command's output goes: standard output (empty path) or the file `path`. Built before
@@ -54,12 +62,19 @@ class OutputTarget {
   /// write failed (<reason>)" when anything is lost (a full disk, /dev/full, a closed stream).
   void write(const std::string& content);
 
+  /// Writes `chunk` now: to standard output (flushed), the FIFO or device, or the temporary file,
+  /// which grows until commit(). Throws like write(); a temporary file is then discarded.
+  void append(const std::string& chunk);
+  /// Ends the output: flushes standard output, closes the FIFO or device, or renames the
+  /// temporary file over the target. Throws like write().
+  void commit();
+
  private:
   enum class Kind { standard_output, replace, direct };
   std::string path_;
   Kind kind_ = Kind::standard_output;
   std::string temporary_;  ///< Kind::replace: the temporary file beside the target
-  int descriptor_ = -1;    ///< Kind::replace: open on temporary_
+  int descriptor_ = -1;    ///< open on temporary_ (replace) or on the target (direct, from the first append)
   unsigned mode_ = 0;      ///< permissions the committed file gets
   long owner_ = -1, group_ = -1;
 };
