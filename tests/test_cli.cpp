@@ -379,7 +379,7 @@ TEST(CliEvolve, StatisticsAndBadInput) {
            {" --set order=13", "order: must be an integer in [1, 12]"},
            {" --set 'times=[2, 1]'", "times: must be a non-empty list of increasing times > 0"},
            {" --set delta=0.1", "delta: unknown key for gkt evolve"},
-           {" --set 'model=\"hard-spheres\"'", "model: gkt evolve supports \"smooth-inelastic\""}}) {
+           {" --set 'model=\"hard-spheres\"'", "model: gkt evolve supports \"aggregation\", \"smooth-inelastic\""}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --output " + out + args);
     EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
@@ -799,8 +799,11 @@ TEST(CliAggregation, EvolveTableAndBadInput) {
   EXPECT_NEAR(std::stod(t[1][0]), 1 - 2 * std::exp(-1.0), 1e-14);  // liu2011aggregation eq. (48), x = 1
 
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
-           {" --set critical_energy=-1", "critical_energy: must be a number in [0, 1e6]"},
-           {" --set sizes=1", "sizes: must be an integer in [2, 20000]"},
+           {" --set critical_energy=-1", "critical_energy: must be a number in [0, 1000000], got -1"},
+           {" --set sizes=1", "sizes: must be an integer in [2, "},
+           {" --set sizes=20001", "sizes: must be an integer in [2, 20000], got 20001"},
+           {" --set distribution=1", "distribution: must be true or false"},
+           {" --set 'times=[1.0]'", "times: unknown key for gkt evolve with model \"aggregation\""},
            {" --set 'kernel=\"foo\"'", "kernel: must be one of \"kinetic\", \"constant\", \"sum\""},
            {" --set 'criterion=\"sticky\"'", "criterion: must be one of"},
            {" --set order=2", "order: unknown key for gkt evolve with model \"aggregation\""},

@@ -204,11 +204,16 @@ TEST(CliOutput, TerminatedRunLeavesNoTemporaryFile) {
       "timeout 1 " + gkt_binary() + " table " + scene + " --output " + (dir / "table.csv").string() + " 2>/dev/null";
   const int raw = std::system(cmd.c_str());
   EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 124);  // still computing when terminated
+  // No temporary file is left. Whether the table exists depends on how far the run got in 1 s (a
+  // loaded or sanitized build may still be validating the sweep): if it does, it is marked partial.
   std::size_t files = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
-  EXPECT_EQ(files, 2U);  // the scene and the table
-  const std::string table = read_file(dir / "table.csv");
-  EXPECT_NE(table.find(" of 1000000 rows\n"), std::string::npos) << table.substr(0, 200);
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().filename() != "scene.toml" && entry.path().filename() != "table.csv") ++files;
+  EXPECT_EQ(files, 0U);
+  if (fs::exists(dir / "table.csv")) {
+    const std::string table = read_file(dir / "table.csv");
+    EXPECT_NE(table.find(" of 1000000 rows\n"), std::string::npos) << table.substr(0, 200);
+  }
   fs::remove_all(dir);
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <variant>
 
+#include "gkt/evolution/aggregation_evolution.hpp"
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/models/transport_model.hpp"
 #include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
@@ -199,4 +200,37 @@ TEST(ModelFacade, CoolingTrajectoryThroughTheModel) {
   bad = request;
   bad.times = {2, 1};
   EXPECT_TRUE(contains(refusal([&] { (void)model->evolve(bad); }), "times: must be a non-empty list"));
+}
+
+// `gkt evolve` asks the aggregation model too: it sets its own output times from t_end and points,
+// and its trajectory (and long-format distribution) equals the population balance called directly.
+TEST(ModelFacade, AggregationTrajectoryThroughTheModel) {
+  auto model = gkt::make_transport_model("aggregation");
+  ASSERT_TRUE(model->supports(Capability::evolve));
+  gkt::TrajectoryRequest request;
+  request.parameters.numbers = {
+      {"alpha", Rational(9, 10)}, {"sizes", Rational(20)}, {"t_end", Rational(2)}, {"points", Rational(4)}};
+  request.parameters.choices = {{"distribution", "true"}};
+  const gkt::Trajectory t = model->evolve(request);
+  gkt::AggregationGas gas;
+  gas.alpha = 0.9;
+  gas.critical_energy = 1;  // the model's default
+  const auto direct = gkt::evolve_aggregation(gas, 20, gkt::log_spaced_times(2, 4), 1e-8, 1e-14, true);
+  ASSERT_EQ(t.columns.size(), 8U);
+  EXPECT_EQ(t.columns.back(), "size_density");
+  ASSERT_EQ(t.rows.size(), 4U * 20U);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(t.rows[i * 20][0], direct.samples[i].time);
+    EXPECT_EQ(t.rows[i * 20][1], direct.samples[i].temperature);
+    EXPECT_EQ(t.rows[i * 20 + 19][7], direct.samples[i].distribution[19]);
+  }
+  EXPECT_EQ(t.linear_solver, direct.linear_solver);
+  request.times = {1.0};
+  EXPECT_TRUE(contains(refusal([&] { (void)model->evolve(request); }), "times: model \"aggregation\" sets its"));
+  request.times.clear();
+  request.parameters.numbers.erase("t_end");
+  EXPECT_TRUE(contains(refusal([&] { (void)model->evolve(request); }), "t_end: required"));
+  request.parameters.numbers["t_end"] = Rational(2);
+  request.parameters.choices["distribution"] = "yes";
+  EXPECT_TRUE(contains(refusal([&] { (void)model->evolve(request); }), "distribution: must be one of"));
 }

@@ -82,6 +82,13 @@ class AggregationModel final : public TransportModel {
              {"kinetic", "constant", "sum"}}};
   }
   [[nodiscard]] int max_order() const override { return 1; }
+  [[nodiscard]] bool supports(Capability capability) const override {
+    return capability == Capability::table || capability == Capability::evolve;
+  }
+  [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
+    return aggregation_evolution_parameters();
+  }
+  Trajectory evolve(const TrajectoryRequest& request) override { return aggregation_trajectory(request); }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {

@@ -33,6 +33,11 @@ std::vector<ParameterSpec> output_time_parameters() {
            {}}};
 }
 
+bool sets_own_output_times(const std::vector<ParameterSpec>& evolution_parameters) {
+  return std::any_of(evolution_parameters.begin(), evolution_parameters.end(),
+                     [](const ParameterSpec& s) { return s.name == "t_end"; });
+}
+
 std::vector<double> log_spaced_times(double t_end, int points) {
   std::vector<double> times;
   const double start = std::min(0.01, t_end / 100);

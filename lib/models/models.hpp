@@ -26,6 +26,12 @@ std::unique_ptr<TransportModel> make_viscoelastic_model();
 std::unique_ptr<TransportModel> make_mixture_model();
 std::unique_ptr<TransportModel> make_rough_model();
 std::unique_ptr<TransportModel> make_aggregation_model();
+/// Returns the keys of `gkt evolve` for the aggregation model (aggregation_trajectory.cpp), its
+/// output times (t_end, points) and size grid among them.
+std::vector<ParameterSpec> aggregation_evolution_parameters();
+/// Returns the aggregation trajectory of a validated request (request.times empty: the model sets
+/// its times from t_end and points): the moments, or with distribution = true the long format.
+Trajectory aggregation_trajectory(const TrajectoryRequest& request);
 std::unique_ptr<TransportModel> make_rough_walton_model();
 
 /// Returns `model` behind a guard that validates every call against the model's schema first

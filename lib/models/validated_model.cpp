@@ -54,11 +54,17 @@ class ValidatedModel final : public TransportModel {
   }
   Trajectory evolve(const TrajectoryRequest& request) override {
     if (!model_->supports(Capability::evolve)) return TransportModel::evolve(request);
-    validate_parameters(model_->evolution_parameters(), request.parameters, owner(*model_) + " (evolution)");
-    for (std::size_t i = 0; i < request.times.size(); ++i)
-      if (!(request.times[i] > 0) || (i > 0 && !(request.times[i] > request.times[i - 1])))
-        throw std::invalid_argument("times: must be a non-empty list of increasing times > 0");
-    if (request.times.empty()) throw std::invalid_argument("times: must be a non-empty list of increasing times > 0");
+    const auto schema = model_->evolution_parameters();
+    validate_parameters(schema, request.parameters, owner(*model_) + " (evolution)");
+    if (sets_own_output_times(schema)) {
+      if (!request.times.empty())
+        throw std::invalid_argument("times: " + owner(*model_) + " sets its output times from t_end and points");
+    } else {
+      for (std::size_t i = 0; i < request.times.size(); ++i)
+        if (!(request.times[i] > 0) || (i > 0 && !(request.times[i] > request.times[i - 1])))
+          throw std::invalid_argument("times: must be a non-empty list of increasing times > 0");
+      if (request.times.empty()) throw std::invalid_argument("times: must be a non-empty list of increasing times > 0");
+    }
     const auto offered = model_->trajectory_coefficients();
     for (const auto& c : request.coefficients)
       if (std::find(offered.begin(), offered.end(), c) == offered.end())

@@ -4,7 +4,6 @@
 #include <set>
 #include <stdexcept>
 
-#include "evolve_aggregation.hpp"
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/models/transport_model.hpp"
 #include "scene.hpp"
@@ -29,6 +28,43 @@ void read_number(const toml::table& t, const ParameterSpec& spec, ParameterPoint
   point.numbers[spec.name] = scene_number(*node, spec.name);
 }
 
+/// Reads the choice `spec.name` of the scene into `point` (absent: not in `point`); a true/false
+/// choice is a TOML boolean. The model's guard checks the value against the choices.
+void read_choice(const toml::table& t, const ParameterSpec& spec, ParameterPoint& point) {
+  const auto* node = t.get(spec.name);
+  if (node == nullptr) return;
+  if (spec.choices == std::vector<std::string>{"false", "true"}) {
+    if (!node->is_boolean()) throw error(spec.name + ": must be true or false");
+    point.choices[spec.name] = node->as_boolean()->get() ? "true" : "false";
+    return;
+  }
+  if (!node->is_string()) throw error(spec.name + ": must be " + spec.allowed() + ", got a non-string");
+  point.choices[spec.name] = node->as_string()->get();
+}
+
+/// Returns the output times of the scene: its list `times`, or t_end/points log-spaced.
+std::vector<double> read_output_times(const toml::table& t) {
+  if (const auto* list = t.get("times")) {
+    if (t.contains("t_end") || t.contains("points")) throw error("times: give either times or t_end/points");
+    const auto* array = list->as_array();
+    if (array == nullptr || array->empty()) throw error("times: must be a non-empty list of increasing times > 0");
+    if (array->size() > static_cast<std::size_t>(kMaxPoints))
+      throw error("times: at most " + std::to_string(kMaxPoints) + " output times, got " +
+                  std::to_string(array->size()));
+    std::vector<double> times;
+    for (const auto& item : *array) times.push_back(scene_number(item, "times").to_double());
+    return times;
+  }
+  if (!t.contains("t_end")) throw error("t_end: required (a number > 0), or give times = [...]");
+  const auto time_specs = output_time_parameters();
+  ParameterPoint range;
+  for (const auto& spec : time_specs) read_number(t, spec, range);
+  validate_parameters(time_specs, range, "the output times");
+  const Rational t_end = range.numbers.at("t_end");
+  const Rational points = range.number("points", find_parameter(time_specs, "points").default_value);
+  return log_spaced_times(t_end.to_double(), static_cast<int>(points.to_double()));
+}
+
 /// Returns the models that integrate a cooling trajectory, for the error of any other model.
 std::invalid_argument unsupported_model() {
   std::vector<std::string> names;
@@ -47,8 +83,6 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
 
 Table evolve(const toml::table& t, std::string& counters) {
   const auto* model_node = t.get("model");
-  if (model_node != nullptr && model_node->is_string() && model_node->as_string()->get() == "aggregation")
-    return evolve_aggregation_scene(t, counters);  // sticking grains (issue 21): evolve_aggregation.cpp
   if (model_node == nullptr || !model_node->is_string()) throw unsupported_model();
   const std::string model_name = model_node->as_string()->get();
   const auto names = transport_model_names();
@@ -56,37 +90,31 @@ Table evolve(const toml::table& t, std::string& counters) {
   const auto model = make_transport_model(model_name);
   if (!model->supports(Capability::evolve)) throw unsupported_model();
 
-  // The model's evolution parameters, the output times and the coefficients are the keys.
+  // The model's evolution parameters, the output times (unless the model sets its own, from its
+  // t_end and points) and the coefficients offered along the trajectory are the keys.
   const auto specs = model->evolution_parameters();
-  const auto time_specs = output_time_parameters();
-  std::set<std::string> valid{"model", "times", "coefficients"};
+  const bool own_times = sets_own_output_times(specs);
+  const auto time_specs = own_times ? std::vector<ParameterSpec>{} : output_time_parameters();
+  std::set<std::string> valid{"model"};
+  if (!own_times) valid.insert("times");
+  if (!model->trajectory_coefficients().empty()) valid.insert("coefficients");
   for (const auto& s : specs) valid.insert(s.name);
   for (const auto& s : time_specs) valid.insert(s.name);
   for (const auto& [key, value] : t) {
     const std::string k(key.str());
     if (!valid.contains(k))
-      throw error(k + ": unknown key for gkt evolve; valid keys: " + join({valid.begin(), valid.end()}));
+      throw error(k + ": unknown key for gkt evolve with model \"" + model_name +
+                  "\"; valid keys: " + join({valid.begin(), valid.end()}));
   }
   TrajectoryRequest request;
-  for (const auto& spec : specs) read_number(t, spec, request.parameters);
-
-  if (const auto* list = t.get("times")) {
-    if (t.contains("t_end") || t.contains("points")) throw error("times: give either times or t_end/points");
-    const auto* array = list->as_array();
-    if (array == nullptr || array->empty()) throw error("times: must be a non-empty list of increasing times > 0");
-    if (array->size() > static_cast<std::size_t>(kMaxPoints))
-      throw error("times: at most " + std::to_string(kMaxPoints) + " output times, got " +
-                  std::to_string(array->size()));
-    for (const auto& item : *array) request.times.push_back(scene_number(item, "times").to_double());
-  } else {
-    if (!t.contains("t_end")) throw error("t_end: required (a number > 0), or give times = [...]");
-    ParameterPoint range;
-    for (const auto& spec : time_specs) read_number(t, spec, range);
-    validate_parameters(time_specs, range, "the output times");
-    const Rational t_end = range.numbers.at("t_end");
-    const Rational points = range.number("points", find_parameter(time_specs, "points").default_value);
-    request.times = log_spaced_times(t_end.to_double(), static_cast<int>(points.to_double()));
+  for (const auto& spec : specs) {
+    if (spec.kind == ParameterSpec::Kind::choice)
+      read_choice(t, spec, request.parameters);
+    else
+      read_number(t, spec, request.parameters);
   }
+
+  if (!own_times) request.times = read_output_times(t);
   if (const auto* c = t.get("coefficients")) {
     const auto* array = c->as_array();
     if (array == nullptr || array->empty()) throw error("coefficients: must be a non-empty list of names");
@@ -111,8 +139,9 @@ Table evolve(const toml::table& t, std::string& counters) {
     table.rows.push_back(std::move(row));
   }
   const auto& n = trajectory.counters;
-  counters = "cvode: steps=" + std::to_string(n.steps) + " rhs=" + std::to_string(n.rhs_evaluations) +
-             " jacobians=" + std::to_string(n.jacobian_evaluations) +
+  counters = "cvode: " + (trajectory.linear_solver.empty() ? "" : "linear_solver=" + trajectory.linear_solver + " ") +
+             "steps=" + std::to_string(n.steps) + " rhs=" + std::to_string(n.rhs_evaluations) +
+             (trajectory.linear_solver.empty() ? " jacobians=" + std::to_string(n.jacobian_evaluations) : "") +
              " error_test_failures=" + std::to_string(n.error_test_failures) +
              " newton_iterations=" + std::to_string(n.nonlinear_iterations);
   return table;
