@@ -295,7 +295,7 @@ class MixtureModel final : public TransportModel {
       for (std::size_t i = 0; i < s; ++i) {
         const int a = static_cast<int>(i) + 1;
         for (const auto& [base, field] : per_species)
-          if (name == index_name(base, a)) return [i, field](const AtOrder& o) { return (o.values.*field)[i]; };
+          if (name == index_name(base, a)) return [i, f = field](const AtOrder& o) { return (o.values.*f)[i]; };
         if (name == index_name("thermal_diffusion_factor", a))
           return [i, g = gravity](const AtOrder& o) {
             const MixtureTransportValues& v = o.values;
@@ -304,7 +304,7 @@ class MixtureModel final : public TransportModel {
         for (std::size_t j = 0; j < s; ++j)
           for (const auto& [base, field] : per_pair)
             if (name == index_name(base, a, static_cast<int>(j) + 1))
-              return [k = i * s + j, field](const AtOrder& o) { return (o.values.*field)[k]; };
+              return [k = i * s + j, f = field](const AtOrder& o) { return (o.values.*f)[k]; };
       }
       throw std::logic_error("mixture: no transport value named " + name);
     }
