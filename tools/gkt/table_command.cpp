@@ -16,6 +16,8 @@
 #include <thread>
 #include <utility>
 
+#include "gkt/algebra/thread_caches.hpp"
+
 namespace gkt::cli {
 
 namespace {
@@ -147,7 +149,7 @@ struct Sweep {
 
 /// Takes the next unclaimed row until none is left or the sweep stops; its own model instance
 /// (models cache state, and so never share one between threads).
-void work(const std::shared_ptr<Sweep>& sweep) {
+void work_rows(const std::shared_ptr<Sweep>& sweep) {
   std::unique_ptr<TransportModel> model;
   while (!sweep->stop) {
     const std::size_t r = sweep->next.fetch_add(1);
@@ -166,6 +168,12 @@ void work(const std::shared_ptr<Sweep>& sweep) {
     }
     sweep->finished.notify_all();
   }
+}
+
+/// One worker thread: its rows, then (its model destroyed) its exact-arithmetic caches freed.
+void work(const std::shared_ptr<Sweep>& sweep) {
+  work_rows(sweep);
+  release_thread_arithmetic_caches();
 }
 
 /// The worker threads: joined when the sweep ends normally or by an error, detached on interrupt.
