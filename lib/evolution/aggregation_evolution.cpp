@@ -14,25 +14,18 @@
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "evolution/cvode_support.hpp"
+
 namespace gkt {
 
 namespace {
 
-struct ContextDeleter {
-  void operator()(SUNContext c) const { SUNContext_Free(&c); }
-};
-struct VectorDeleter {
-  void operator()(N_Vector v) const { N_VDestroy(v); }
-};
-struct MatrixDeleter {
-  void operator()(SUNMatrix m) const { SUNMatDestroy(m); }
-};
-struct SolverDeleter {
-  void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); }
-};
-struct CvodeDeleter {
-  void operator()(void* mem) const { CVodeFree(&mem); }
-};
+using detail::check;
+using detail::ContextDeleter;
+using detail::CvodeDeleter;
+using detail::MatrixDeleter;
+using detail::SolverDeleter;
+using detail::VectorDeleter;
 
 constexpr int kDenseLimit = 64;  // dense direct solver up to K = 64, Krylov (SPGMR) above
 
@@ -110,10 +103,6 @@ int rates(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   if (!(yv[p.pivots.size()] > 0)) return 1;  // recoverable: CVODE retries with a smaller step
   balance(p, yv, N_VGetArrayPointer(ydot));
   return 0;
-}
-
-void check(int flag, const char* what) {
-  if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + what + " failed (flag " + std::to_string(flag) + ")");
 }
 
 void keep_message(int error_code, const char*, const char*, char* message, void* data) {

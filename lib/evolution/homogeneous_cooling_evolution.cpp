@@ -13,26 +13,18 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "evolution/cvode_support.hpp"
+
 namespace gkt {
 
 namespace {
 
-// RAII owners of the SUNDIALS objects (C API).
-struct ContextDeleter {
-  void operator()(SUNContext c) const { SUNContext_Free(&c); }
-};
-struct VectorDeleter {
-  void operator()(N_Vector v) const { N_VDestroy(v); }
-};
-struct MatrixDeleter {
-  void operator()(SUNMatrix m) const { SUNMatDestroy(m); }
-};
-struct SolverDeleter {
-  void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); }
-};
-struct CvodeDeleter {
-  void operator()(void* mem) const { CVodeFree(&mem); }
-};
+using detail::check;
+using detail::ContextDeleter;
+using detail::CvodeDeleter;
+using detail::MatrixDeleter;
+using detail::SolverDeleter;
+using detail::VectorDeleter;
 
 /// State y = (θ = T/T0, C, a_2 … a_K); rates (theory.md (12.1)). The hierarchy is fixed (constant
 /// α) or re-evaluated at δ'(θ) (viscoelastic).
@@ -101,10 +93,6 @@ int jacobian(sunrealtype, N_Vector y, N_Vector, SUNMatrix jm, void* data, N_Vect
       SM_ELEMENT_D(jm, k, q) = sq * p.jac[static_cast<std::size_t>(k - 2) * unknowns + (q - 2)] / p.h->norm(k);
   }
   return 0;
-}
-
-void check(int flag, const char* what) {
-  if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + what + " failed (flag " + std::to_string(flag) + ")");
 }
 
 /// CVODE's error handler: keeps the last error message (one line) instead of printing it.
