@@ -117,7 +117,7 @@ TEST(RoughHomogeneousCoolingState, TemperatureRatioAgainstDsmc) {
     const auto linear = rough_homogeneous_cooling_state(c.d, c.alpha, c.beta, c.kappa, RoughHcsScheme::linear);
     ASSERT_TRUE(linear.linear_scheme_solved);
     const auto sim = gkt::test::run_rough_hcs_dsmc(c.d, c.alpha.to_double(), c.beta.to_double(), c.kappa.to_double(),
-                                                   maxwellian.temperature_ratio, 4000, 20, 100, 1, 5);
+                                                   maxwellian.temperature_ratio, 4000, 20, 50, 10, 5);
     EXPECT_LT(sim.theta_error, 0.005 * sim.theta) << "DSMC too noisy to discriminate";
     EXPECT_NEAR(linear.temperature_ratio, sim.theta, 4 * sim.theta_error)
         << "d=" << c.d << " alpha=" << c.alpha << " beta=" << c.beta;

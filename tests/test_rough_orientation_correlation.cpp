@@ -42,7 +42,7 @@ TEST(RoughOrientationCorrelation, AgainstDsmc) {
                         Case{Rational(1, 2), Rational(0), false}}) {
     const auto theory = rough_orientation_correlation(c.alpha, c.beta, Rational(2, 5));
     const auto sim = gkt::test::run_rough_hcs_dsmc(3, c.alpha.to_double(), c.beta.to_double(), 0.4,
-                                                   theory.temperature_ratio, 4000, 30, 100, 1, 5);
+                                                   theory.temperature_ratio, 4000, 30, 20, 5, 5);
     EXPECT_LT(sim.orientation, 1.0 / 3 - 4 * sim.orientation_error);
     EXPECT_LT(theory.correlation, 1.0 / 3);
     if (c.first_approximation_resolves) {
