@@ -57,11 +57,12 @@ void catch_stop_signals() {
   for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal_number, &action, nullptr);
 }
 
-/// The progress line "gkt: row 12/40 (30 %), 3.1 s" on standard error, redrawn in place (\r);
+/// The progress line "gkt: row 12/40 (30 %), 3.1 s" (gkt dsmc: "run") on standard error, redrawn in place (\r);
 /// silent unless standard error is a terminal and --quiet was not given.
 class Progress {
  public:
-  explicit Progress(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+  explicit Progress(bool enabled, const char* unit = "row")
+      : enabled_(enabled), unit_(unit), start_(std::chrono::steady_clock::now()) {}
   ~Progress() { clear(); }
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
@@ -70,7 +71,7 @@ class Progress {
     if (!enabled_) return;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     char line[128];
-    const int n = std::snprintf(line, sizeof line, "\rgkt: row %zu/%zu (%d %%), %.1f s", done, total,
+    const int n = std::snprintf(line, sizeof line, "\rgkt: %s %zu/%zu (%d %%), %.1f s", unit_, done, total,
                                 total == 0 ? 100 : static_cast<int>(100 * done / total), seconds);
     if (n <= 0) return;
     std::fputs(line, stderr);
@@ -84,6 +85,7 @@ class Progress {
 
  private:
   bool enabled_;
+  const char* unit_;  ///< what is counted: "row" (table), "run" (dsmc)
   std::chrono::steady_clock::time_point start_;
   std::size_t width_ = 0;  ///< characters on screen
 };
@@ -169,17 +171,17 @@ int run_dsmc(const std::string& scene_path, const std::vector<std::string>& over
   if (run.jobs < 1 || run.jobs > kMaxJobs)
     throw std::invalid_argument("--jobs: must be an integer in [1, " + std::to_string(kMaxJobs) + "], got " +
                                 std::to_string(run.jobs));
+  catch_stop_signals();  // before the temporary file exists: a signal never leaves it behind
   bool interrupted = false;
   gkt::cli::Table table;
   {
     gkt::cli::OutputTarget target(run.output);  // refused before any work if it cannot be written
     auto scene = gkt::cli::read_scene_table(scene_path, overrides);
-    Progress progress(!run.quiet && ::isatty(STDERR_FILENO) == 1);
+    Progress progress(!run.quiet && ::isatty(STDERR_FILENO) == 1, "run");
     gkt::cli::DsmcRunOptions options;
     options.jobs = run.jobs;
     options.progress = [&progress](std::size_t done, std::size_t total) { progress.show(done, total); };
     options.stop = [] { return stop_signal != 0; };
-    catch_stop_signals();
     table = gkt::cli::dsmc(std::move(scene), options, interrupted);
     progress.clear();
     if (!interrupted) {
