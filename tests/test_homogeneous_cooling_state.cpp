@@ -138,7 +138,8 @@ double maxwell_moment(int d, int p, int k) {
 }  // namespace
 
 // DSMC (independent: simulates collisions, no Sonine expansion). a2 and a3 follow exactly from
-// ⟨c⁴⟩ and ⟨c⁶⟩ (S_k is orthogonal to x^p for k > p). Tolerance: 4 standard errors (batch means).
+// ⟨c⁴⟩ and ⟨c⁶⟩ (S_k is orthogonal to x^p for k > p). Tolerance: 4 standard errors (means of 180
+// batches of five collisions per particle: batches of one were correlated, theory.md §21.4).
 // At α = 0.8, 3D the converged Sonine a2 (−0.01431) and the first-Sonine a2 (−0.01258) differ by
 // more than 4σ, so the test tells them apart.
 TEST(HcsDsmc, CumulantsAgreeWithConvergedSonine) {

@@ -102,8 +102,9 @@ TEST(RoughHomogeneousCoolingState, QuasiSmoothLimitIsSingular) {
   }
 }
 
-// DSMC with spin: 4000 particles, 20 collisions per particle to relax from the Maxwellian θ, then 100
-// batches of one collision per particle. Measured (seed 5): see theory.md §19.6 table.
+// DSMC with spin (the library's DSMC): 4000 particles, 20 collisions per particle to relax from the
+// Maxwellian θ, then 50 batches of ten collisions per particle (batches of one were correlated and
+// their errors ~3× too small, theory.md §21.4). Measured: see theory.md §19.6 table and §21.4.
 TEST(RoughHomogeneousCoolingState, TemperatureRatioAgainstDsmc) {
   struct Case {
     int d;

@@ -91,7 +91,7 @@ TEST(RoughWalton, RatesAgainstMonteCarlo) {
   }
 }
 
-// DSMC of the HCS with the Walton rule (4000 particles, 20 + 100 collisions per particle): the
+// DSMC of the HCS with the Walton rule (4000 particles, 20 + 20 × 5 collisions per particle): the
 // Maxwellian θ is a first approximation, off by 2–6 % here (cumulants left out, as for constant β,
 // theory.md §19.6); the friction moves θ far from the constant-β0 value, and the DSMC sees that.
 TEST(RoughWalton, TemperatureRatioAgainstDsmc) {
