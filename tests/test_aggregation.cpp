@@ -365,9 +365,8 @@ TEST(AggregationDsmc, EarlyTimesAgreeWithThePopulationBalance) {
           << pbe.samples[i].temperature;
       // ψ of the window (t_{i−1}, t_i] against the population balance at its middle.
       test::batch_mean(psi[i], m, e);
-      const double previous = i == 0 ? pbe.samples[0].success_factor : pbe.samples[i - 1].success_factor;
-      const double middle =
-          i == 0 ? success_factor(3, gas.criterion, 1.0) : 0.5 * (previous + pbe.samples[i].success_factor);
+      const double previous = i == 0 ? success_factor(3, gas.criterion, 1.0) : pbe.samples[i - 1].success_factor;
+      const double middle = 0.5 * (previous + pbe.samples[i].success_factor);
       EXPECT_LT(std::abs(m - middle), 4 * e + 2e-3) << "psi, criterion " << criterion << ", t = " << times[i]
                                                     << ": DSMC " << m << " ± " << e << ", PBE " << middle;
     }

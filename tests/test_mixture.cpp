@@ -348,19 +348,21 @@ TEST(TracerDiffusion, LorentzLimit) {
   EXPECT_NEAR(previous, limit, 0.004 * limit);
 }
 
-// DSMC of the binary HCS (tests/dsmc_mixture.hpp: no Sonine expansion, no cooling-rate formula):
-// equimolar, m2/m1 = 4, equal sizes, α = 0.8, 2·10⁴ particles, 200 batches of one collision per
-// particle. 3D: the first-Sonine T_1/T agrees within 4 standard errors and the Maxwellian one is
-// excluded (DSMC 0.85764 ± 0.00040, first Sonine 0.85779, Maxwellian 0.85427 in the run that set
-// this test up). 2D: the first-Sonine value is off by more than the statistics (0.86292 ± 0.00045
-// against 0.85934 — its truncation error, like the 2D one-component a2), but within the error the
-// `temperature_ratio_1_error` column reports (|first Sonine − Maxwellian|) plus 4σ. The species
-// cumulants: the linear scheme with a_2 … a_4 gives a2,i within 4σ of the DSMC in both dimensions,
-// where the first-Sonine a2,1 of 2D is off by 8σ.
+// DSMC of the binary HCS (the library's DSMC, gkt/simulation/homogeneous_dsmc.hpp: no Sonine
+// expansion, no cooling-rate formula): equimolar, m2/m1 = 4, equal sizes, α = 0.8, 2·10⁴ particles,
+// 100 batches of five collisions per particle (batches of one collision per particle are correlated:
+// their standard error understated the run-to-run spread 2.6-fold). Within the error the
+// `temperature_ratio_1_error` column reports (|first Sonine − Maxwellian|) plus 4σ, in both dimensions.
+// 3D: T_1/T at K = 4 agrees within 4σ and the Maxwellian one is excluded; the first-Sonine T_1/T is
+// not asserted within 4σ any more: 24 independent runs (2·10⁴ particles, 100 collisions per particle
+// each) give 0.85911 ± 0.00024, 5.5σ from first Sonine (0.85779) and 2σ from K = 4 (0.85861). 2D: the
+// first-Sonine value is off by more than the statistics (its truncation error, like the 2D
+// one-component a2). The species cumulants: the linear scheme with a_2 … a_4 gives a2,i within 4σ of
+// the DSMC in both dimensions, where the first-Sonine a2,1 of 2D is excluded.
 TEST(MixtureDsmc, TemperatureRatioAgreesWithFirstSonine) {
   for (int d : {3, 2}) {
     const auto sample =
-        gkt::test::run_mixture_hcs_dsmc(d, {10000, 10000}, {1, 4}, {1, 1}, {0.8, 0.8, 0.8, 0.8}, 10, 200, 1.0, 7);
+        gkt::test::run_mixture_hcs_dsmc(d, {10000, 10000}, {1, 4}, {1, 1}, {0.8, 0.8, 0.8, 0.8}, 10, 100, 5.0, 7);
     const gkt::Mixture m = binary(d, 4, 1, 0.5, 0.8);
     const double linear = gkt::mixture_cooling_state(m, gkt::MixtureHcsScheme::linear).temperature_ratio[0];
     const double maxwellian = gkt::mixture_cooling_state(m, gkt::MixtureHcsScheme::maxwellian).temperature_ratio[0];
@@ -380,7 +382,7 @@ TEST(MixtureDsmc, TemperatureRatioAgreesWithFirstSonine) {
     EXPECT_LE(std::abs(dsmc - linear), std::abs(linear - maxwellian) + 4 * sigma) << d;
     EXPECT_LT(std::abs(dsmc - linear), std::abs(dsmc - maxwellian)) << d;
     if (d == 3) {
-      EXPECT_LT(std::abs(dsmc - linear), 4 * sigma);
+      EXPECT_NEAR(k4.temperature_ratio[0], dsmc, 4 * sigma);
       EXPECT_GT(std::abs(dsmc - maxwellian), 4 * sigma);
     }
   }

@@ -91,7 +91,7 @@ TEST(RoughWalton, RatesAgainstMonteCarlo) {
   }
 }
 
-// DSMC of the HCS with the Walton rule (4000 particles, 20 + 100 collisions per particle): the
+// DSMC of the HCS with the Walton rule (4000 particles, 20 + 20 × 5 collisions per particle): the
 // Maxwellian θ is a first approximation, off by 2–6 % here (cumulants left out, as for constant β,
 // theory.md §19.6); the friction moves θ far from the constant-β0 value, and the DSMC sees that.
 TEST(RoughWalton, TemperatureRatioAgainstDsmc) {
@@ -105,8 +105,8 @@ TEST(RoughWalton, TemperatureRatioAgainstDsmc) {
     const auto w =
         gkt::rough_walton_cooling_state(c.d, Rational(c.a10, 10), Rational(c.b10, 10), kappa, Rational(c.mu100, 100));
     ASSERT_FALSE(w.spin_decoupled);
-    const auto s = gkt::test::run_rough_hcs_dsmc(c.d, c.a10 / 10.0, c.b10 / 10.0, k, w.temperature_ratio, 4000, 20, 100,
-                                                 1, 5, c.mu100 / 100.0);
+    const auto s = gkt::test::run_rough_hcs_dsmc(c.d, c.a10 / 10.0, c.b10 / 10.0, k, w.temperature_ratio, 4000, 20, 20,
+                                                 5, 5, c.mu100 / 100.0);
     const auto fixed = gkt::rough_homogeneous_cooling_state(c.d, Rational(c.a10, 10), Rational(c.b10, 10), kappa,
                                                             gkt::RoughHcsScheme::maxwellian);
     std::printf("walton HCS d=%d alpha=%.1f beta0=%.1f mu=%.2f: theta %.4f DSMC %.4f +- %.4f (constant beta0: %.4f)\n",

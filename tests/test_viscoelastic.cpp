@@ -210,13 +210,10 @@ TEST(Viscoelastic, FixedDeltaHcsAgreesWithDsmc) {
   ASSERT_EQ(h.size(), 3U);
   const gkt::ViscoelasticHierarchy hierarchy(6, restitution);
   for (const double dp : {0.1, 0.2}) {
-    const auto m = gkt::test::run_hcs_dsmc(
-        3,
-        [&](double u) {
-          const double w = std::pow(u, 0.2) * dp;
-          return 1 + w * (h[0] + w * (h[1] + w * h[2]));
-        },
-        20000, 8, 400, 1.0, 7);
+    gkt::SmoothRestitution series;  // ε(u) = 1 + Σ_k h_k (δ' u^{1/5})^k
+    series.series = h;
+    series.delta_prime = dp;
+    const auto m = gkt::test::run_hcs_dsmc(3, series, 20000, 8, 80, 5.0, 7);
     const double a2 = m.c4 / 3.75 - 1, a2_error = m.c4_error / 3.75;
     const auto r = gkt::evolve_homogeneous_cooling(hierarchy.at(dp), 1.0, {0.0}, {1e4}, 1e-10, 1e-14);
     const auto& a = r.samples.back().a;

@@ -10,7 +10,7 @@ Usage:
 Rules (each violation is one line "file:line: rule: what"; exit status 1 if any):
   floor     a file under include/gkt/<floor>/ or lib/<floor>/ includes a header of a floor above
             it. Floors, low to high: support < algebra < collision < operators < transport <
-            evolution < models < front ends. Public headers directly in include/gkt/ (the
+            evolution < simulation < models < front ends. Public headers directly in include/gkt/ (the
             solver-facing cell.hpp and any other top-level header) are on the models floor.
   room      inside transport, a room includes a room it may not (ROOM_MAY_INCLUDE below), or a
             transport file is in no declared room.
@@ -26,7 +26,7 @@ import re
 import sys
 import tempfile
 
-FLOORS = ["support", "algebra", "collision", "operators", "transport", "evolution", "models", "front end"]
+FLOORS = ["support", "algebra", "collision", "operators", "transport", "evolution", "simulation", "models", "front end"]
 RANK = {name: i for i, name in enumerate(FLOORS)}
 
 # The rooms of the transport floor and the rooms each may include (itself included).

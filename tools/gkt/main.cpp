@@ -14,6 +14,7 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include "dsmc_command.hpp"
 #include "evolve_command.hpp"
 #include "formula_command.hpp"
 #include "gkt/models/transport_model.hpp"
@@ -56,11 +57,12 @@ void catch_stop_signals() {
   for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal_number, &action, nullptr);
 }
 
-/// The progress line "gkt: row 12/40 (30 %), 3.1 s" on standard error, redrawn in place (\r);
+/// The progress line "gkt: row 12/40 (30 %), 3.1 s" (gkt dsmc: "run") on standard error, redrawn in place (\r);
 /// silent unless standard error is a terminal and --quiet was not given.
 class Progress {
  public:
-  explicit Progress(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+  explicit Progress(bool enabled, const char* unit = "row")
+      : enabled_(enabled), unit_(unit), start_(std::chrono::steady_clock::now()) {}
   ~Progress() { clear(); }
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
@@ -69,7 +71,7 @@ class Progress {
     if (!enabled_) return;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     char line[128];
-    const int n = std::snprintf(line, sizeof line, "\rgkt: row %zu/%zu (%d %%), %.1f s", done, total,
+    const int n = std::snprintf(line, sizeof line, "\rgkt: %s %zu/%zu (%d %%), %.1f s", unit_, done, total,
                                 total == 0 ? 100 : static_cast<int>(100 * done / total), seconds);
     if (n <= 0) return;
     std::fputs(line, stderr);
@@ -83,6 +85,7 @@ class Progress {
 
  private:
   bool enabled_;
+  const char* unit_;  ///< what is counted: "row" (table), "run" (dsmc)
   std::chrono::steady_clock::time_point start_;
   std::size_t width_ = 0;  ///< characters on screen
 };
@@ -160,6 +163,34 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
             << " rows; the output ends with the marker (docs/conventions.md)\n";
   std::cerr.flush();
   std::_Exit(128 + stop_signal);  // rows still computing run in detached threads: no normal exit
+}
+
+/// `gkt dsmc`: every run, then the table written at once (atomically to a file); a signal stops the
+/// runs not yet started and leaves no output (exit 128 + signal).
+int run_dsmc(const std::string& scene_path, const std::vector<std::string>& overrides, const TableRun& run) {
+  if (run.jobs < 1 || run.jobs > kMaxJobs)
+    throw std::invalid_argument("--jobs: must be an integer in [1, " + std::to_string(kMaxJobs) + "], got " +
+                                std::to_string(run.jobs));
+  catch_stop_signals();  // before the temporary file exists: a signal never leaves it behind
+  bool interrupted = false;
+  gkt::cli::Table table;
+  {
+    gkt::cli::OutputTarget target(run.output);  // refused before any work if it cannot be written
+    auto scene = gkt::cli::read_scene_table(scene_path, overrides);
+    Progress progress(!run.quiet && ::isatty(STDERR_FILENO) == 1, "run");
+    gkt::cli::DsmcRunOptions options;
+    options.jobs = run.jobs;
+    options.progress = [&progress](std::size_t done, std::size_t total) { progress.show(done, total); };
+    options.stop = [] { return stop_signal != 0; };
+    table = gkt::cli::dsmc(std::move(scene), options, interrupted);
+    progress.clear();
+    if (!interrupted) {
+      target.write(run.format == "json" ? gkt::cli::to_json(table) : gkt::cli::to_csv(table));
+      return 0;
+    }
+  }  // the temporary file of an interrupted run is removed here
+  std::cerr << "gkt: interrupted; no output written\n";
+  return 128 + stop_signal;
 }
 
 int run_models() {
@@ -282,6 +313,19 @@ int run(int argc, char** argv) {
   evolve->add_option("--format", evolve_format, "Output format")->check(CLI::IsMember({"csv", "json"}));
   evolve->add_option("--output", evolve_output, "Output file (written atomically); default: standard output");
 
+  auto* dsmc = app.add_subcommand(
+      "dsmc", "Direct simulation Monte Carlo of a homogeneous cooling gas: a2, a3, cooling rate, temperature ratios");
+  std::string dsmc_scene;
+  TableRun dsmc_run;
+  std::vector<std::string> dsmc_overrides;
+  dsmc->add_option("scene", dsmc_scene, "Scene file (TOML): model, dimension, alpha, particles, runs, seed, ...")
+      ->required();
+  dsmc->add_option("--set", dsmc_overrides, "Override a scene key: KEY=VALUE; repeatable");
+  dsmc->add_option("--format", dsmc_run.format, "Output format")->check(CLI::IsMember({"csv", "json"}));
+  dsmc->add_option("--output", dsmc_run.output, "Output file (written atomically); default: standard output");
+  dsmc->add_option("--jobs", dsmc_run.jobs, "Runs simulated in parallel, 1 to 64 (default 1); output unchanged");
+  dsmc->add_flag("--quiet", dsmc_run.quiet, "No progress line on standard error");
+
   app.add_subcommand("models", "List the models with their coefficients and parameters");
 
   try {
@@ -304,6 +348,7 @@ int run(int argc, char** argv) {
   try {
     if (table->parsed()) return run_table(scene_path, overrides, table_run);
     if (stability->parsed()) return run_table(stability_scene, stability_overrides, stability_run);
+    if (dsmc->parsed()) return run_dsmc(dsmc_scene, dsmc_overrides, dsmc_run);
     if (evolve->parsed()) {
       gkt::cli::OutputTarget target(evolve_output);
       std::string counters;

@@ -114,9 +114,8 @@ void apply_override(toml::table& scene, const std::string& assignment) {
   if (key == "t_end" || key == "points") scene.erase("times");
 }
 
-/// Mixtures: the [[species]] tables become mass_k, diameter_k, fraction_k (k from 1) and the
-/// integer `species`; a restitution matrix `alpha = [[…], …]` becomes alpha_i_j (i ≤ j). Keys
-/// given explicitly (e.g. --set mass_2=…) win over the tables.
+}  // namespace
+
 void flatten_mixture(toml::table& scene) {
   const toml::node* node = scene.get("species");
   if (node == nullptr) return;
@@ -221,8 +220,6 @@ void check_row_count(const toml::table& table, const std::vector<ParameterSpec>&
                 std::to_string(kMaxSweepPoints) + " rows per table");
   }
 }
-
-}  // namespace
 
 toml::table parse_scene_text(const std::string& text, const std::string& source) {
   try {
