@@ -7,6 +7,7 @@
 // symbolic, as an exact Laurent polynomial in θ/κ; θ is then the root of one equation.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
@@ -35,6 +36,10 @@ struct RoughCoolingState {
 /// naming the field otherwise). Cost: three exact engine tables, ~0.1 s.
 RoughCoolingState rough_homogeneous_cooling_state(int dimension, const Rational& alpha, const Rational& beta,
                                                   const Rational& kappa, RoughHcsScheme scheme);
+
+/// Returns a one-line description of where in (α, β, κ) the linear scheme has no root for
+/// dimension d (mapped in theory.md §19.6), for error messages.
+std::string rough_linear_no_root_region(int dimension);
 
 /// Returns the exact coefficients (c0, c1, c2) of the Maxwellian temperature-ratio equation
 /// c0 + c1 τ + c2 τ² = 0, τ = θ/κ (energy balance ζ_t = ζ_r with both temperatures' Maxwellians).
