@@ -37,7 +37,7 @@ struct Problem {
   }
 };
 
-/// The rates of theory.md (19.20): d ln T_t/dτ = −√T_t z_t(a), d ln T_r/dτ = −√T_t z_r(a),
+/// The rates of theory.md (19.24)–(19.25): d ln T_t/dτ = −√T_t z_t(a), d ln T_r/dτ = −√T_t z_r(a),
 /// dC/dτ = √T_t (1 + c a20) and ⟨ψ_p⟩_M da_p/dτ = √T_t [G_p(τ, a) + l_p (z_r − z_t) ⟨ψ_p⟩_a],
 /// l = (0, 2, 1) the spin degree of ψ = (x², y², xy) over two.
 int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {

@@ -34,8 +34,8 @@ struct RoughEvolutionResult {
 
 /// Returns the trajectory from T_t(0) = translational0, T_r(0) = rotational0 (units T_ref, both
 /// > 0; Maxwellian initial distributions) at the increasing positive `times`. linear = false: the
-/// Maxwellian two-temperature equations (theory.md (19.12)); true: the first-Sonine scheme carrying
-/// a20, a02, a11 (theory.md (19.20)). Throws std::invalid_argument naming the field on bad input,
+/// Maxwellian two-temperature equations (theory.md (19.12), (19.24)); true: the first-Sonine scheme carrying
+/// a20, a02, a11 (theory.md (19.25)). Throws std::invalid_argument naming the field on bad input,
 /// EvolutionFailure (an invalid_argument) if CVODE stops early.
 RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
                                           double rotational0, const std::vector<double>& times, double rtol,

@@ -1,11 +1,13 @@
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -30,7 +32,22 @@ std::vector<Rational> rough_maxwellian_temperature_equation(int dimension, const
   return {c[0], c[1], c[2]};
 }
 
-std::string rough_linear_no_root_region(int dimension) { return dimension == 2 ? "TODO" : "TODO"; }
+bool rough_cumulants_realizable(int dimension, double a20, double a02, double a11) {
+  const double d = dimension, dr = dimension == 3 ? 3 : 1;
+  const double var_x = 2 + (d + 2) * a20, var_y = 2 + (dr + 2) * a02;  // 4 Var/(d or d_r)
+  return var_x >= 0 && var_y >= 0 && d * dr * a11 * a11 <= var_x * var_y;
+}
+
+std::string rough_linear_no_root_region(int dimension) {
+  // The 0.01-resolved edges of the maps in theory.md §19.6 (gkt table, hcs = "linear-or-maxwellian").
+  if (dimension == 2)
+    return "the strongly inelastic, weakly rough region; for disks with moment_of_inertia = 0.5: alpha <= 0.48 at "
+           "beta = 0.5, <= 0.64 at beta = 0, <= 0.78 at beta = -0.5, none for beta >= 0.75; map in docs/theory.md "
+           "section 19.6";
+  return "the strongly inelastic, weakly rough region; for spheres with moment_of_inertia = 0.4: alpha <= 0.18 at "
+         "beta = 0.3, <= 0.60 at beta = 0, <= 0.81 at beta = -0.5, none for beta >= 0.33; map in docs/theory.md "
+         "section 19.6";
+}
 
 RoughCoolingState rough_homogeneous_cooling_state(int dimension, const Rational& alpha, const Rational& beta,
                                                   const Rational& kappa, RoughHcsScheme scheme) {
@@ -92,32 +109,40 @@ RoughCoolingState rough_homogeneous_cooling_state(int dimension, const Rational&
       return pt;
     };
     const double center = log_tau, step = 1.0 / 64, span = 4;
-    double best_lo = 0, best_hi = 0, best_distance = std::numeric_limits<double>::infinity();
+    struct Bracket {
+      double lo, hi, distance;
+    };
+    std::vector<Bracket> brackets;
     Point prev = at(center - span);
     for (double lt = center - span + step; lt <= center + span + step / 2; lt += step) {
       const Point cur = at(lt);
       const bool sign_change = (prev.g0 < 0) != (cur.g0 < 0);
       const bool pole = (prev.det < 0) != (cur.det < 0);
-      const double distance = std::abs(lt - step / 2 - center);
-      if (sign_change && !pole && distance < best_distance) {
-        best_distance = distance;
-        best_lo = lt - step;
-        best_hi = lt;
-      }
+      if (sign_change && !pole) brackets.push_back({lt - step, lt, std::abs(lt - step / 2 - center)});
       prev = cur;
     }
-    if (!std::isfinite(best_distance)) {
+    // Nearest the Maxwellian τ first; a root whose cumulants no distribution can have is skipped.
+    std::stable_sort(brackets.begin(), brackets.end(),
+                     [](const Bracket& x, const Bracket& y) { return x.distance < y.distance; });
+    bool found = false;
+    for (Bracket b : brackets) {
+      const bool rising = at(b.lo).g0 < 0;
+      for (int it = 0; it < 200 && b.hi - b.lo > 1e-15 * std::max(1.0, std::abs(b.lo)); ++it) {
+        const double mid = 0.5 * (b.lo + b.hi);
+        ((at(mid).g0 < 0) == rising ? b.lo : b.hi) = mid;
+      }
+      log_tau = 0.5 * (b.lo + b.hi);
+      a = at(log_tau).a;
+      if (rough_cumulants_realizable(dimension, a[0], a[1], a[2])) {
+        found = true;
+        break;
+      }
+    }
+    if (!found) {
       s.temperature_ratio = s.cooling_rate = s.a20 = s.a02 = s.a11 = std::numeric_limits<double>::quiet_NaN();
       s.linear_scheme_solved = false;
       return s;
     }
-    const bool rising = at(best_lo).g0 < 0;
-    for (int it = 0; it < 200 && best_hi - best_lo > 1e-15 * std::max(1.0, std::abs(best_lo)); ++it) {
-      const double mid = 0.5 * (best_lo + best_hi);
-      ((at(mid).g0 < 0) == rising ? best_lo : best_hi) = mid;
-    }
-    log_tau = 0.5 * (best_lo + best_hi);
-    a = at(log_tau).a;
   }
   const double tau = std::exp(log_tau);
   const RoughBalances e = rates.at(tau, a);
