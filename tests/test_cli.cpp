@@ -380,7 +380,7 @@ TEST(CliEvolve, StatisticsAndBadInput) {
            {" --set 'times=[2, 1]'", "times: must be a non-empty list of increasing times > 0"},
            {" --set delta=0.1", "delta: unknown key for gkt evolve"},
            {" --set 'model=\"hard-spheres\"'",
-            "model: gkt evolve supports \"aggregation\", \"rough\", \"smooth-inelastic\""}}) {
+            "model: gkt evolve supports \"aggregation\", \"rough\", \"rough-walton\", \"smooth-inelastic\""}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --output " + out + args);
     EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
@@ -612,6 +612,23 @@ TEST(CliRoughEvolve, RelaxesToTheTableAndRefusesBadInput) {
                                   " --set alpha=0.5 --set beta=0 --set 'hcs=\"linear-or-maxwellian\"'");
   ASSERT_EQ(fallback.status, 0) << fallback.err;
   EXPECT_EQ(parse_csv(fallback.out)[0].size(), 6u);
+  // Walton friction (Maxwellian rates by quadrature): friction = 10⁶ is the constant-β gas with β = β0.
+  const std::string walton_keys = " --set beta0=0.5 --set friction=1000000 --set points=5 --set rtol=1e-11";
+  const CliRun walton = run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + walton_keys);
+  ASSERT_EQ(walton.status, 0) << walton.err;
+  const auto wt = parse_csv(walton.out),
+             mt = parse_csv(run_gkt("evolve " + scene_path("rough_evolve.toml") +
+                                    " --set 'hcs=\"maxwellian\"' --set points=5 --set rtol=1e-11")
+                                .out);
+  ASSERT_EQ(wt.size(), mt.size());
+  ASSERT_EQ(wt[0], mt[0]);
+  for (std::size_t row = 1; row < wt.size(); ++row)
+    EXPECT_NEAR(std::stod(wt[row][4]) / std::stod(mt[row][4]), 1, 1e-7) << "row " << row;
+  const CliRun bad_friction =
+      run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + walton_keys + " --set friction=-1");
+  EXPECT_EQ(bad_friction.status, 2);
+  EXPECT_NE(bad_friction.err.find("friction: must be a number in [0, 1000000], got -1"), std::string::npos)
+      << bad_friction.err;
 }
 
 // The rough-walton model (theory.md §19.10): friction = 1e6 reproduces the rough model with beta = beta0

@@ -4,7 +4,9 @@
 //      eqs. 9–11 in 3D; theory.md (19.12) for any d), solved in closed form, and τ(s) by quadrature;
 //  (2) the steady HCS solver (θ, ζ*, a20, a02, a11 of both schemes) at late times, and Haff's law;
 //  (3) the limits α = β = 1 (energy conserved, equipartition) and β = −1 (frozen spin, smooth Haff);
-//  (4) bad input.
+//  (4) Walton friction (Maxwellian rates by quadrature): its HCS θ at late times, and the constant-β
+//      trajectory as μ_f → ∞;
+//  (5) bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +15,7 @@
 
 #include "gkt/evolution/rough_cooling_evolution.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
+#include "gkt/transport/rough/rough_walton.hpp"
 
 using gkt::Rational;
 
@@ -168,4 +171,45 @@ TEST(RoughCoolingEvolution, BadInputNamesTheField) {
   EXPECT_EQ(message(1, 1, {2, 1}).rfind("times:", 0), 0u);
   EXPECT_EQ(message(1, 1, {0}).rfind("times:", 0), 0u);
   EXPECT_THROW(gkt::RoughCoolingRates(3, Rational(9, 10), Rational(2), Rational(2, 5)), std::invalid_argument);
+}
+
+// Walton friction: the trajectory ends on the HCS θ of the same rates (the root of ζ_t = ζ_r, found by
+// bisection here as rough_walton_cooling_state does; `gkt table` gives 1.0475878279 at (0.9, 1, 2/5, 1),
+// 3D), and μ_f = 10⁶ follows the constant-β trajectory (β = β0; quadrature against the exact engine).
+TEST(RoughCoolingEvolution, WaltonFrictionRelaxesToItsHcsAndConstantBetaLimit) {
+  auto walton = [](int d, double alpha, double beta0, double kappa, double friction) {
+    return gkt::RoughMaxwellianRates([=](double theta) {
+      const auto r = gkt::rough_walton_rates(d, alpha, beta0, kappa, friction, theta);
+      return std::array<double, 2>{4.0 / (d + 2) * r.translational, 4.0 / (d + 2) * r.rotational};
+    });
+  };
+  for (int d : {2, 3}) {
+    const auto rates = walton(d, 0.9, 1, 0.4, 1);
+    double lo = std::log(0.01), hi = std::log(100);  // z_t − z_r > 0 for a cold spin, < 0 for a hot one
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      const auto z = rates(std::exp(mid));
+      (z[0] - z[1] > 0 ? lo : hi) = mid;
+    }
+    const double theta = std::exp(0.5 * (lo + hi));
+    const auto run = gkt::evolve_rough_maxwellian_cooling(d, rates, 1, 0.1, {1e4, 2e4}, 1e-10, 1e-14);
+    const auto& end = run.samples.back();
+    EXPECT_NEAR(end.rotational_temperature / end.translational_temperature / theta, 1, 1e-7) << "d=" << d;
+    EXPECT_NEAR(end.cooling_rate, (d + 2) / 4.0 * rates(theta)[0], 1e-7);
+    if (d == 3) {
+      EXPECT_NEAR(theta, 1.0475878279, 1e-9);
+    }
+
+    const gkt::RoughCoolingRates constant(d, Rational(7, 10), Rational(1, 2), Rational(2, 5));
+    const auto times = log_times(0.1, 100, 4);
+    const auto exact = gkt::evolve_rough_cooling(constant, false, 1, 3, times, 1e-11, 1e-14);
+    const auto limit =
+        gkt::evolve_rough_maxwellian_cooling(d, walton(d, 0.7, 0.5, 0.4, 1e6), 1, 3, times, 1e-11, 1e-14);
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      EXPECT_NEAR(limit.samples[i].translational_temperature / exact.samples[i].translational_temperature, 1, 1e-7);
+      EXPECT_NEAR(limit.samples[i].rotational_temperature / exact.samples[i].rotational_temperature, 1, 1e-7);
+    }
+  }
+  EXPECT_THROW((void)gkt::evolve_rough_maxwellian_cooling(4, walton(3, 0.9, 1, 0.4, 1), 1, 1, {1}, 1e-8, 1e-12),
+               std::invalid_argument);
 }

@@ -28,7 +28,8 @@ using detail::VectorDeleter;
 
 /// State y = (ln T_t, ln T_r, C, a20, a02, a11) (the cumulants only in the linear scheme).
 struct Problem {
-  const RoughCoolingRates* rates = nullptr;
+  const RoughCoolingRates* rates = nullptr;          // the engine's balances, or
+  const RoughMaxwellianRates* maxwellian = nullptr;  // Maxwellian rates as a function of θ
   bool linear = false;
   std::array<double, 3> base{};  // Maxwellian ⟨x²⟩, ⟨y²⟩, ⟨xy⟩
 
@@ -47,6 +48,14 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   const double log_theta = yv[1] - yv[0];
   if (!std::isfinite(log_theta)) return 1;  // recoverable: CVODE retries with a smaller step
   const double sq = std::exp(0.5 * yv[0]);
+  if (p.maxwellian != nullptr) {
+    const auto z = (*p.maxwellian)(std::exp(log_theta));
+    if (!std::isfinite(z[0]) || !std::isfinite(z[1])) return 1;
+    dv[0] = -sq * z[0];
+    dv[1] = -sq * z[1];
+    dv[2] = sq;
+    return 0;
+  }
   const auto a = p.cumulants(yv);
   const RoughBalances b = p.rates->at(std::exp(log_theta) / p.rates->kappa(), a);
   dv[0] = -sq * b.translational_rate;
@@ -60,11 +69,8 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   return 0;
 }
 
-}  // namespace
-
-RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
-                                          double rotational0, const std::vector<double>& times, double rtol,
-                                          double atol) {
+RoughEvolutionResult integrate(Problem& problem, int dimension, double translational0, double rotational0,
+                               const std::vector<double>& times, double rtol, double atol) {
   if (!(translational0 > 0) || !std::isfinite(translational0))
     throw std::invalid_argument("translational_temperature: must be a finite number > 0");
   if (!(rotational0 > 0) || !std::isfinite(rotational0))
@@ -73,11 +79,7 @@ RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool l
   for (std::size_t i = 0; i < times.size(); ++i)
     if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
       throw std::invalid_argument("times: must be positive and increasing");
-  Problem problem;
-  problem.rates = &rates;
-  problem.linear = linear;
-  problem.base = rates.maxwellian_fourth_moments();
-  const int n = linear ? 6 : 3;
+  const int n = problem.linear ? 6 : 3;
 
   SUNContext raw_context = nullptr;
   check(SUNContext_Create(nullptr, &raw_context), "SUNContext_Create");
@@ -101,7 +103,7 @@ RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool l
       SUNLinSol_Dense(y.get(), matrix.get(), raw_context));
   check(CVodeSetLinearSolver(cvode.get(), solver.get(), matrix.get()), "CVodeSetLinearSolver");
 
-  const double d = rates.dimension();
+  const double d = dimension;
   RoughEvolutionResult result;
   for (double target : times) {
     sunrealtype reached = 0;
@@ -121,7 +123,11 @@ RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool l
     s.a20 = a[0];
     s.a02 = a[1];
     s.a11 = a[2];
-    s.cooling_rate = (d + 2) / 4 * rates.at(std::exp(yv[1] - yv[0]) / rates.kappa(), a).translational_rate;
+    const double theta = std::exp(yv[1] - yv[0]);
+    s.cooling_rate =
+        (d + 2) / 4 *
+        (problem.maxwellian != nullptr ? (*problem.maxwellian)(theta)[0]
+                                       : problem.rates->at(theta / problem.rates->kappa(), a).translational_rate);
     result.samples.push_back(s);
   }
   long v = 0;
@@ -136,6 +142,27 @@ RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool l
   CVodeGetNumNonlinSolvIters(cvode.get(), &v);
   result.counters.nonlinear_iterations = v;
   return result;
+}
+
+}  // namespace
+
+RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
+                                          double rotational0, const std::vector<double>& times, double rtol,
+                                          double atol) {
+  Problem problem;
+  problem.rates = &rates;
+  problem.linear = linear;
+  problem.base = rates.maxwellian_fourth_moments();
+  return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol);
+}
+
+RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,
+                                                     double translational0, double rotational0,
+                                                     const std::vector<double>& times, double rtol, double atol) {
+  if (dimension != 2 && dimension != 3) throw std::invalid_argument("dimension: must be 2 or 3");
+  Problem problem;
+  problem.maxwellian = &rates;
+  return integrate(problem, dimension, translational0, rotational0, times, rtol, atol);
 }
 
 }  // namespace gkt

@@ -95,7 +95,7 @@ class RoughModel final : public TransportModel {
     return capability == Capability::table || capability == Capability::evolve;
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
-    return rough_evolution_parameters(parameters());
+    return rough_evolution_parameters(parameters(), {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
   }
   /// T_t(τ), T_r(τ) and the cumulants from Maxwellians at T_t(0), T_r(0) (theory.md §19.13).
   Trajectory evolve(const TrajectoryRequest& request) override {

@@ -1,18 +1,28 @@
 // What `gkt evolve` asks the "rough" model for: the free cooling of rough spheres or disks from
 // Maxwellians at T_t(0), T_r(0), in the Maxwellian or the linear first-Sonine scheme
-// (rough_cooling_evolution.hpp; docs/theory.md §19.13, conventions.md).
+// (rough_cooling_evolution.hpp; docs/theory.md §19.13, conventions.md), and of the Walton gas in the
+// Maxwellian approximation.
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
 #include "gkt/evolution/rough_cooling_evolution.hpp"
+#include "gkt/transport/rough/rough_walton.hpp"
 #include "models/models.hpp"
 
 namespace gkt::detail {
 
-std::vector<ParameterSpec> rough_evolution_parameters(const std::vector<ParameterSpec>& model_parameters) {
+namespace {
+
+/// Returns the rows of a rough trajectory: temperatures, θ, ζ* and (linear scheme) the cumulants.
+Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear);
+
+}  // namespace
+
+std::vector<ParameterSpec> rough_evolution_parameters(const std::vector<ParameterSpec>& model_parameters,
+                                                      const std::vector<std::string>& names) {
   std::vector<ParameterSpec> specs;
-  for (const char* name : {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"})
-    specs.push_back(find_parameter(model_parameters, name));
+  for (const auto& name : names) specs.push_back(find_parameter(model_parameters, name));
   auto positive = [](const char* name, const Rational& fallback, const char* description) {
     return ParameterSpec{
         name, ParameterSpec::Kind::real, Rational(0), ParameterSpec::unbounded(), false, true, fallback, description,
@@ -41,6 +51,28 @@ Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const Traj
   const RoughEvolutionResult result = evolve_rough_cooling(
       rates, linear, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(),
       request.times, p.number("rtol").to_double(), p.number("atol").to_double());
+  return tabulate_rough_trajectory(result, linear);
+}
+
+Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request) {
+  const SchemaPoint p(schema, request.parameters);
+  const int d = p.number("dimension") == Rational(2) ? 2 : 3;
+  const double alpha = p.number("alpha").to_double(), beta0 = p.number("beta0").to_double();
+  const double kappa = p.number("moment_of_inertia").to_double(), friction = p.number("friction").to_double();
+  // Maxwellian rates by quadrature (theory.md (19.21)), ζ/ν0 → z = ζ/(nσ^{d−1}v_t ν) = (4/(d+2)) ζ/ν0.
+  const RoughMaxwellianRates rates = [=](double theta) {
+    const RoughWaltonRates r = rough_walton_rates(d, alpha, beta0, kappa, friction, theta);
+    return std::array<double, 2>{4.0 / (d + 2) * r.translational, 4.0 / (d + 2) * r.rotational};
+  };
+  const RoughEvolutionResult result = evolve_rough_maxwellian_cooling(
+      d, rates, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(),
+      request.times, p.number("rtol").to_double(), p.number("atol").to_double());
+  return tabulate_rough_trajectory(result, false);
+}
+
+namespace {
+
+Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear) {
   Trajectory out;
   out.columns = {"time",
                  "collisions",
@@ -62,5 +94,7 @@ Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const Traj
   out.counters = result.counters;
   return out;
 }
+
+}  // namespace
 
 }  // namespace gkt::detail

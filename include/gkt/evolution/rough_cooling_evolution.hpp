@@ -9,6 +9,8 @@
 // (v_ref = √(2T_ref/m)); `collisions` counts collisions per particle.
 #pragma once
 
+#include <array>
+#include <functional>
 #include <vector>
 
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
@@ -40,5 +42,15 @@ struct RoughEvolutionResult {
 RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
                                           double rotational0, const std::vector<double>& times, double rtol,
                                           double atol);
+
+/// Maxwellian rates at θ = T_r/T_t: (z_t, z_r) = (ζ_t, ζ_r)/(nσ^{d−1}v_t ν) (e.g. from the Walton
+/// quadrature of rough_walton.hpp, times 4/(d+2)).
+using RoughMaxwellianRates = std::function<std::array<double, 2>(double temperature_ratio)>;
+
+/// Returns the Maxwellian trajectory (theory.md (19.24) with a = 0) for rates given as a function of
+/// θ, d ∈ {2, 3}; otherwise as evolve_rough_cooling (a20 = a02 = a11 = 0 in every sample).
+RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,
+                                                     double translational0, double rotational0,
+                                                     const std::vector<double>& times, double rtol, double atol);
 
 }  // namespace gkt
