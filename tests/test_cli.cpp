@@ -379,7 +379,8 @@ TEST(CliEvolve, StatisticsAndBadInput) {
            {" --set order=13", "order: must be an integer in [1, 12]"},
            {" --set 'times=[2, 1]'", "times: must be a non-empty list of increasing times > 0"},
            {" --set delta=0.1", "delta: unknown key for gkt evolve"},
-           {" --set 'model=\"hard-spheres\"'", "model: gkt evolve supports \"aggregation\", \"smooth-inelastic\""}}) {
+           {" --set 'model=\"hard-spheres\"'",
+            "model: gkt evolve supports \"aggregation\", \"rough\", \"rough-walton\", \"smooth-inelastic\""}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --output " + out + args);
     EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
@@ -543,6 +544,91 @@ TEST(CliRough, SmoothLimitAndBadInput) {
     EXPECT_TRUE(bad.out.empty());
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
   }
+}
+
+// The linear scheme's no-root region (theory.md §19.6): `hcs = "linear"` refuses it with one line naming the
+// state and the region; `"linear-or-maxwellian"` gives the Maxwellian θ and nan cumulants there.
+TEST(CliRough, LinearSchemeNoRootRegion) {
+  const std::string state =
+      " --set alpha=0.5 --set beta=0 --set 'coefficients=[\"rotational_temperature_ratio\", \"a20\"]'";
+  const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + state);
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_NE(bad.err.find("hcs: the linear scheme has no root at dimension = 3, alpha = 0.5, beta = 0, "
+                         "moment_of_inertia = 0.4 (the strongly inelastic, weakly rough region"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_TRUE(bad.out.empty());
+  const CliRun fallback =
+      run_gkt("table " + scene_path("rough_hcs.toml") + state + " --set 'hcs=\"linear-or-maxwellian\"'");
+  const CliRun maxwellian = run_gkt("table " + scene_path("rough_hcs.toml") + state + " --set 'hcs=\"maxwellian\"'");
+  ASSERT_EQ(fallback.status, 0) << fallback.err;
+  ASSERT_EQ(maxwellian.status, 0) << maxwellian.err;
+  const auto f = parse_csv(fallback.out), m = parse_csv(maxwellian.out);
+  EXPECT_EQ(f[0][0], "rotational_temperature_ratio");
+  EXPECT_EQ(f[1][0], m[1][0]);  // θ: the Maxwellian one
+  EXPECT_EQ(f[1][1], "nan");    // no cumulants
+}
+
+// `gkt evolve` with the rough model (theory.md §19.13; golden rough_evolve.csv): the last row equals
+// `gkt table` with the same keys (θ, ζ*, a20, a02, a11 of the steady linear scheme), the Maxwellian
+// scheme has no cumulant columns, and bad input is refused with one line (the linear scheme's no-root
+// region by name, theory.md §19.6).
+TEST(CliRoughEvolve, RelaxesToTheTableAndRefusesBadInput) {
+  const CliRun evolve = run_gkt("evolve " + scene_path("rough_evolve.toml"));
+  const CliRun table = run_gkt("table " + scene_path("rough_hcs.toml") +
+                               " --set 'alpha=[0.9]' --set 'coefficients=[\"rotational_temperature_ratio\", "
+                               "\"cooling_rate\", \"a20\", \"a02\", \"a11\"]'");
+  ASSERT_EQ(evolve.status, 0) << evolve.err;
+  ASSERT_EQ(table.status, 0) << table.err;
+  EXPECT_NE(evolve.err.find("cvode: steps="), std::string::npos);
+  const auto et = parse_csv(evolve.out), tt = parse_csv(table.out);
+  ASSERT_EQ(et[0],
+            (std::vector<std::string>{"time", "collisions", "translational_temperature", "rotational_temperature",
+                                      "rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11"}));
+  ASSERT_EQ(et.size(), 14u);
+  for (std::size_t k = 0; k < 5; ++k)
+    EXPECT_NEAR(std::stod(et.back()[4 + k]), std::stod(tt[1][1 + k]), 1e-8) << et[0][4 + k];
+  EXPECT_LT(std::stod(et[1][4]), 0.02);  // starts cold: θ(0) = 0.01
+  const CliRun maxwellian = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set 'hcs=\"maxwellian\"'");
+  ASSERT_EQ(maxwellian.status, 0) << maxwellian.err;
+  EXPECT_EQ(parse_csv(maxwellian.out)[0].size(), 6u);
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"beta=1.5", "beta: must be a number in [-1, 1], got 1.5"},
+           {"moment_of_inertia=0", "moment_of_inertia: must be a number in (0, 1], got 0"},
+           {"rotational_temperature=0", "rotational_temperature: must be a number > 0"},
+           {"translational_temperature=-1", "translational_temperature: must be a number > 0"},
+           {"order=2", "order: unknown key for gkt evolve"},
+           {"'hcs=\"nonlinear\"'", "hcs: must be one of"},
+           {"alpha=0.5 --set beta=0", "hcs: the linear scheme has no root at dimension = 3, alpha = 0.5, beta = 0"}}) {
+    const CliRun bad = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set " + set);
+    EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+  // The fallback is there only when asked for: the Maxwellian scheme's columns in the no-root region.
+  const CliRun fallback = run_gkt("evolve " + scene_path("rough_evolve.toml") +
+                                  " --set alpha=0.5 --set beta=0 --set 'hcs=\"linear-or-maxwellian\"'");
+  ASSERT_EQ(fallback.status, 0) << fallback.err;
+  EXPECT_EQ(parse_csv(fallback.out)[0].size(), 6u);
+  // Walton friction (Maxwellian rates by quadrature): friction = 10⁶ is the constant-β gas with β = β0.
+  const std::string walton_keys = " --set beta0=0.5 --set friction=1000000 --set points=5 --set rtol=1e-11";
+  const CliRun walton = run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + walton_keys);
+  ASSERT_EQ(walton.status, 0) << walton.err;
+  const auto wt = parse_csv(walton.out),
+             mt = parse_csv(run_gkt("evolve " + scene_path("rough_evolve.toml") +
+                                    " --set 'hcs=\"maxwellian\"' --set points=5 --set rtol=1e-11")
+                                .out);
+  ASSERT_EQ(wt.size(), mt.size());
+  ASSERT_EQ(wt[0], mt[0]);
+  for (std::size_t row = 1; row < wt.size(); ++row)
+    EXPECT_NEAR(std::stod(wt[row][4]) / std::stod(mt[row][4]), 1, 1e-7) << "row " << row;
+  const CliRun bad_friction =
+      run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + walton_keys + " --set friction=-1");
+  EXPECT_EQ(bad_friction.status, 2);
+  EXPECT_NE(bad_friction.err.find("friction: must be a number in [0, 1000000], got -1"), std::string::npos)
+      << bad_friction.err;
 }
 
 // The rough-walton model (theory.md §19.10): friction = 1e6 reproduces the rough model with beta = beta0

@@ -127,3 +127,43 @@ TEST(RoughHomogeneousCoolingState, TemperatureRatioAgainstDsmc) {
     }
   }
 }
+
+// The moment inequalities of a non-negative distribution: Var x ≥ 0, Var y ≥ 0 and Cauchy–Schwarz for
+// the covariance of x = c² and y = ŵ² (theory.md §19.6).
+TEST(RoughHomogeneousCoolingState, RealizableCumulants) {
+  for (int d : {2, 3}) {
+    const double dr = d == 3 ? 3 : 1, eps = 1e-12;
+    EXPECT_TRUE(gkt::rough_cumulants_realizable(d, 0, 0, 0));
+    EXPECT_TRUE(gkt::rough_cumulants_realizable(d, -2.0 / (d + 2), 0, 0));
+    EXPECT_FALSE(gkt::rough_cumulants_realizable(d, -2.0 / (d + 2) - eps, 0, 0));
+    EXPECT_FALSE(gkt::rough_cumulants_realizable(d, 0, -2.0 / (dr + 2) - eps, 0));
+    const double edge = 2 / std::sqrt(d * dr);  // d d_r a11² = 2·2 at a20 = a02 = 0
+    EXPECT_TRUE(gkt::rough_cumulants_realizable(d, 0, 0, edge * (1 - eps)));
+    EXPECT_FALSE(gkt::rough_cumulants_realizable(d, 0, 0, -edge * (1 + eps)));
+  }
+}
+
+// Where the linear scheme has no root with realizable cumulants (theory.md §19.6): the edges of the
+// region at 0.01 resolution, and a root the old nearest-sign-change rule took at α = 0.1, β = 0 (3D;
+// θ = 0.225 against the Maxwellian 3.08, a02 = −3.6 < −2/5) is now refused.
+TEST(RoughHomogeneousCoolingState, LinearSchemeNoRootRegion) {
+  struct Case {
+    int d;
+    Rational kappa, beta, inside, outside;
+  };
+  for (const Case& c : {Case{3, Rational(2, 5), Rational(0), Rational(60, 100), Rational(61, 100)},
+                        Case{3, Rational(2, 5), Rational(-1, 2), Rational(81, 100), Rational(82, 100)},
+                        Case{3, Rational(2, 5), Rational(3, 10), Rational(18, 100), Rational(19, 100)},
+                        Case{2, Rational(1, 2), Rational(1, 2), Rational(48, 100), Rational(49, 100)},
+                        Case{2, Rational(1, 2), Rational(0), Rational(64, 100), Rational(65, 100)}}) {
+    const auto in = rough_homogeneous_cooling_state(c.d, c.inside, c.beta, c.kappa, RoughHcsScheme::linear);
+    const auto out = rough_homogeneous_cooling_state(c.d, c.outside, c.beta, c.kappa, RoughHcsScheme::linear);
+    EXPECT_FALSE(in.linear_scheme_solved) << "d=" << c.d << " alpha=" << c.inside << " beta=" << c.beta;
+    EXPECT_TRUE(std::isnan(in.temperature_ratio));
+    ASSERT_TRUE(out.linear_scheme_solved) << "d=" << c.d << " alpha=" << c.outside << " beta=" << c.beta;
+    EXPECT_TRUE(gkt::rough_cumulants_realizable(c.d, out.a20, out.a02, out.a11));
+  }
+  EXPECT_FALSE(rough_homogeneous_cooling_state(3, Rational(1, 10), Rational(0), Rational(2, 5), RoughHcsScheme::linear)
+                   .linear_scheme_solved);
+  EXPECT_NE(gkt::rough_linear_no_root_region(3).find("<= 0.60 at beta = 0,"), std::string::npos);
+}

@@ -34,4 +34,15 @@ inline void check(int flag, const char* what) {
   if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + what + " failed (flag " + std::to_string(flag) + ")");
 }
 
+/// CVODE's error handler: keeps the last error message (one line) instead of printing it.
+inline void keep_message(int error_code, const char*, const char*, char* message, void* data) {
+  if (error_code >= 0) return;  // warnings: the counters and the result tell the story
+  std::string& kept = *static_cast<std::string*>(data);
+  kept = message;
+  kept.erase(0, kept.find_first_not_of(" \n"));
+  for (char& c : kept)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!kept.empty() && (kept.back() == ' ' || kept.back() == '.')) kept.pop_back();
+}
+
 }  // namespace gkt::detail

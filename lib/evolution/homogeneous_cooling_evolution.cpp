@@ -22,6 +22,7 @@ namespace {
 using detail::check;
 using detail::ContextDeleter;
 using detail::CvodeDeleter;
+using detail::keep_message;
 using detail::MatrixDeleter;
 using detail::SolverDeleter;
 using detail::VectorDeleter;
@@ -94,21 +95,6 @@ int jacobian(sunrealtype, N_Vector y, N_Vector, SUNMatrix jm, void* data, N_Vect
   }
   return 0;
 }
-
-/// CVODE's error handler: keeps the last error message (one line) instead of printing it.
-void keep_message(int error_code, const char*, const char*, char* message, void* data) {
-  if (error_code >= 0) return;  // warnings: the counters and the result tell the story
-  std::string& kept = *static_cast<std::string*>(data);
-  kept = message;
-  kept.erase(0, kept.find_first_not_of(" \n"));
-  for (char& c : kept)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!kept.empty() && (kept.back() == ' ' || kept.back() == '.')) kept.pop_back();
-}
-
-}  // namespace
-
-namespace {
 
 EvolutionResult integrate(Problem& problem, int dimension, double temperature0, const std::vector<double>& initial_a,
                           const std::vector<double>& times, double rtol, double atol, bool analytic_jacobian) {

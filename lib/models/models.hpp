@@ -16,6 +16,7 @@
 #include "gkt/transport/common/enskog_state.hpp"
 #include "gkt/transport/common/sonine_solution.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
+#include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "support/strings.hpp"
 
 namespace gkt::detail {
@@ -33,6 +34,19 @@ std::vector<ParameterSpec> aggregation_evolution_parameters();
 /// its times from t_end and points): the moments, or with distribution = true the long format.
 Trajectory aggregation_trajectory(const TrajectoryRequest& request);
 std::unique_ptr<TransportModel> make_rough_walton_model();
+/// Returns the keys of `gkt evolve` for the rough models (rough_trajectory.cpp): the specs `names`
+/// of `model_parameters`, the initial temperatures, rtol, atol.
+std::vector<ParameterSpec> rough_evolution_parameters(const std::vector<ParameterSpec>& model_parameters,
+                                                      const std::vector<std::string>& names);
+/// Returns the rough gas's cooling trajectory for a request validated against `schema`
+/// (rough_evolution_parameters): the temperatures, θ, ζ* and, with hcs = "linear", a20, a02, a11.
+Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request);
+/// Returns the Walton gas's Maxwellian cooling trajectory (keys dimension, alpha, beta0,
+/// moment_of_inertia, friction, the initial temperatures, rtol, atol): the temperatures, θ and ζ*.
+Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request);
+/// Returns the linear-scheme HCS; throws std::invalid_argument "hcs: …" naming the region where the
+/// linear scheme has no root (theory.md §19.6) instead of returning a state without one.
+RoughCoolingState linear_rough_state(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa);
 
 /// Returns `model` behind a guard that validates every call against the model's schema first
 /// (validated_model.cpp): the registry hands out only guarded models.

@@ -86,10 +86,21 @@ class RoughModel final : public TransportModel {
              true,
              true,
              Rational(0),
-             "approximation of the homogeneous cooling state: first Sonine (cumulants linear) or Maxwellian",
-             {"linear", "maxwellian"}}};
+             "approximation of the homogeneous cooling state: first Sonine (cumulants linear), Maxwellian, or first "
+             "Sonine falling back to Maxwellian (cumulants nan) where the linear scheme has no root",
+             {"linear", "maxwellian", "linear-or-maxwellian"}}};
   }
   [[nodiscard]] int max_order() const override { return 1; }
+  [[nodiscard]] bool supports(Capability capability) const override {
+    return capability == Capability::table || capability == Capability::evolve;
+  }
+  [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
+    return rough_evolution_parameters(parameters(), {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
+  }
+  /// T_t(τ), T_r(τ) and the cumulants from Maxwellians at T_t(0), T_r(0) (theory.md §19.13).
+  Trajectory evolve(const TrajectoryRequest& request) override {
+    return rough_trajectory(evolution_parameters(), request);
+  }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
@@ -108,8 +119,18 @@ class RoughModel final : public TransportModel {
       throw std::invalid_argument("tolerance: the rough model has the first approximation only: use order = 1");
     if (order.order != 1) throw std::invalid_argument("order: must be exactly 1, got " + std::to_string(order.order));
     const int d = dim == Rational(2) ? 2 : 3;
-    const RoughCoolingState s = rough_homogeneous_cooling_state(
-        d, alpha, beta, kappa, scheme == "linear" ? RoughHcsScheme::linear : RoughHcsScheme::maxwellian);
+    RoughCoolingState s;
+    if (scheme == "linear") {
+      s = linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region (theory.md §19.6)
+    } else if (scheme == "maxwellian") {
+      s = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
+    } else {  // linear-or-maxwellian: the Maxwellian θ, ζ* and nan cumulants where the linear scheme has no root
+      s = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::linear);
+      if (!s.linear_scheme_solved) {
+        s = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
+        s.a20 = s.a02 = s.a11 = std::nan("");
+      }
+    }
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
       double x = 0;
@@ -158,6 +179,17 @@ class RoughModel final : public TransportModel {
 };
 
 }  // namespace
+
+RoughCoolingState linear_rough_state(int dimension, const Rational& alpha, const Rational& beta,
+                                     const Rational& kappa) {
+  RoughCoolingState s = rough_homogeneous_cooling_state(dimension, alpha, beta, kappa, RoughHcsScheme::linear);
+  if (s.linear_scheme_solved) return s;
+  throw std::invalid_argument("hcs: the linear scheme has no root at dimension = " + std::to_string(dimension) +
+                              ", alpha = " + alpha.to_decimal_string() + ", beta = " + beta.to_decimal_string() +
+                              ", moment_of_inertia = " + kappa.to_decimal_string() + " (" +
+                              rough_linear_no_root_region(dimension) +
+                              "); use hcs = \"maxwellian\" or \"linear-or-maxwellian\"");
+}
 
 std::unique_ptr<TransportModel> make_rough_model() { return std::make_unique<RoughModel>(); }
 

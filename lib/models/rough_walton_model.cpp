@@ -79,6 +79,16 @@ class RoughWaltonModel final : public TransportModel {
              {}}};
   }
   [[nodiscard]] int max_order() const override { return 1; }
+  [[nodiscard]] bool supports(Capability capability) const override {
+    return capability == Capability::table || capability == Capability::evolve;
+  }
+  [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
+    return rough_evolution_parameters(parameters(), {"dimension", "alpha", "beta0", "moment_of_inertia", "friction"});
+  }
+  /// T_t(τ), T_r(τ) from Maxwellians, the Walton rates by quadrature at every step (theory.md §19.13).
+  Trajectory evolve(const TrajectoryRequest& request) override {
+    return rough_walton_trajectory(evolution_parameters(), request);
+  }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {

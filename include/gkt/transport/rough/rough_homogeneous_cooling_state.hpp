@@ -7,6 +7,7 @@
 // symbolic, as an exact Laurent polynomial in θ/κ; θ is then the root of one equation.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
@@ -25,7 +26,8 @@ struct RoughCoolingState {
   double cooling_rate = 0;       ///< ζ* = ζ/ν0, ν0 = n T_t/η0(T_t) (the smooth gas's reduction, conventions.md)
   double a20 = 0, a02 = 0, a11 = 0;
   bool spin_decoupled = false;
-  /// False when the linear scheme has no real solution near the Maxwellian θ (every field NaN):
+  /// False when the linear scheme has no real solution near the Maxwellian θ with realizable
+  /// cumulants (rough_cumulants_realizable; every field NaN):
   /// the fourth-degree balance of the spin is then not damped by collisions faster than the
   /// scaling 2ζ amplifies it (theory.md §19.6).
   bool linear_scheme_solved = true;
@@ -35,6 +37,15 @@ struct RoughCoolingState {
 /// naming the field otherwise). Cost: three exact engine tables, ~0.1 s.
 RoughCoolingState rough_homogeneous_cooling_state(int dimension, const Rational& alpha, const Rational& beta,
                                                   const Rational& kappa, RoughHcsScheme scheme);
+
+/// Returns true if (a20, a02, a11) are cumulants some non-negative distribution can have: the
+/// variances of x = c² and y = ŵ² are non-negative, a20 ≥ −2/(d+2), a02 ≥ −2/(d_r+2), and their
+/// covariance obeys Cauchy–Schwarz, d d_r a11² ≤ (2 + (d+2)a20)(2 + (d_r+2)a02) (theory.md §19.6).
+bool rough_cumulants_realizable(int dimension, double a20, double a02, double a11);
+
+/// Returns a one-line description of where in (α, β, κ) the linear scheme has no root for
+/// dimension d (mapped in theory.md §19.6), for error messages.
+std::string rough_linear_no_root_region(int dimension);
 
 /// Returns the exact coefficients (c0, c1, c2) of the Maxwellian temperature-ratio equation
 /// c0 + c1 τ + c2 τ² = 0, τ = θ/κ (energy balance ζ_t = ζ_r with both temperatures' Maxwellians).

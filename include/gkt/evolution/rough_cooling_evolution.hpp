@@ -1,0 +1,56 @@
+// Time evolution of a freely cooling homogeneous gas of rough spheres or disks: the translational
+// and rotational temperatures T_t(τ), T_r(τ) and, in the linear first-Sonine scheme, the cumulants
+// a20, a02, a11 (docs/theory.md §19.13), integrated with SUNDIALS CVODE (BDF, dense, difference-
+// quotient Jacobian). From any θ(0) = T_r(0)/T_t(0) the ratio relaxes to the HCS value of
+// rough_homogeneous_cooling_state (the same balances) and T_t then follows Haff's law.
+//
+// Time τ = ω_M t with ω_M = nσ^{d−1}v_ref ν (ν of theory.md (5.3)) the Maxwellian collision
+// frequency at the reference temperature T_ref in which the temperatures are given
+// (v_ref = √(2T_ref/m)); `collisions` counts collisions per particle.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+#include "gkt/transport/rough/rough_cooling_rates.hpp"
+
+namespace gkt {
+
+/// One output time of a rough-gas trajectory.
+struct RoughEvolutionSample {
+  double time = 0;                       ///< τ = ω_M(T_ref) t
+  double collisions = 0;                 ///< collisions per particle since τ = 0
+  double translational_temperature = 1;  ///< T_t/T_ref
+  double rotational_temperature = 1;     ///< T_r/T_ref
+  double cooling_rate = 0;               ///< ζ* = ζ_t/ν0(T_t) = ((d+2)/4) z_t (the table's `cooling_rate`)
+  double a20 = 0, a02 = 0, a11 = 0;      ///< 0 in the Maxwellian scheme
+};
+
+/// The samples at the requested times and CVODE's counters.
+struct RoughEvolutionResult {
+  std::vector<RoughEvolutionSample> samples;
+  EvolutionCounters counters;
+};
+
+/// Returns the trajectory from T_t(0) = translational0, T_r(0) = rotational0 (units T_ref, both
+/// > 0; Maxwellian initial distributions) at the increasing positive `times`. linear = false: the
+/// Maxwellian two-temperature equations (theory.md (19.12), (19.24)); true: the first-Sonine scheme carrying
+/// a20, a02, a11 (theory.md (19.25)). Throws std::invalid_argument naming the field on bad input,
+/// EvolutionFailure (an invalid_argument) if CVODE stops early.
+RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
+                                          double rotational0, const std::vector<double>& times, double rtol,
+                                          double atol);
+
+/// Maxwellian rates at θ = T_r/T_t: (z_t, z_r) = (ζ_t, ζ_r)/(nσ^{d−1}v_t ν) (e.g. from the Walton
+/// quadrature of rough_walton.hpp, times 4/(d+2)).
+using RoughMaxwellianRates = std::function<std::array<double, 2>(double temperature_ratio)>;
+
+/// Returns the Maxwellian trajectory (theory.md (19.24) with a = 0) for rates given as a function of
+/// θ, d ∈ {2, 3}; otherwise as evolve_rough_cooling (a20 = a02 = a11 = 0 in every sample).
+RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,
+                                                     double translational0, double rotational0,
+                                                     const std::vector<double>& times, double rtol, double atol);
+
+}  // namespace gkt

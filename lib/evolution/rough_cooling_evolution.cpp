@@ -1,0 +1,168 @@
+#include "gkt/evolution/rough_cooling_evolution.hpp"
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include "evolution/cvode_support.hpp"
+
+namespace gkt {
+
+namespace {
+
+using detail::check;
+using detail::ContextDeleter;
+using detail::CvodeDeleter;
+using detail::keep_message;
+using detail::MatrixDeleter;
+using detail::SolverDeleter;
+using detail::VectorDeleter;
+
+/// State y = (ln T_t, ln T_r, C, a20, a02, a11) (the cumulants only in the linear scheme).
+struct Problem {
+  const RoughCoolingRates* rates = nullptr;          // the engine's balances, or
+  const RoughMaxwellianRates* maxwellian = nullptr;  // Maxwellian rates as a function of θ
+  bool linear = false;
+  std::array<double, 3> base{};  // Maxwellian ⟨x²⟩, ⟨y²⟩, ⟨xy⟩
+
+  [[nodiscard]] std::array<double, 3> cumulants(const double* y) const {
+    return linear ? std::array<double, 3>{y[3], y[4], y[5]} : std::array<double, 3>{};
+  }
+};
+
+/// The rates of theory.md (19.24)–(19.25): d ln T_t/dτ = −√T_t z_t(a), d ln T_r/dτ = −√T_t z_r(a),
+/// dC/dτ = √T_t (1 + c a20) and ⟨ψ_p⟩_M da_p/dτ = √T_t [G_p(τ, a) + l_p (z_r − z_t) ⟨ψ_p⟩_a],
+/// l = (0, 2, 1) the spin degree of ψ = (x², y², xy) over two.
+int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
+  const auto& p = *static_cast<const Problem*>(data);
+  const double* yv = N_VGetArrayPointer(y);
+  double* dv = N_VGetArrayPointer(ydot);
+  const double log_theta = yv[1] - yv[0];
+  if (!std::isfinite(log_theta)) return 1;  // recoverable: CVODE retries with a smaller step
+  const double sq = std::exp(0.5 * yv[0]);
+  if (p.maxwellian != nullptr) {
+    const auto z = (*p.maxwellian)(std::exp(log_theta));
+    if (!std::isfinite(z[0]) || !std::isfinite(z[1])) return 1;
+    dv[0] = -sq * z[0];
+    dv[1] = -sq * z[1];
+    dv[2] = sq;
+    return 0;
+  }
+  const auto a = p.cumulants(yv);
+  const RoughBalances b = p.rates->at(std::exp(log_theta) / p.rates->kappa(), a);
+  dv[0] = -sq * b.translational_rate;
+  dv[1] = -sq * b.rotational_rate;
+  dv[2] = sq * p.rates->collision_frequency_factor(a[0]);
+  if (!p.linear) return 0;
+  constexpr std::array<double, 3> spin_degree{0, 2, 1};
+  const double spin_excess = b.rotational_rate - b.translational_rate;
+  for (std::size_t q = 0; q < 3; ++q)
+    dv[3 + q] = sq * (b.residual[q + 1] + spin_degree[q] * spin_excess * p.base[q] * (1 + a[q])) / p.base[q];
+  return 0;
+}
+
+RoughEvolutionResult integrate(Problem& problem, int dimension, double translational0, double rotational0,
+                               const std::vector<double>& times, double rtol, double atol) {
+  if (!(translational0 > 0) || !std::isfinite(translational0))
+    throw std::invalid_argument("translational_temperature: must be a finite number > 0");
+  if (!(rotational0 > 0) || !std::isfinite(rotational0))
+    throw std::invalid_argument("rotational_temperature: must be a finite number > 0");
+  if (!(rtol > 0) || !(atol > 0)) throw std::invalid_argument("rtol, atol: must be > 0");
+  for (std::size_t i = 0; i < times.size(); ++i)
+    if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
+      throw std::invalid_argument("times: must be positive and increasing");
+  const int n = problem.linear ? 6 : 3;
+
+  SUNContext raw_context = nullptr;
+  check(SUNContext_Create(nullptr, &raw_context), "SUNContext_Create");
+  const std::unique_ptr<std::remove_pointer_t<SUNContext>, ContextDeleter> context(raw_context);
+  const std::unique_ptr<std::remove_pointer_t<N_Vector>, VectorDeleter> y(N_VNew_Serial(n, raw_context));
+  double* yv = N_VGetArrayPointer(y.get());
+  yv[0] = std::log(translational0);
+  yv[1] = std::log(rotational0);
+  for (int k = 2; k < n; ++k) yv[k] = 0.0;
+
+  const std::unique_ptr<void, CvodeDeleter> cvode(CVodeCreate(CV_BDF, raw_context));
+  if (!cvode) throw std::runtime_error("CVODE: CVodeCreate failed");
+  std::string cvode_message;
+  check(CVodeSetErrHandlerFn(cvode.get(), keep_message, &cvode_message), "CVodeSetErrHandlerFn");
+  check(CVodeInit(cvode.get(), right_hand_side, 0.0, y.get()), "CVodeInit");
+  check(CVodeSStolerances(cvode.get(), rtol, atol), "CVodeSStolerances");
+  check(CVodeSetUserData(cvode.get(), &problem), "CVodeSetUserData");
+  check(CVodeSetMaxNumSteps(cvode.get(), 1000000), "CVodeSetMaxNumSteps");
+  const std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter> matrix(SUNDenseMatrix(n, n, raw_context));
+  const std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter> solver(
+      SUNLinSol_Dense(y.get(), matrix.get(), raw_context));
+  check(CVodeSetLinearSolver(cvode.get(), solver.get(), matrix.get()), "CVodeSetLinearSolver");
+
+  const double d = dimension;
+  RoughEvolutionResult result;
+  for (double target : times) {
+    sunrealtype reached = 0;
+    const int flag = CVode(cvode.get(), target, y.get(), &reached, CV_NORMAL);
+    if (flag < 0) {
+      const std::string what =
+          "CVODE: " + (cvode_message.empty() ? "CVode failed (flag " + std::to_string(flag) + ")" : cvode_message);
+      if (flag == CV_TOO_MUCH_ACC) throw EvolutionFailure("rtol: " + what + "; use rtol >= 1e-14", flag, reached);
+      throw EvolutionFailure("times: " + what + "; integrate to an earlier time", flag, reached);
+    }
+    RoughEvolutionSample s;
+    s.time = reached;
+    s.translational_temperature = std::exp(yv[0]);
+    s.rotational_temperature = std::exp(yv[1]);
+    s.collisions = yv[2];
+    const auto a = problem.cumulants(yv);
+    s.a20 = a[0];
+    s.a02 = a[1];
+    s.a11 = a[2];
+    const double theta = std::exp(yv[1] - yv[0]);
+    s.cooling_rate =
+        (d + 2) / 4 *
+        (problem.maxwellian != nullptr ? (*problem.maxwellian)(theta)[0]
+                                       : problem.rates->at(theta / problem.rates->kappa(), a).translational_rate);
+    result.samples.push_back(s);
+  }
+  long v = 0;
+  CVodeGetNumSteps(cvode.get(), &v);
+  result.counters.steps = v;
+  CVodeGetNumRhsEvals(cvode.get(), &v);
+  result.counters.rhs_evaluations = v;
+  CVodeGetNumJacEvals(cvode.get(), &v);
+  result.counters.jacobian_evaluations = v;
+  CVodeGetNumErrTestFails(cvode.get(), &v);
+  result.counters.error_test_failures = v;
+  CVodeGetNumNonlinSolvIters(cvode.get(), &v);
+  result.counters.nonlinear_iterations = v;
+  return result;
+}
+
+}  // namespace
+
+RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
+                                          double rotational0, const std::vector<double>& times, double rtol,
+                                          double atol) {
+  Problem problem;
+  problem.rates = &rates;
+  problem.linear = linear;
+  problem.base = rates.maxwellian_fourth_moments();
+  return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol);
+}
+
+RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,
+                                                     double translational0, double rotational0,
+                                                     const std::vector<double>& times, double rtol, double atol) {
+  if (dimension != 2 && dimension != 3) throw std::invalid_argument("dimension: must be 2 or 3");
+  Problem problem;
+  problem.maxwellian = &rates;
+  return integrate(problem, dimension, translational0, rotational0, times, rtol, atol);
+}
+
+}  // namespace gkt

@@ -1,0 +1,100 @@
+// What `gkt evolve` asks the "rough" model for: the free cooling of rough spheres or disks from
+// Maxwellians at T_t(0), T_r(0), in the Maxwellian or the linear first-Sonine scheme
+// (rough_cooling_evolution.hpp; docs/theory.md §19.13, conventions.md), and of the Walton gas in the
+// Maxwellian approximation.
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "gkt/evolution/rough_cooling_evolution.hpp"
+#include "gkt/transport/rough/rough_walton.hpp"
+#include "models/models.hpp"
+
+namespace gkt::detail {
+
+namespace {
+
+/// Returns the rows of a rough trajectory: temperatures, θ, ζ* and (linear scheme) the cumulants.
+Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear);
+
+}  // namespace
+
+std::vector<ParameterSpec> rough_evolution_parameters(const std::vector<ParameterSpec>& model_parameters,
+                                                      const std::vector<std::string>& names) {
+  std::vector<ParameterSpec> specs;
+  for (const auto& name : names) specs.push_back(find_parameter(model_parameters, name));
+  auto positive = [](const char* name, const Rational& fallback, const char* description) {
+    return ParameterSpec{
+        name, ParameterSpec::Kind::real, Rational(0), ParameterSpec::unbounded(), false, true, fallback, description,
+        {}};
+  };
+  specs.push_back(positive("translational_temperature", Rational(1),
+                           "initial translational temperature T_t(0)/T_ref (T_ref sets the time unit)"));
+  specs.push_back(positive("rotational_temperature", Rational(1), "initial rotational temperature T_r(0)/T_ref"));
+  for (auto& spec : evolution_common_parameters())
+    if (spec.name == "rtol" || spec.name == "atol") specs.push_back(std::move(spec));
+  return specs;
+}
+
+Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request) {
+  const SchemaPoint p(schema, request.parameters);
+  const int d = p.number("dimension") == Rational(2) ? 2 : 3;
+  const Rational alpha = p.number("alpha"), beta = p.number("beta"), kappa = p.number("moment_of_inertia");
+  const std::string scheme = p.choice("hcs");
+  // "linear-or-maxwellian": the linear scheme where it has a root, else the Maxwellian one.
+  const bool linear =
+      scheme == "linear" ||
+      (scheme == "linear-or-maxwellian" &&
+       rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::linear).linear_scheme_solved);
+  if (scheme == "linear") (void)linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region
+  const RoughCoolingRates rates(d, alpha, beta, kappa);
+  const RoughEvolutionResult result = evolve_rough_cooling(
+      rates, linear, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(),
+      request.times, p.number("rtol").to_double(), p.number("atol").to_double());
+  return tabulate_rough_trajectory(result, linear);
+}
+
+Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request) {
+  const SchemaPoint p(schema, request.parameters);
+  const int d = p.number("dimension") == Rational(2) ? 2 : 3;
+  const double alpha = p.number("alpha").to_double(), beta0 = p.number("beta0").to_double();
+  const double kappa = p.number("moment_of_inertia").to_double(), friction = p.number("friction").to_double();
+  // Maxwellian rates by quadrature (theory.md (19.21)), ζ/ν0 → z = ζ/(nσ^{d−1}v_t ν) = (4/(d+2)) ζ/ν0.
+  const RoughMaxwellianRates rates = [=](double theta) {
+    const RoughWaltonRates r = rough_walton_rates(d, alpha, beta0, kappa, friction, theta);
+    return std::array<double, 2>{4.0 / (d + 2) * r.translational, 4.0 / (d + 2) * r.rotational};
+  };
+  const RoughEvolutionResult result = evolve_rough_maxwellian_cooling(
+      d, rates, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(),
+      request.times, p.number("rtol").to_double(), p.number("atol").to_double());
+  return tabulate_rough_trajectory(result, false);
+}
+
+namespace {
+
+Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear) {
+  Trajectory out;
+  out.columns = {"time",
+                 "collisions",
+                 "translational_temperature",
+                 "rotational_temperature",
+                 "rotational_temperature_ratio",
+                 "cooling_rate"};
+  if (linear) out.columns.insert(out.columns.end(), {"a20", "a02", "a11"});
+  for (const auto& s : result.samples) {
+    std::vector<double> row{s.time,
+                            s.collisions,
+                            s.translational_temperature,
+                            s.rotational_temperature,
+                            s.rotational_temperature / s.translational_temperature,
+                            s.cooling_rate};
+    if (linear) row.insert(row.end(), {s.a20, s.a02, s.a11});
+    out.rows.push_back(std::move(row));
+  }
+  out.counters = result.counters;
+  return out;
+}
+
+}  // namespace
+
+}  // namespace gkt::detail
