@@ -106,7 +106,23 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
                                  format_error(worst_error) + " (" + worst + ")";
     }
   }
-  for (const auto& v : values) {
+  // --units physical: each coefficient (and its error) times the SI value of its reduction at
+  // this row's dimension (docs/conventions.md "Physical units").
+  std::vector<double> scale(values.size(), 1.0);
+  if (options.physical) {
+    const auto given = parameters.numbers.find("dimension");
+    int dimension = 3;  // a model without the key is three-dimensional (viscoelastic spheres)
+    if (given != parameters.numbers.end())
+      dimension = static_cast<int>(given->second.to_double());
+    else
+      for (const auto& spec : model.parameters())
+        if (spec.name == "dimension") dimension = static_cast<int>(spec.default_value.to_double());
+    for (std::size_t k = 0; k < values.size(); ++k)
+      scale[k] =
+          physical_scale(describe_column(scene.model, scene.coefficients[k]).reduction, dimension, *options.physical);
+  }
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const auto& v = values[k];
     if (options.exact && !v.exact)
       throw std::invalid_argument("--exact: a requested coefficient is not a rational number here (model " +
                                   scene.model + "); drop --exact");
@@ -115,10 +131,12 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
     else if (v.infinite)
       row.emplace_back("inf");  // e.g. critical_length of the elastic gas (JSON: null)
     else
-      row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double()));
+      row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double() * scale[k]));
   }
-  for (const auto& v : values)
-    row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double()) : "nan");
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const auto& v = values[k];
+    row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double() * scale[k]) : "nan");
+  }
   result.order = values.empty() ? request.order : values.front().order;
   row.push_back(std::to_string(result.order));
   for (const auto& v : values) {
