@@ -30,11 +30,11 @@ enum class Reduction {
 /// One entry of the catalogue. `name` is a canonical column name or a pattern in which `<i>`,
 /// `<j>` (species indices) and `<k>` (an order or power) stand for a positive integer.
 struct ColumnDescription {
-  std::string name;
-  std::vector<std::string> models;  ///< the models this entry is for; empty: every model without its own entry
-  std::string meaning;              ///< the quantity, with the equation or section that defines it
-  std::string reduced_by;           ///< the reference quantity as docs/conventions.md writes it ("—": none)
-  Reduction reduction = Reduction::none;
+  std::string name;                       ///< the column name or pattern (e.g. `mutual_diffusion_<i>_<j>`)
+  std::vector<std::string> models;        ///< the models this entry is for; empty: every model without its own entry
+  std::string meaning;                    ///< the quantity, with the equation or section that defines it
+  std::string reduced_by;                 ///< the reference quantity as docs/conventions.md writes it ("—": none)
+  Reduction reduction = Reduction::none;  ///< what --units physical multiplies the column by
 };
 
 /// Returns the whole catalogue, model-specific entries before the general ones.
