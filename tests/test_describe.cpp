@@ -283,6 +283,14 @@ TEST(TableJson, CarriesVersionSceneAndColumnMeanings) {
   EXPECT_NE(doc["column_descriptions"]["alpha"]["meaning"].get<std::string>().find("restitution"), std::string::npos);
 }
 
+TEST(TableJson, EvolveJsonCarriesTheVersion) {
+  const CliRun r = gkt_run("evolve " + scene("cooling_constant_alpha.toml") + " --set points=3 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["gkt_version"], GKT_VERSION);
+  EXPECT_EQ(doc["rows"].size(), 3U);
+}
+
 TEST(TableJson, CsvBytesAreUnchangedByTheDescription) {
   const CliRun csv = gkt_run("table " + scene("hard_spheres_converged.toml") + " --set order=3");
   ASSERT_EQ(csv.status, 0) << csv.err;

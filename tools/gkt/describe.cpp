@@ -134,7 +134,6 @@ std::string describe_table(const Scene& scene, const std::optional<PhysicalRefer
   const auto model = make_transport_model(scene.model);
   const auto dimension = scene_dimension(scene);
   Json doc;
-  doc["gkt_version"] = GKT_VERSION;
   doc["units"] = physical ? "physical" : "reduced";
   if (physical) {
     Json r;

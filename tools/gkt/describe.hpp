@@ -10,7 +10,7 @@
 
 namespace gkt::cli {
 
-/// Returns a JSON object (text) with "gkt_version", "units" ("reduced" or "physical"; physical:
+/// Returns a JSON object (text) with "units" ("reduced" or "physical"; physical:
 /// also "reference", the SI reference values), "scene" (every key of the scene's model as used,
 /// defaults included, and the list "defaults_applied") and "column_descriptions" (per column of
 /// the table: meaning, reduced_by, unit of the printed values and si_unit); to_json puts its

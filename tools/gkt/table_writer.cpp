@@ -66,6 +66,7 @@ std::string to_csv(const Table& t) {
 std::string to_json(const Table& t) {
   nlohmann::ordered_json doc;
   doc["model"] = t.model;
+  doc["gkt_version"] = GKT_VERSION;  // every JSON output says which gkt wrote it (issue 19)
   const auto description =
       t.description_json.empty() ? nlohmann::ordered_json::object() : nlohmann::ordered_json::parse(t.description_json);
   for (const auto& [key, value] : description.items())

@@ -37,8 +37,9 @@ std::string to_csv(const Table& t);
 std::string csv_line(const std::vector<std::string>& cells);
 /// Returns the last line of an interrupted CSV table: "# interrupted after N of M rows".
 std::string csv_interrupted_line(const Table& t);
-/// Returns the table as JSON: {"model": …, "columns": […], "rows": [{column: value, …}, …]},
-/// with the members of description_json (if any) after "model" and "columns", and for an
+/// Returns the table as JSON: {"model": …, "gkt_version": …, "columns": […], "rows": [{column:
+/// value, …}, …]}, with the members of description_json (if any) after "gkt_version" and
+/// "columns", and for an
 /// interrupted table followed by "interrupted": true and "planned_rows": M.
 std::string to_json(const Table& t);
 
