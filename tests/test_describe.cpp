@@ -386,7 +386,13 @@ TEST(TableJson, PhysicalUnitsRefuseWhatTheyCannotConvert) {
   const CliRun exact = gkt_run(table + " --set dimension=3 --set order=1 --exact --units physical" + all);
   EXPECT_EQ(exact.status, 2);
   EXPECT_NE(exact.err.find("not with --exact"), std::string::npos) << exact.err;
-  for (const CliRun* r : {&swept, &missing, &stray, &negative, &exact}) EXPECT_TRUE(r->out.empty()) << r->out;
+  const CliRun underflow = gkt_run(table +
+                                   " --set dimension=3 --units physical --mass 1e-300 --diameter 1e300 "
+                                   "--number-density 1 --temperature 1");
+  EXPECT_EQ(underflow.status, 2);
+  EXPECT_NE(underflow.err.find("over- or underflow of a double"), std::string::npos) << underflow.err;
+  for (const CliRun* r : {&swept, &missing, &stray, &negative, &exact, &underflow})
+    EXPECT_TRUE(r->out.empty()) << r->out;
 }
 
 TEST(ModelsDescribe, JsonListsEveryModelWithKeysCommandsAndColumns) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string_view>
 
@@ -298,9 +299,12 @@ double physical_scale(Reduction reduction, int dimension, const PhysicalReferenc
       scale = m * n * gas.self_diffusion / energy;
       break;
   }
-  if (!std::isnormal(scale))
-    throw std::invalid_argument("--units physical: the reference values give a scale of " + std::to_string(scale) +
-                                " (over- or underflow of a double); use SI values of a gas");
+  if (!std::isnormal(scale)) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%.3g", scale);
+    throw std::invalid_argument(std::string("--units physical: the reference values make a scale of ") + value +
+                                " (over- or underflow of a double); give the gas in SI units");
+  }
   return scale;
 }
 

@@ -124,7 +124,12 @@ std::optional<gkt::PhysicalReference> physical_reference(const TableRun& run, co
   if (!dimension)
     throw std::invalid_argument("--units physical: dimension must be one value (the units depend on it), not a sweep");
   const gkt::PhysicalReference reference{*run.mass, *run.diameter, *run.number_density, *run.temperature};
-  gkt::physical_scale(gkt::Reduction::mobility, *dimension, reference);  // over- or underflow: refused before any work
+  for (const auto reduction :  // a scale that over- or underflows a double is refused before any work
+       {gkt::Reduction::viscosity, gkt::Reduction::conductivity, gkt::Reduction::self_diffusion,
+        gkt::Reduction::density_heat, gkt::Reduction::collision_frequency, gkt::Reduction::pressure,
+        gkt::Reduction::wavenumber, gkt::Reduction::length, gkt::Reduction::mutual_diffusion, gkt::Reduction::dufour,
+        gkt::Reduction::mobility})
+    gkt::physical_scale(reduction, *dimension, reference);
   return reference;
 }
 
