@@ -154,31 +154,46 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
 /// The rows of a sweep shared between the workers and the thread that collects them in order.
 /// Held by shared pointer: after an interrupt, detached workers may still finish their row.
 struct Sweep {
-  Sweep(const Scene& s, const TableOptions& o) : scene(s), options(o), total(sweep_size(s)) {}
+  Sweep(const Scene& s, const TableOptions& o)
+      : scene(s), options(o), total(sweep_size(s)), window(4 * static_cast<std::size_t>(std::max(o.jobs, 1))) {}
   const Scene scene;
   const TableOptions options;
   const std::size_t total;
+  /// A worker starts row r only when r < collected + window: at most `window` finished rows wait
+  /// for a slow earlier one (memory bounded whatever the sweep's length).
+  const std::size_t window;
   std::mutex mutex;
   std::condition_variable finished;
+  std::condition_variable room;              ///< collected moved on (or the sweep stopped)
   std::map<std::size_t, RowResult> results;  ///< finished, not yet collected rows by index; guarded by mutex
+  std::size_t collected = 0;                 ///< rows handed to the writer; guarded by mutex
   std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
+  std::atomic<bool> stop{false};    ///< the collector is done (interrupted, failed or finished): workers leave
+  std::atomic<bool> failed{false};  ///< a row failed: workers claim no new row
 };
 
 /// Takes the next unclaimed row until none is left or the sweep stops; its own model instance
 /// (models cache state, and so never share one between threads).
 void work_rows(const std::shared_ptr<Sweep>& sweep) {
   std::unique_ptr<TransportModel> model;
-  while (!sweep->stop) {
+  while (!sweep->stop && !sweep->failed) {
     const std::size_t r = sweep->next.fetch_add(1);
     if (r >= sweep->total) return;
+    {
+      // A claimed row is computed unless the collector is done (stop): the rows before a failure
+      // must all arrive for the collector to reach it.
+      std::unique_lock lock(sweep->mutex);
+      while (r >= sweep->collected + sweep->window && !sweep->stop)
+        sweep->room.wait_for(lock, std::chrono::milliseconds(100));  // timed: stop is not set under the lock
+    }
+    if (sweep->stop) return;
     RowResult result;
     try {
       if (!model) model = make_transport_model(sweep->scene.model);
       result = compute_row(*model, sweep->scene, sweep->options, r);
     } catch (...) {
       result.failure = std::current_exception();
-      sweep->stop = true;  // rows after a failure are not needed
+      sweep->failed = true;  // rows after a failure are not needed: claim no more
     }
     {
       const std::lock_guard lock(sweep->mutex);
@@ -281,8 +296,12 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
           lock.lock();
         }
       }
-      if (auto node = sweep->results.extract(r)) finished = std::move(node.mapped());
+      if (auto node = sweep->results.extract(r)) {
+        finished = std::move(node.mapped());
+        sweep->collected = r + 1;
+      }
     }
+    sweep->room.notify_all();
     if (!finished) {  // interrupted: the rows finished in order are kept
       table.interrupted = true;
       workers.detach();
