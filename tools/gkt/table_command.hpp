@@ -19,7 +19,7 @@ struct TableOptions {
   int jobs = 1;        ///< rows evaluated in parallel, each worker with its own model instance
   /// --units physical: coefficient columns (and their errors) times physical_scale of their
   /// reduction (column_catalogue.hpp) for this reference gas; not with `exact`.
-  std::optional<PhysicalReference> physical;
+  std::optional<PhysicalReference> physical = std::nullopt;
 };
 
 /// What a streamed table computation reports, every call on the calling thread, rows in sweep order.
