@@ -231,3 +231,34 @@ TEST(CliStreaming, ProgressLineOnATerminalUnlessQuiet) {
   EXPECT_EQ(typescript(" --quiet").find("gkt: row "), std::string::npos);
   fs::remove_all(dir);
 }
+
+// With --jobs N, a worker starts row r only when r < (rows written) + 4N, so finished rows waiting
+// for a slow earlier one stay bounded. A long sweep (60 rows, window 8 at --jobs 2) still gives
+// the bytes of --jobs 1, and a row that fails after some others (3D packing fraction 0.6 at the
+// tenth row) still ends the output after the nine rows before it, whatever the number of jobs
+// (workers never abandon a row the writer still needs: no hang).
+TEST(CliStreaming, BoundedWindowKeepsOrderAndErrors) {
+  const std::string sweep =
+      "table " + scene_path("hcs_cumulants.toml") + " --set 'alpha={from = 0.5, to = 1, points = 60}' --set order=3";
+  const CliRun one = run_gkt(sweep + " --jobs 1");
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_EQ(count_lines(one.out), 61U);
+  const CliRun two = run_gkt(sweep + " --jobs 2");
+  EXPECT_EQ(two.status, 0) << two.err;
+  EXPECT_EQ(two.out, one.out);
+
+  const std::string failing = "table " + scene_path("hcs_cumulants.toml") +
+                              " --set 'dimension=[2, 2, 2, 2, 2, 2, 2, 2, 2, 3, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2]'"
+                              " --set packing_fraction=0.6 --set alpha=0.9 --set order=1"
+                              " --set 'coefficients=[\"a2\"]'";
+  const CliRun serial = run_gkt(failing + " --jobs 1");
+  EXPECT_EQ(serial.status, 2) << serial.err;
+  EXPECT_NE(serial.out.find("# stopped by an error after 9 of 20 rows"), std::string::npos) << serial.out;
+  EXPECT_NE(serial.err.find("packing_fraction: must be a number in [0, 0.5], got 0.6"), std::string::npos);
+  for (const char* jobs : {" --jobs 2", " --jobs 4"}) {
+    const CliRun parallel = run_gkt(failing + jobs);
+    EXPECT_EQ(parallel.status, 2) << jobs << parallel.err;
+    EXPECT_EQ(parallel.out, serial.out) << jobs;
+    EXPECT_EQ(parallel.err, serial.err) << jobs;
+  }
+}

@@ -13,6 +13,7 @@ packages=(
   python3-dev python3-pybind11 python3-numpy python3-pytest   # the Python module (GKT_BUILD_PYTHON) and its tests
   jupyter-nbconvert python3-nbclient python3-ipykernel python3-matplotlib   # executed notebooks (tools/run_notebooks.sh)
   clang-14 libclang-rt-14-dev           # libFuzzer targets of tests/fuzz (tools/fuzz.sh)
+  doxygen                               # API reference from the headers, checked without warnings (tools/run_doxygen.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

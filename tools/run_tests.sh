@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Every test: install dependencies, check formatting, build warning-free (Release) and run the
+# Every test: install dependencies, check formatting, the include graph and the API reference
+# (Doxygen, no warnings), build warning-free (Release) and run the
 # whole suite (with the Python module's pytest suite), install into a temporary prefix and build
 # examples/consumer/ against it (tools/check_install.sh), check the shipped tables against their
 # scenes (tools/check_tables.sh), then rebuild with AddressSanitizer + UndefinedBehaviorSanitizer
@@ -15,6 +16,7 @@ if command -v clang-format >/dev/null; then
   echo "run_tests: formatting ok"
 fi
 python3 tools/check_layers.py  # include graph: no arrow up the floors (docs/architecture.md)
+bash tools/run_doxygen.sh build/doxygen  # API reference from the headers: any Doxygen warning fails (~1 s)
 
 # GKT_BUILD_TESTS=ON is forced: build/ may come from tools/run_main.sh, which turns the tests off,
 # and --no-tests=error makes an empty suite fail instead of passing silently (issue 17).

@@ -1,4 +1,5 @@
-/* The C API of gkt (C99): per-cell transport coefficients of granular gases for hydrodynamic
+/** \file
+ * The C API of gkt (C99): per-cell transport coefficients of granular gases for hydrodynamic
  * solvers written in C or Fortran (fortran/gkt.f90 binds this header with iso_c_binding).
  *
  * Rules every function follows:

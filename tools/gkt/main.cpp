@@ -2,6 +2,7 @@
 // 128 + signal for a table interrupted by SIGINT (130), SIGTERM (143) or SIGHUP (129).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -9,11 +10,13 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include "describe.hpp"
 #include "dsmc_command.hpp"
 #include "evolve_command.hpp"
 #include "formula_command.hpp"
@@ -94,7 +97,44 @@ struct TableRun {
   std::string format = "csv", output;
   bool exact = false, stability = false, quiet = false;
   int jobs = 1;
+  std::string units = "reduced";  ///< or "physical": with the reference gas below (SI)
+  std::optional<double> mass, diameter, number_density, temperature;
 };
+
+/// Returns the reference gas of --units physical (nullopt for reduced units); throws naming the
+/// option if one is missing, not a number > 0, or given without --units physical.
+std::optional<gkt::PhysicalReference> physical_reference(const TableRun& run, const gkt::cli::Scene& scene) {
+  const std::pair<const char*, const std::optional<double>*> options[] = {{"--mass", &run.mass},
+                                                                          {"--diameter", &run.diameter},
+                                                                          {"--number-density", &run.number_density},
+                                                                          {"--temperature", &run.temperature}};
+  if (run.units != "physical") {
+    for (const auto& [name, value] : options)
+      if (value->has_value()) throw std::invalid_argument(std::string(name) + ": only with --units physical");
+    return std::nullopt;
+  }
+  for (const auto& [name, value] : options) {
+    if (!value->has_value())
+      throw std::invalid_argument(std::string(name) +
+                                  ": required with --units physical (the reference gas in SI: --mass kg, --diameter m, "
+                                  "--number-density m^-d, --temperature K)");
+    if (!std::isfinite(**value) || **value <= 0)
+      throw std::invalid_argument(std::string(name) + ": must be a finite number > 0, got " +
+                                  gkt::cli::format_number(**value));
+  }
+  if (run.exact) throw std::invalid_argument("--units physical: not with --exact (physical values are not rational)");
+  const auto dimension = gkt::cli::scene_dimension(scene);
+  if (!dimension)
+    throw std::invalid_argument("--units physical: dimension must be one value (the units depend on it), not a sweep");
+  const gkt::PhysicalReference reference{*run.mass, *run.diameter, *run.number_density, *run.temperature};
+  for (const auto reduction :  // a scale that over- or underflows a double is refused before any work
+       {gkt::Reduction::viscosity, gkt::Reduction::conductivity, gkt::Reduction::self_diffusion,
+        gkt::Reduction::density_heat, gkt::Reduction::collision_frequency, gkt::Reduction::pressure,
+        gkt::Reduction::wavenumber, gkt::Reduction::length, gkt::Reduction::mutual_diffusion, gkt::Reduction::dufour,
+        gkt::Reduction::mobility})
+    gkt::physical_scale(reduction, *dimension, reference);
+  return reference;
+}
 
 int run_table(const std::string& scene_path, const std::vector<std::string>& overrides, const TableRun& run) {
   if (run.jobs < 1 || run.jobs > kMaxJobs)
@@ -109,9 +149,10 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
                                   "\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\"");
     scene.coefficients = gkt::stability_coefficient_names();
   }
+  const gkt::cli::TableOptions options{run.exact, run.jobs, physical_reference(run, scene)};
   const bool csv = run.format != "json";
   Progress progress(!run.quiet && ::isatty(STDERR_FILENO) == 1);
-  const std::string header = gkt::cli::csv_line(gkt::cli::table_header(scene, {run.exact, run.jobs}).columns);
+  const std::string header = gkt::cli::csv_line(gkt::cli::table_header(scene, options).columns);
   gkt::cli::RowObserver observer;
   observer.stop = [] { return stop_signal != 0; };
   observer.on_wait = [&progress](std::size_t done, std::size_t total) { progress.show(done, total); };
@@ -133,7 +174,7 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
   };
   gkt::cli::Table table;
   try {
-    table = gkt::cli::compute_table(scene, {run.exact, run.jobs}, warnings, observer);
+    table = gkt::cli::compute_table(scene, options, warnings, observer);
   } catch (const std::invalid_argument&) {
     // The rows already on standard output (or a FIFO) are not mistaken for the whole table.
     if (csv && rows_written > 0) try {
@@ -149,6 +190,7 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
       if (table.rows.empty()) target.append(header);  // no row yet, or none in the sweep
       if (table.interrupted) target.append(gkt::cli::csv_interrupted_line(table));
     } else {
+      table.description_json = gkt::cli::describe_table(scene, options.physical);
       target.append(gkt::cli::to_json(table));
     }
     target.commit();
@@ -193,7 +235,11 @@ int run_dsmc(const std::string& scene_path, const std::vector<std::string>& over
   return 128 + stop_signal;
 }
 
-int run_models() {
+int run_models(const CLI::Option* describe, const std::string& describe_name, bool json) {
+  if (describe->count() > 0 || json) {
+    gkt::cli::OutputTarget("").write(gkt::cli::describe_models(describe_name, json));
+    return 0;
+  }
   std::ostringstream out;
   for (const auto& name : gkt::transport_model_names()) {
     const auto model = gkt::make_transport_model(name);
@@ -276,6 +322,12 @@ int run(int argc, char** argv) {
   const auto add_long_run_options = [](CLI::App* command, TableRun& run) {
     command->add_option("--jobs", run.jobs, "Rows evaluated in parallel, 1 to 64 (default 1); output unchanged");
     command->add_flag("--quiet", run.quiet, "No progress line on standard error (warnings stay)");
+    command->add_option("--units", run.units, "reduced (default) or physical: SI values for the reference gas below")
+        ->check(CLI::IsMember({"reduced", "physical"}));
+    command->add_option("--mass", run.mass, "Reference particle mass m in kg (--units physical)");
+    command->add_option("--diameter", run.diameter, "Reference particle diameter sigma in m (--units physical)");
+    command->add_option("--number-density", run.number_density, "Number density n in m^-d (--units physical)");
+    command->add_option("--temperature", run.temperature, "Temperature T in K (--units physical; k_B T is the energy)");
   };
   add_long_run_options(table, table_run);
 
@@ -326,7 +378,15 @@ int run(int argc, char** argv) {
   dsmc->add_option("--jobs", dsmc_run.jobs, "Runs simulated in parallel, 1 to 64 (default 1); output unchanged");
   dsmc->add_flag("--quiet", dsmc_run.quiet, "No progress line on standard error");
 
-  app.add_subcommand("models", "List the models with their coefficients and parameters");
+  auto* models = app.add_subcommand("models", "List the models with their coefficients and parameters");
+  std::string describe_name;
+  bool models_json = false;
+  auto* describe = models
+                       ->add_option("--describe", describe_name,
+                                    "Describe every model, or the one named: keys (ranges, defaults), commands, "
+                                    "columns (meaning, reduction, SI unit)")
+                       ->expected(0, 1);
+  models->add_flag("--json", models_json, "Machine-readable description (JSON; implies --describe)");
 
   try {
     check_subcommand(argc, argv, app);
@@ -362,7 +422,7 @@ int run(int argc, char** argv) {
       target.write(gkt::cli::formula(formula_scene, formula_overrides, coefficient, formula_order, formula_format));
       return 0;
     }
-    return run_models();
+    return run_models(describe, describe_name, models_json);
   } catch (const std::invalid_argument& e) {
     std::cerr << "gkt: error: " << one_line(e.what()) << "\n";
     return kBadInput;

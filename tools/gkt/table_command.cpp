@@ -106,7 +106,23 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
                                  format_error(worst_error) + " (" + worst + ")";
     }
   }
-  for (const auto& v : values) {
+  // --units physical: each coefficient (and its error) times the SI value of its reduction at
+  // this row's dimension (docs/conventions.md "Physical units").
+  std::vector<double> scale(values.size(), 1.0);
+  if (options.physical) {
+    const auto given = parameters.numbers.find("dimension");
+    int dimension = 3;  // a model without the key is three-dimensional (viscoelastic spheres)
+    if (given != parameters.numbers.end())
+      dimension = static_cast<int>(given->second.to_double());
+    else
+      for (const auto& spec : model.parameters())
+        if (spec.name == "dimension") dimension = static_cast<int>(spec.default_value.to_double());
+    for (std::size_t k = 0; k < values.size(); ++k)
+      scale[k] =
+          physical_scale(describe_column(scene.model, scene.coefficients[k]).reduction, dimension, *options.physical);
+  }
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const auto& v = values[k];
     if (options.exact && !v.exact)
       throw std::invalid_argument("--exact: a requested coefficient is not a rational number here (model " +
                                   scene.model + "); drop --exact");
@@ -115,10 +131,12 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
     else if (v.infinite)
       row.emplace_back("inf");  // e.g. critical_length of the elastic gas (JSON: null)
     else
-      row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double()));
+      row.push_back(options.exact ? v.value.to_string() : format_number(v.value.to_double() * scale[k]));
   }
-  for (const auto& v : values)
-    row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double()) : "nan");
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const auto& v = values[k];
+    row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double() * scale[k]) : "nan");
+  }
   result.order = values.empty() ? request.order : values.front().order;
   row.push_back(std::to_string(result.order));
   for (const auto& v : values) {
@@ -136,31 +154,46 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
 /// The rows of a sweep shared between the workers and the thread that collects them in order.
 /// Held by shared pointer: after an interrupt, detached workers may still finish their row.
 struct Sweep {
-  Sweep(const Scene& s, const TableOptions& o) : scene(s), options(o), total(sweep_size(s)) {}
+  Sweep(const Scene& s, const TableOptions& o)
+      : scene(s), options(o), total(sweep_size(s)), window(4 * static_cast<std::size_t>(std::max(o.jobs, 1))) {}
   const Scene scene;
   const TableOptions options;
   const std::size_t total;
+  /// A worker starts row r only when r < collected + window: at most `window` finished rows wait
+  /// for a slow earlier one (memory bounded whatever the sweep's length).
+  const std::size_t window;
   std::mutex mutex;
   std::condition_variable finished;
+  std::condition_variable room;              ///< collected moved on (or the sweep stopped)
   std::map<std::size_t, RowResult> results;  ///< finished, not yet collected rows by index; guarded by mutex
+  std::size_t collected = 0;                 ///< rows handed to the writer; guarded by mutex
   std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
+  std::atomic<bool> stop{false};    ///< the collector is done (interrupted, failed or finished): workers leave
+  std::atomic<bool> failed{false};  ///< a row failed: workers claim no new row
 };
 
 /// Takes the next unclaimed row until none is left or the sweep stops; its own model instance
 /// (models cache state, and so never share one between threads).
 void work_rows(const std::shared_ptr<Sweep>& sweep) {
   std::unique_ptr<TransportModel> model;
-  while (!sweep->stop) {
+  while (!sweep->stop && !sweep->failed) {
     const std::size_t r = sweep->next.fetch_add(1);
     if (r >= sweep->total) return;
+    {
+      // A claimed row is computed unless the collector is done (stop): the rows before a failure
+      // must all arrive for the collector to reach it.
+      std::unique_lock lock(sweep->mutex);
+      while (r >= sweep->collected + sweep->window && !sweep->stop)
+        sweep->room.wait_for(lock, std::chrono::milliseconds(100));  // timed: stop is not set under the lock
+    }
+    if (sweep->stop) return;
     RowResult result;
     try {
       if (!model) model = make_transport_model(sweep->scene.model);
       result = compute_row(*model, sweep->scene, sweep->options, r);
     } catch (...) {
       result.failure = std::current_exception();
-      sweep->stop = true;  // rows after a failure are not needed
+      sweep->failed = true;  // rows after a failure are not needed: claim no more
     }
     {
       const std::lock_guard lock(sweep->mutex);
@@ -263,8 +296,12 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
           lock.lock();
         }
       }
-      if (auto node = sweep->results.extract(r)) finished = std::move(node.mapped());
+      if (auto node = sweep->results.extract(r)) {
+        finished = std::move(node.mapped());
+        sweep->collected = r + 1;
+      }
     }
+    sweep->room.notify_all();
     if (!finished) {  // interrupted: the rows finished in order are kept
       table.interrupted = true;
       workers.detach();

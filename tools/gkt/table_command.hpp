@@ -3,9 +3,11 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "gkt/models/column_catalogue.hpp"
 #include "scene.hpp"
 #include "table_writer.hpp"
 
@@ -15,6 +17,9 @@ namespace gkt::cli {
 struct TableOptions {
   bool exact = false;  ///< cells as exact rationals (refused where a value is not rational)
   int jobs = 1;        ///< rows evaluated in parallel, each worker with its own model instance
+  /// --units physical: coefficient columns (and their errors) times physical_scale of their
+  /// reduction (column_catalogue.hpp) for this reference gas; not with `exact`.
+  std::optional<PhysicalReference> physical = std::nullopt;
 };
 
 /// What a streamed table computation reports, every call on the calling thread, rows in sweep order.

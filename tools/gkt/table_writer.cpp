@@ -66,7 +66,13 @@ std::string to_csv(const Table& t) {
 std::string to_json(const Table& t) {
   nlohmann::ordered_json doc;
   doc["model"] = t.model;
+  doc["gkt_version"] = GKT_VERSION;  // every JSON output says which gkt wrote it (issue 19)
+  const auto description =
+      t.description_json.empty() ? nlohmann::ordered_json::object() : nlohmann::ordered_json::parse(t.description_json);
+  for (const auto& [key, value] : description.items())
+    if (key != "column_descriptions") doc[key] = value;
   doc["columns"] = t.columns;
+  if (description.contains("column_descriptions")) doc["column_descriptions"] = description["column_descriptions"];
   auto rows = nlohmann::ordered_json::array();
   for (const auto& row : t.rows) {
     nlohmann::ordered_json r;

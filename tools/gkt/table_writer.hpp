@@ -16,6 +16,9 @@ struct Table {
   std::vector<bool> numeric;     ///< per column: emit as a JSON number (else a string)
   std::size_t planned_rows = 0;  ///< rows of the whole sweep (more than rows.size() if interrupted)
   bool interrupted = false;      ///< the sweep was ended by a signal: rows holds the finished ones
+  /// A JSON object whose members to_json writes after "model" (version, scene, units) and, for
+  /// "column_descriptions", after "columns" (describe.hpp); empty: none (CSV never uses it).
+  std::string description_json;
 };
 
 /// Returns x in the shortest decimal that reads back as the same double (std::to_chars).
@@ -34,8 +37,10 @@ std::string to_csv(const Table& t);
 std::string csv_line(const std::vector<std::string>& cells);
 /// Returns the last line of an interrupted CSV table: "# interrupted after N of M rows".
 std::string csv_interrupted_line(const Table& t);
-/// Returns the table as JSON: {"model": …, "columns": […], "rows": [{column: value, …}, …]},
-/// for an interrupted table followed by "interrupted": true and "planned_rows": M.
+/// Returns the table as JSON: {"model": …, "gkt_version": …, "columns": […], "rows": [{column:
+/// value, …}, …]}, with the members of description_json (if any) after "gkt_version" and
+/// "columns", and for an
+/// interrupted table followed by "interrupted": true and "planned_rows": M.
 std::string to_json(const Table& t);
 
 /// Where a command's output goes: standard output (empty path) or the file `path`. Built before
