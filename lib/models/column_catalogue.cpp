@@ -27,6 +27,10 @@ std::vector<ColumnDescription> make_catalogue() {
   return {
       // Rough spheres and disks (theory.md §19): reduced at the translational temperature T_t.
       {"rotational_temperature_ratio", {}, "rough HCS: θ = T_r/T_t (theory.md §19.4)", "—", R::none},
+      {"translational_temperature", kRough, "gkt evolve: T_t(τ)/T_ref, T_t = m⟨v²⟩/d (theory.md §19.13)", "T_ref",
+       R::other_reference},
+      {"rotational_temperature", kRough, "gkt evolve: T_r(τ)/T_ref, T_r = I⟨ω²⟩/d_r (theory.md §19.13)", "T_ref",
+       R::other_reference},
       {"a20", {"rough"}, "rough HCS cumulant ⟨c⁴⟩/⟨c⁴⟩_M − 1 (theory.md §19.4)", "—", R::none},
       {"a02", {"rough"}, "rough HCS cumulant ⟨ŵ⁴⟩/⟨ŵ⁴⟩_M − 1 (theory.md §19.4)", "—", R::none},
       {"a11", {"rough"}, "rough HCS cumulant ⟨c²ŵ²⟩/(⟨c²⟩⟨ŵ²⟩) − 1 (theory.md §19.4)", "—", R::none},
