@@ -7,9 +7,11 @@
 #include <cstdint>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
+#include "gkt/models/transport_model.hpp"
 #include "gkt/simulation/random_stream.hpp"
 #include "gkt/simulation/uniform_shear_dsmc.hpp"
 #include "gkt/transport/closed_forms/uniform_shear_flow.hpp"
@@ -196,6 +198,30 @@ TEST(UniformShearDsmc, RejectsBadInput) {
   EXPECT_THROW(gkt::run_uniform_shear_dsmc(4, {0.9, 0.3}, s), std::invalid_argument);
   s.particles = 1;
   EXPECT_THROW(gkt::run_uniform_shear_dsmc(2, {0.9, 0.3}, s), std::invalid_argument);
+}
+
+// `gkt table` with model = "uniform-shear" answers Grad's solution; stress_zz only in 3D.
+TEST(UniformShearModel, TableValuesAreGradsSolution) {
+  auto model = gkt::make_transport_model("uniform-shear");
+  for (int d : {2, 3}) {
+    gkt::ParameterPoint p;
+    p.numbers["dimension"] = gkt::Rational(d);
+    p.numbers["alpha"] = gkt::Rational(7, 10);
+    std::vector<std::string> names{"reduced_shear_rate", "stress_xx", "stress_yy", "stress_xy"};
+    if (d == 3) names.emplace_back("stress_zz");
+    EXPECT_EQ(model->scene_coefficient_names(p).size(), d == 3 ? 5U : 4U);
+    const auto values = model->evaluate(p, names, {1, {}});
+    const auto grad = uniform_shear_flow_grad(d, 0.7);
+    const std::vector<double> expected{grad.reduced_shear_rate, grad.stress_xx, grad.stress_yy, grad.stress_xy,
+                                       grad.stress_zz};
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      EXPECT_EQ(values[k].value.to_double(), expected[k]) << d << " " << names[k];
+      EXPECT_FALSE(values[k].error_estimated);
+    }
+    if (d == 2) {
+      EXPECT_THROW((void)model->evaluate(p, {"stress_zz"}, {1, {}}), std::invalid_argument);
+    }
+  }
 }
 
 }  // namespace

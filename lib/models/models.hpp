@@ -33,6 +33,7 @@ std::vector<ParameterSpec> aggregation_evolution_parameters();
 /// its times from t_end and points): the moments, or with distribution = true the long format.
 Trajectory aggregation_trajectory(const TrajectoryRequest& request);
 std::unique_ptr<TransportModel> make_rough_walton_model();
+std::unique_ptr<TransportModel> make_uniform_shear_model();
 
 /// Returns `model` behind a guard that validates every call against the model's schema first
 /// (validated_model.cpp): the registry hands out only guarded models.
