@@ -144,18 +144,18 @@ struct ShearSample {
   gkt::DsmcEstimate gamma, xx, yy, zz, xy;
 };
 
-ShearSample shear_dsmc(int d, double alpha, int runs) {
+ShearSample shear_dsmc(int d, double alpha, int runs, double start = 1, double relaxation = 20) {
   const auto grad = uniform_shear_flow_grad(d, alpha);
   std::vector<double> g, xx, yy, zz, xy;
   auto mean = [](const std::vector<double>& x) { return gkt::mean_and_error(x).mean; };
   for (int r = 0; r < runs; ++r) {
     gkt::DsmcSchedule s;
     s.particles = 2000;
-    s.relaxation = 20;
+    s.relaxation = relaxation;
     s.batches = 20;
     s.per_batch = 2;
     s.seed = gkt::dsmc_run_seed(23, static_cast<std::uint64_t>(r));
-    const auto run = gkt::run_uniform_shear_dsmc(d, {alpha, grad.shear_rate}, s);
+    const auto run = gkt::run_uniform_shear_dsmc(d, {alpha, start * grad.shear_rate}, s);
     g.push_back(mean(run.reduced_shear_rate));
     xx.push_back(mean(run.stress_xx));
     yy.push_back(mean(run.stress_yy));
@@ -185,6 +185,15 @@ TEST(UniformShearDsmc, AgreesWithGradWithinItsDocumentedAccuracy) {
       EXPECT_EQ(dsmc.zz.mean, 0.0);
     }
   }
+}
+
+// The shear rate a is fixed in a run and T relaxes to the steady state: starting 1.5 times above
+// Grad's a* (T/T_initial → 2.1 instead of 0.9) gives the same γ and stresses.
+TEST(UniformShearDsmc, SteadyStateDoesNotDependOnTheInitialShearRate) {
+  const auto near = shear_dsmc(2, 0.7, 6, 1.0, 60), far = shear_dsmc(2, 0.7, 6, 1.5, 60);
+  EXPECT_NEAR(far.gamma.mean, near.gamma.mean, 4 * std::hypot(far.gamma.error, near.gamma.error));
+  EXPECT_NEAR(far.xy.mean, near.xy.mean, 4 * std::hypot(far.xy.error, near.xy.error));
+  EXPECT_NEAR(far.xx.mean, near.xx.mean, 4 * std::hypot(far.xx.error, near.xx.error));
 }
 
 TEST(UniformShearDsmc, RejectsBadInput) {
