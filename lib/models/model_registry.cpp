@@ -15,9 +15,13 @@ using Factory = std::function<std::unique_ptr<TransportModel>()>;
 
 const std::map<std::string, Factory>& registry() {
   static const std::map<std::string, Factory> models{
-      {"aggregation", detail::make_aggregation_model},   {"hard-spheres", detail::make_hard_sphere_model},
-      {"mixture", detail::make_mixture_model},           {"rough", detail::make_rough_model},
-      {"rough-walton", detail::make_rough_walton_model}, {"smooth-inelastic", detail::make_smooth_inelastic_model},
+      {"aggregation", detail::make_aggregation_model},
+      {"hard-spheres", detail::make_hard_sphere_model},
+      {"mixture", detail::make_mixture_model},
+      {"rough", detail::make_rough_model},
+      {"rough-walton", detail::make_rough_walton_model},
+      {"smooth-inelastic", detail::make_smooth_inelastic_model},
+      {"uniform-shear", detail::make_uniform_shear_model},
       {"viscoelastic", detail::make_viscoelastic_model},
   };
   return models;

@@ -47,6 +47,7 @@ Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, con
 /// Returns the linear-scheme HCS; throws std::invalid_argument "hcs: …" naming the region where the
 /// linear scheme has no root (theory.md §19.6) instead of returning a state without one.
 RoughCoolingState linear_rough_state(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa);
+std::unique_ptr<TransportModel> make_uniform_shear_model();
 
 /// Returns `model` behind a guard that validates every call against the model's schema first
 /// (validated_model.cpp): the registry hands out only guarded models.
