@@ -24,6 +24,16 @@ inline void scale(RationalPolynomial& x, const Rational& c) { x *= c; }
 inline void divide(Rational& x, const Rational& c) { x /= c; }
 inline void divide(RationalPolynomial& x, const Rational& c) { x /= c; }
 
+/// acc += y·s for a rational scalar s (`scratch`: reusable storage of the product).
+inline void add_scaled(Rational& acc, const Rational& y, const Rational& s, Rational& /*scratch*/) {
+  acc.add_product(y, s);
+}
+inline void add_scaled(RationalPolynomial& acc, const RationalPolynomial& y, const Rational& s,
+                       RationalPolynomial& scratch) {
+  fmpq_poly_scalar_mul_fmpq(scratch.raw(), y.raw(), s.raw());
+  fmpq_poly_add(acc.raw(), acc.raw(), scratch.raw());
+}
+
 /// c ← lcm(c, denominator of x).
 inline void accumulate_denominator(fmpz* c, const Rational& x) { fmpz_lcm(c, c, fmpq_denref(x.raw())); }
 inline void accumulate_denominator(fmpz* c, const RationalPolynomial& x) { fmpz_lcm(c, c, fmpq_poly_denref(x.raw())); }
