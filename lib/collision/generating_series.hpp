@@ -6,12 +6,14 @@
 //   Π · E f = f · Qc,   Π = a n1 n2,   Qc = ½(Ea) n1 n2 − ((d−1)/2) a (En1) n2 − a n1 (En2),
 // (E = Σ x_v ∂_v), i.e. |m| f_m = Σ_{e≠0} (Qc_e − |m−e| Π_e) f_{m−e}: each coefficient costs
 // one pass over the ≤ 56 monomials of Π — no symbolic differentiation, no power series
-// division, exact in the ring (Q or Q[α]).
+// division, exact in the ring (Q or Q[α]), run on integers under a common denominator
+// (euler_recurrence.hpp).
 #pragma once
 
 #include <array>
 #include <vector>
 
+#include "collision/euler_recurrence.hpp"
 #include "collision/ring.hpp"
 #include "gkt/collision/collision_rule.hpp"
 
@@ -188,31 +190,7 @@ GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& p
     if (!merged) rec.push_back({term.e, term.c, Ring(0L)});
   }
 
-  std::size_t size = 1;
-  for (int v = 0; v < kVariables; ++v) size *= static_cast<std::size_t>(box[v] + 1);
-  out.coefficients.assign(size, Ring(0L));
-  std::vector<Ring> weighted(size, Ring(0L));  // |m| f_m
-  out.coefficients[0] = Ring(1L);
-  // Lexicographic order: every m − e (e ≥ 0, e ≠ 0) comes before m.
-  for (int k0 = 0; k0 <= box[0]; ++k0)
-    for (int k1 = 0; k1 <= box[1]; ++k1)
-      for (int k2 = 0; k2 <= box[2]; ++k2)
-        for (int k3 = 0; k3 <= box[3]; ++k3) {
-          const int degree = k0 + k1 + k2 + k3;
-          if (degree == 0) continue;
-          Ring acc(0L);
-          for (const auto& r : rec) {
-            const int j0 = k0 - r.e[0], j1 = k1 - r.e[1], j2 = k2 - r.e[2], j3 = k3 - r.e[3];
-            if (j0 < 0 || j1 < 0 || j2 < 0 || j3 < 0) continue;
-            const std::size_t src = out.index(j0, j1, j2, j3);
-            if (!r.q.is_zero()) acc.add_product(r.q, out.coefficients[src]);
-            if (!r.p.is_zero()) acc.sub_product(r.p, weighted[src]);
-          }
-          const std::size_t dst = out.index(k0, k1, k2, k3);
-          weighted[dst] = acc;
-          divide(acc, Rational(degree));
-          out.coefficients[dst] = std::move(acc);
-        }
+  out.coefficients = solve_euler_recurrence<Ring>(rec, box);
   return out;
 }
 

@@ -76,33 +76,7 @@ std::vector<Ring> expand_power_product(std::vector<PowerFactor<Ring>> factors, c
       }
     if (!merged && t.e != Exponents{}) rec.push_back({t.e, t.c, Ring(0L)});
   }
-  auto index = [&](int k0, int k1, int k2, int k3) {
-    return ((static_cast<std::size_t>(k0) * (box[1] + 1) + k1) * (box[2] + 1) + k2) * (box[3] + 1) + k3;
-  };
-  std::size_t size = 1;
-  for (int v = 0; v < kVariables; ++v) size *= static_cast<std::size_t>(box[v] + 1);
-  std::vector<Ring> f(size, Ring(0L)), weighted(size, Ring(0L));  // f_m and |m| f_m
-  f[0] = Ring(1L);
-  for (int k0 = 0; k0 <= box[0]; ++k0)
-    for (int k1 = 0; k1 <= box[1]; ++k1)
-      for (int k2 = 0; k2 <= box[2]; ++k2)
-        for (int k3 = 0; k3 <= box[3]; ++k3) {
-          const int degree = k0 + k1 + k2 + k3;
-          if (degree == 0) continue;
-          Ring acc(0L);
-          for (const auto& r : rec) {
-            const int j0 = k0 - r.e[0], j1 = k1 - r.e[1], j2 = k2 - r.e[2], j3 = k3 - r.e[3];
-            if (j0 < 0 || j1 < 0 || j2 < 0 || j3 < 0) continue;
-            const std::size_t src = index(j0, j1, j2, j3);
-            if (!r.q.is_zero()) acc.add_product(r.q, f[src]);
-            if (!r.p.is_zero()) acc.sub_product(r.p, weighted[src]);
-          }
-          const std::size_t dst = index(k0, k1, k2, k3);
-          weighted[dst] = acc;
-          divide(acc, Rational(degree));
-          f[dst] = std::move(acc);
-        }
-  return f;
+  return solve_euler_recurrence<Ring>(rec, box);
 }
 
 }  // namespace gkt::detail

@@ -48,19 +48,25 @@ std::vector<DenseMatrix<Ring>> contract_weighted(const std::vector<std::vector<R
                                                  Integrand&& y) {
   const int ni = k_max + 1, nn = n_max + 1;
   auto at = [nn](int i, int j, int p) { return (static_cast<std::size_t>(i) * nn + j) * nn + p; };
-  std::vector<Ring> g(static_cast<std::size_t>(ni) * nn * nn, Ring(0L)), h(g.size(), Ring(0L));
+  // The integrand once per (i, j, l) (it is a table lookup plus, for rank 2, a trace term).
+  std::vector<Ring> yt(static_cast<std::size_t>(ni) * nn * nn, Ring(0L));
+  for (int i = 0; i < ni; ++i)
+    for (int j = 0; j < nn; ++j)
+      for (int l = 0; l < nn; ++l) yt[at(i, j, l)] = y(i, j, l);
+  std::vector<Ring> g(yt.size(), Ring(0L)), h(g.size(), Ring(0L));
+  Ring scratch(0L);
   for (int i = 0; i < ni; ++i)
     for (int j = 0; j < nn; ++j)
       for (int p = 0; p < nn; ++p) {
         Ring acc(0L);
-        for (int l = 0; l <= p; ++l) acc.add_product(y(i, j, l), Ring(s[p][l]));
+        for (int l = 0; l <= p; ++l) detail::add_scaled(acc, yt[at(i, j, l)], s[p][l], scratch);
         g[at(i, j, p)] = std::move(acc);
       }
   for (int i = 0; i < ni; ++i)
     for (int q = 0; q < nn; ++q)
       for (int p = 0; p < nn; ++p) {
         Ring acc(0L);
-        for (int j = 0; j <= q; ++j) acc.add_product(g[at(i, j, p)], Ring(s[q][j]));
+        for (int j = 0; j <= q; ++j) detail::add_scaled(acc, g[at(i, j, p)], s[q][j], scratch);
         h[at(i, q, p)] = std::move(acc);
       }
   std::vector<DenseMatrix<Ring>> out;
@@ -69,7 +75,7 @@ std::vector<DenseMatrix<Ring>> contract_weighted(const std::vector<std::vector<R
     for (int p = 0; p < nn; ++p)
       for (int q = 0; q < nn; ++q) {
         Ring acc(0L);
-        for (int i = 0; i <= k; ++i) acc.add_product(h[at(i, q, p)], Ring(w[k][i]));
+        for (int i = 0; i <= k; ++i) detail::add_scaled(acc, h[at(i, q, p)], w[k][i], scratch);
         m(p, q) = std::move(acc);
       }
     out.push_back(std::move(m));
