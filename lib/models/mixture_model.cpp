@@ -287,7 +287,8 @@ class MixtureModel final : public TransportModel {
       static const std::map<std::string, Vector> per_species{
           {"thermal_diffusion", &MixtureTransportValues::thermal_diffusion},
           {"pressure_diffusion", &MixtureTransportValues::pressure_diffusion},
-          {"dufour", &MixtureTransportValues::dufour}};
+          {"dufour", &MixtureTransportValues::dufour},
+          {"heat_mobility", &MixtureTransportValues::heat_mobility}};
       static const std::map<std::string, Vector> per_pair{
           {"mutual_diffusion", &MixtureTransportValues::mutual_diffusion},
           {"mobility", &MixtureTransportValues::mobility}};
@@ -335,10 +336,13 @@ class MixtureModel final : public TransportModel {
     for (const char* c : {"bulk_viscosity", "cooling_rate_first_order", "pressure"}) n.emplace_back(c);
     for (int i = 1; i <= s; ++i)
       for (int j = 1; j <= s; ++j) n.push_back(index_name("mobility", i, j));
+    for (int i = 1; i <= s; ++i) n.push_back(index_name("heat_mobility", i));
     return n;
   }
-  /// The external-force coefficients L_ij: listed only when the scene names them.
-  static bool on_request(const std::string& name) { return name.rfind("mobility_", 0) == 0; }
+  /// The external-force coefficients D^F_ij and L_j: listed only when the scene names them.
+  static bool on_request(const std::string& name) {
+    return name.rfind("mobility_", 0) == 0 || name.rfind("heat_mobility_", 0) == 0;
+  }
   /// Zero in the dilute gas (p* = 1): listed by default only for a dense scene.
   static bool dense_only(const std::string& name) {
     return name == "bulk_viscosity" || name == "cooling_rate_first_order" || name == "pressure";
