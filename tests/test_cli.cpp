@@ -389,6 +389,40 @@ TEST(CliEvolve, StatisticsAndBadInput) {
   fs::remove_all(dir);
 }
 
+// `packing_fraction` in gkt evolve (theory.md §12.4): once relaxed, the dense trajectory's ζ*, a2, η*,
+// κ*, μ* and critical sizes equal `gkt table` / `gkt stability` for the Enskog gas at the same order
+// (to the integration tolerance); a φ beyond the dimension's range is refused naming the key.
+TEST(CliEvolve, DenseGas) {
+  const std::string dense = " --set packing_fraction=0.25";
+  const std::string names =
+      " --set 'coefficients=[\"shear_viscosity\", \"thermal_conductivity\", "
+      "\"density_heat_coefficient\", \"critical_wavenumber_shear\"]'";
+  const CliRun r = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + dense + names);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = parse_csv(r.out);
+  ASSERT_EQ(rows[0].size(), 11U);
+  ASSERT_EQ(rows[0][6], "cooling_rate");
+  const CliRun t =
+      run_gkt("table " + scene_path("navier_stokes_converged.toml") + " --set alpha=0.8 --set order=3" + dense +
+              " --set 'coefficients=[\"cooling_rate\", \"a2\", \"shear_viscosity\", "
+              "\"thermal_conductivity\", \"density_heat_coefficient\", "
+              "\"critical_wavenumber_shear\"]'");
+  ASSERT_EQ(t.status, 0) << t.err;
+  const auto reference = parse_csv(t.out);
+  std::size_t first = 0;  // the reference's first coefficient column (after any swept keys)
+  while (reference[0][first] != "cooling_rate") ++first;
+  const auto& last = rows.back();
+  EXPECT_NEAR(std::stod(last[6]), std::stod(reference[1][first]), 1e-9);
+  EXPECT_NEAR(std::stod(last[3]), std::stod(reference[1][first + 1]), 1e-9);
+  for (std::size_t c = 0; c < 4; ++c)
+    EXPECT_NEAR(std::stod(last[7 + c]), std::stod(reference[1][first + 2 + c]), 1e-8) << rows[0][7 + c];
+  const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --set packing_fraction=0.6");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("packing_fraction: must be a number in [0, 0.5] for dimension = 3, got 0.6"),
+            std::string::npos)
+      << bad.err;
+}
+
 // Transport coefficients along a trajectory: once the cumulants have relaxed, η*, κ*, μ* about
 // the instantaneous a(τ) equal `gkt table` at the same order about the stationary HCS (to the
 // integration tolerance); along a viscoelastic trajectory η* − 1 and μ* are both ∝ δ'(τ), so
