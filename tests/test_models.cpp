@@ -140,7 +140,8 @@ TEST(ModelSchema, DeclaredCapabilities) {
     }
   }
   EXPECT_TRUE(gkt::make_transport_model("smooth-inelastic")->supports(Capability::formula));
-  EXPECT_FALSE(gkt::make_transport_model("mixture")->supports(Capability::evolve));
+  EXPECT_TRUE(gkt::make_transport_model("mixture")->supports(Capability::evolve));
+  EXPECT_FALSE(gkt::make_transport_model("hard-spheres")->supports(Capability::evolve));
 }
 
 // `gkt formula` asks the model: the first-Sonine closed form of the one-component gas, validated.

@@ -10,6 +10,8 @@
 #include <stdexcept>
 
 #include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/evolution/mixture_cooling_evolution.hpp"
+#include "gkt/models/cooling_trajectory.hpp"
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/common/sonine_solution.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
@@ -128,7 +130,78 @@ class MixtureModel final : public TransportModel {
   }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }
   [[nodiscard]] bool supports(Capability capability) const override {
-    return capability == Capability::table || capability == Capability::stability;
+    return capability == Capability::table || capability == Capability::stability || capability == Capability::evolve;
+  }
+
+  /// The keys of `gkt evolve`: the mixture's own (species, α, φ, hcs, hcs_order), the initial
+  /// T_i(0)/T(0) and a2,i(0) of every species, and CVODE's tolerances (theory.md §16.7).
+  [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
+    std::vector<ParameterSpec> specs;
+    for (const auto& spec : parameters())
+      if (spec.name != "reduced_gravity") specs.push_back(spec);
+    const ParameterSpec a2 = detail::evolution_a2_spec(2);  // the union of both dimensions' ranges; evolve() checks d's
+    for (int i = 1; i <= kMaxSpecies; ++i) {
+      specs.push_back(real(index_name("temperature_ratio", i), Rational(0), false, Rational(1000000L), true,
+                           Rational(1),
+                           "initial T_i(0)/T(0) of species i (sum_i x_i T_i/T = 1; default: equipartition)"));
+      ParameterSpec a = a2;
+      a.name = index_name("a2_species", i);
+      a.description = "initial a2 of species i (hcs = \"linear\" or \"nonlinear\")";
+      specs.push_back(a);
+    }
+    for (auto& spec : detail::evolution_common_parameters())
+      if (spec.name == "rtol" || spec.name == "atol") specs.push_back(std::move(spec));
+    return specs;
+  }
+
+  /// T(τ)/T(0), T_i/T, the a_k,i and ζ* from mixture_cooling_state's equations away from the HCS,
+  /// integrated from the given start (theory.md §16.7).
+  Trajectory evolve(const TrajectoryRequest& request) override {
+    if (!request.coefficients.empty())
+      throw std::invalid_argument("coefficients: none are offered along a mixture trajectory");
+    const detail::SchemaPoint p(evolution_parameters(), request.parameters);
+    const Mixture mixture = make(p);
+    const auto s = static_cast<int>(mixture.size());
+    const std::string hcs = p.choice("hcs");
+    const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                    : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                        : MixtureHcsScheme::nonlinear;
+    const int k_max = hcs_order(request.parameters);
+    std::vector<double> ratio;
+    std::vector<std::vector<double>> cumulants;
+    for (int i = 1; i <= s; ++i) {
+      ratio.push_back(p.number(index_name("temperature_ratio", i)).to_double());
+      const std::string a2 = index_name("a2_species", i);
+      if (p.given(a2) && scheme == MixtureHcsScheme::maxwellian)
+        throw std::invalid_argument(a2 + ": hcs = \"maxwellian\" carries no cumulants");
+      ParameterSpec range = detail::evolution_a2_spec(mixture.dimension);
+      range.name = a2;
+      range.check(p.number(a2));
+      if (scheme != MixtureHcsScheme::maxwellian) cumulants.push_back({p.number(a2).to_double()});
+    }
+    for (int i = s + 1; i <= kMaxSpecies; ++i)
+      for (const std::string& key : {index_name("temperature_ratio", i), index_name("a2_species", i)})
+        if (p.given(key)) throw std::invalid_argument(key + ": the scene has " + std::to_string(s) + " species");
+    const MixtureEvolutionResult result =
+        evolve_mixture_cooling(mixture, scheme, k_max, ratio, cumulants, request.times, p.number("rtol").to_double(),
+                               p.number("atol").to_double());
+    Trajectory t;
+    t.columns = {"time", "temperature"};
+    for (int i = 1; i <= s; ++i) t.columns.push_back(index_name("temperature_ratio", i));
+    const int carried = scheme == MixtureHcsScheme::maxwellian ? 1 : k_max;
+    for (int q = 2; q <= carried; ++q)
+      for (int i = 1; i <= s; ++i) t.columns.push_back(index_name(cumulant_base(q), i));
+    t.columns.emplace_back("cooling_rate");
+    for (const auto& sample : result.samples) {
+      std::vector<double> row{sample.time, sample.temperature};
+      for (const double g : sample.temperature_ratio) row.push_back(g);
+      for (int q = 2; q <= carried; ++q)
+        for (const auto& c : sample.cumulants) row.push_back(c[static_cast<std::size_t>(q)]);
+      row.push_back(sample.cooling_rate);
+      t.rows.push_back(std::move(row));
+    }
+    t.counters = result.counters;
+    return t;
   }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
