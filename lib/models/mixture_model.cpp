@@ -208,6 +208,7 @@ class MixtureModel final : public TransportModel {
                                          const OrderRequest& order) override {
     const detail::SchemaPoint p(parameters(), point);  // validated by the registry's guard
     const std::string hcs = p.choice("hcs");
+    if (hcs_memo_.size() > 256) hcs_memo_.clear();  // bound memory in long sweeps (never mid-evaluation)
     const Mixture mixture = make(p);
     const auto s = static_cast<int>(mixture.size());
     std::vector<CoefficientValue> out;
@@ -217,15 +218,37 @@ class MixtureModel final : public TransportModel {
     std::optional<MixtureCoolingState> chosen, alternative, higher;  // solved once, if an HCS value is asked for
     TransportCache transport;                                        // built once, if a transport value is asked for
     transport.gravity = p.number("reduced_gravity").to_double();
-    for (const auto& c : coefficients) {
-      int i = 0, cumulant = 0;
-      Kind kind = c == "cooling_rate" ? Kind::cooling_rate : Kind::transport;
+    struct Parsed {
+      Kind kind;
+      int i, cumulant;  // species from 1 (0: none), cumulant index (0: none)
+    };
+    auto parse = [&](const std::string& c) {
+      Parsed q{c == "cooling_rate" ? Kind::cooling_rate : Kind::transport, 0, 0};
       for (int k = 1; k <= s; ++k) {
-        if (c == index_name("temperature_ratio", k)) i = k, kind = Kind::temperature_ratio;
-        for (int q = 2; q <= hcs_k; ++q)
-          if (c == index_name(cumulant_base(q), k)) i = k, kind = Kind::cumulant, cumulant = q;
-        if (c == index_name("tracer_diffusion", k)) i = k, kind = Kind::tracer_diffusion;
+        if (c == index_name("temperature_ratio", k)) q = {Kind::temperature_ratio, k, 0};
+        for (int n = 2; n <= hcs_k; ++n)
+          if (c == index_name(cumulant_base(n), k)) q = {Kind::cumulant, k, n};
+        if (c == index_name("tracer_diffusion", k)) q = {Kind::tracer_diffusion, k, 0};
       }
+      return q;
+    };
+    const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                    : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                        : MixtureHcsScheme::nonlinear;
+    // `tolerance` without `hcs_order` (first Sonine or more): one cumulant order K for every HCS value
+    // of the call, the smallest at which successive K agree within it (theory.md §16.3).
+    const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
+    const bool scan = tolerance && !point.numbers.contains("hcs_order") && scheme != MixtureHcsScheme::maxwellian;
+    std::vector<HcsPick> picks;
+    for (const auto& c : coefficients)
+      if (const Parsed q = parse(c); scan && q.kind != Kind::transport && q.kind != Kind::tracer_diffusion)
+        picks.push_back({q.kind == Kind::cooling_rate ? -1 : q.i - 1, q.cumulant});
+    const std::string memo = scan ? memo_key(point) : std::string();
+    const int scan_k = picks.empty() ? 0 : common_hcs_order(mixture, scheme, memo, picks, *tolerance);
+    for (const auto& c : coefficients) {
+      const Parsed parsed = parse(c);
+      const Kind kind = parsed.kind;
+      const int i = parsed.i, cumulant = parsed.cumulant;
       if (kind == Kind::transport) {
         const auto all = transport_names(s);
         if (std::find(all.begin(), all.end(), c) == all.end())
@@ -242,9 +265,15 @@ class MixtureModel final : public TransportModel {
       // The HCS carries a_2 … a_K (K = hcs_order) whatever the transport order. The errors of ζ* and
       // T_i/T are the difference from the Maxwellian (or first-Sonine) state, those of the a_k,i the
       // difference from the linear scheme at K + 1 (theory.md §16.3).
-      const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
-                                      : hcs == "linear"   ? MixtureHcsScheme::linear
-                                                          : MixtureHcsScheme::nonlinear;
+      if (scan) {
+        const HcsPick pick{kind == Kind::cooling_rate ? -1 : static_cast<int>(k), cumulant};
+        const MixtureCoolingState &here = hcs_state(mixture, scheme, memo, scan_k),
+                                  &next = hcs_state(mixture, scheme, memo, scan_k + 1);
+        const double v = pick(here), error = std::abs(v - pick(next));
+        out.push_back({Rational::from_double(v), Rational::from_double(error), order.tolerance ? 1 : order.order,
+                       here.solved && next.solved && error < tolerance->to_double(), false, here.solved, true});
+        continue;
+      }
       if (!chosen) {
         chosen = mixture_cooling_state(mixture, scheme, hcs_k);
         alternative = mixture_cooling_state(
@@ -291,6 +320,47 @@ class MixtureModel final : public TransportModel {
             "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
             "nonlinear in them) or Maxwellian",
             {"linear", "nonlinear", "maxwellian"}};
+  }
+
+  /// One HCS value of a tolerance scan: ζ* (species < 0), T_i/T (cumulant 0) or a_q,i (species from 0).
+  struct HcsPick {
+    int species, cumulant;
+    [[nodiscard]] double operator()(const MixtureCoolingState& st) const {
+      const auto i = static_cast<std::size_t>(species < 0 ? 0 : species);
+      return species < 0     ? st.cooling_rate
+             : cumulant == 0 ? st.temperature_ratio[i]
+                             : st.cumulants[i][static_cast<std::size_t>(cumulant)];
+    }
+  };
+
+  /// Returns the HCS at cumulant order K, solved once per parameter point (`memo` its key).
+  const MixtureCoolingState& hcs_state(const Mixture& mixture, MixtureHcsScheme scheme, const std::string& memo,
+                                       int k) {
+    const std::string key = memo + "K" + std::to_string(k);
+    if (auto it = hcs_memo_.find(key); it != hcs_memo_.end()) return it->second;
+    return hcs_memo_.emplace(key, mixture_cooling_state(mixture, scheme, k)).first->second;
+  }
+
+  /// Returns the smallest K ∈ [max(2, q), kMaxHcsOrder] at which every pick's value differs from its
+  /// value at K + 1 by less than `tolerance`; else the K of the smallest largest difference (the
+  /// values are then flagged, and the CLI warns).
+  int common_hcs_order(const Mixture& mixture, MixtureHcsScheme scheme, const std::string& memo,
+                       const std::vector<HcsPick>& picks, const Rational& tolerance) {
+    int lowest = 2;
+    for (const HcsPick& pick : picks) lowest = std::max(lowest, pick.cumulant);
+    const double limit = tolerance.to_double();
+    int best = kMaxHcsOrder;
+    double best_error = INFINITY;
+    for (int k = lowest; k <= kMaxHcsOrder; ++k) {
+      const MixtureCoolingState &here = hcs_state(mixture, scheme, memo, k),
+                                &next = hcs_state(mixture, scheme, memo, k + 1);
+      if (!here.solved || !next.solved) continue;
+      double worst = 0;
+      for (const HcsPick& pick : picks) worst = std::max(worst, std::abs(pick(here) - pick(next)));
+      if (worst < limit) return k;
+      if (worst < best_error) best = k, best_error = worst;
+    }
+    return best;
   }
 
   /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the
@@ -422,6 +492,15 @@ class MixtureModel final : public TransportModel {
   }
 
   static constexpr int kMaxHcsOrder = 5;
+  /// HCS states of the tolerance scans (scanned_hcs_value), kept across calls.
+  std::map<std::string, MixtureCoolingState> hcs_memo_;
+  /// Returns the memo key of a parameter point: every exact number and choice (the scheme included).
+  static std::string memo_key(const ParameterPoint& point) {
+    std::string key;
+    for (const auto& [name, value] : point.numbers) key.append(name).append("=").append(value.to_string()).append("|");
+    for (const auto& [name, value] : point.choices) key.append(name).append("=").append(value).append("|");
+    return key;
+  }
 
   /// Returns "a<q>_species" (built by appending: GCC 12 misreports "a" + std::string as overlapping).
   static std::string cumulant_base(int q) {
