@@ -380,7 +380,7 @@ TEST(CliEvolve, StatisticsAndBadInput) {
            {" --set 'times=[2, 1]'", "times: must be a non-empty list of increasing times > 0"},
            {" --set delta=0.1", "delta: unknown key for gkt evolve"},
            {" --set 'model=\"hard-spheres\"'",
-            "model: gkt evolve supports \"aggregation\", \"rough\", \"rough-walton\", \"smooth-inelastic\""}}) {
+            "model: gkt evolve supports \"aggregation\", \"mixture\", \"rough\", \"rough-walton\", \"smooth-inelastic\""}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --output " + out + args);
     EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
@@ -388,6 +388,94 @@ TEST(CliEvolve, StatisticsAndBadInput) {
     EXPECT_FALSE(fs::exists(out)) << args;
   }
   fs::remove_all(dir);
+}
+
+// `packing_fraction` in gkt evolve (theory.md §12.4): once relaxed, the dense trajectory's ζ*, a2, η*,
+// κ*, μ* and critical sizes equal `gkt table` / `gkt stability` for the Enskog gas at the same order
+// (to the integration tolerance); a φ beyond the dimension's range is refused naming the key.
+TEST(CliEvolve, DenseGas) {
+  const std::string dense = " --set packing_fraction=0.25";
+  const std::string names =
+      " --set 'coefficients=[\"shear_viscosity\", \"thermal_conductivity\", "
+      "\"density_heat_coefficient\", \"critical_wavenumber_shear\"]'";
+  const CliRun r = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + dense + names);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = parse_csv(r.out);
+  ASSERT_EQ(rows[0].size(), 11U);
+  ASSERT_EQ(rows[0][6], "cooling_rate");
+  const CliRun t =
+      run_gkt("table " + scene_path("navier_stokes_converged.toml") + " --set alpha=0.8 --set order=3" + dense +
+              " --set 'coefficients=[\"cooling_rate\", \"a2\", \"shear_viscosity\", "
+              "\"thermal_conductivity\", \"density_heat_coefficient\", "
+              "\"critical_wavenumber_shear\"]'");
+  ASSERT_EQ(t.status, 0) << t.err;
+  const auto reference = parse_csv(t.out);
+  std::size_t first = 0;  // the reference's first coefficient column (after any swept keys)
+  while (reference[0][first] != "cooling_rate") ++first;
+  const auto& last = rows.back();
+  EXPECT_NEAR(std::stod(last[6]), std::stod(reference[1][first]), 1e-9);
+  EXPECT_NEAR(std::stod(last[3]), std::stod(reference[1][first + 1]), 1e-9);
+  for (std::size_t c = 0; c < 4; ++c)
+    EXPECT_NEAR(std::stod(last[7 + c]), std::stod(reference[1][first + 2 + c]), 1e-8) << rows[0][7 + c];
+  const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --set packing_fraction=0.6");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("packing_fraction: must be a number in [0, 0.5] for dimension = 3, got 0.6"),
+            std::string::npos)
+      << bad.err;
+}
+
+// `gkt evolve` for a mixture (theory.md §16.7): from equipartition the last row's T_i/T, a2,i and ζ*
+// are `gkt table`'s HCS in the same scheme (to the integration tolerance, 1e-9 at rtol = 1e-10), T
+// falls; bad input exits 2 with one line naming the key.
+TEST(CliEvolve, Mixture) {
+  const fs::path scene = fs::temp_directory_path() / ("gkt_mixture_evolve_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(scene) << "model = \"mixture\"\nalpha = 0.8\npacking_fraction = 0.1\nt_end = 2000\npoints = 4\n"
+                          "rtol = 1e-10\natol = 1e-14\n"
+                          "[[species]]\nmass = 1\ndiameter = 1\nfraction = 0.5\n"
+                          "[[species]]\nmass = 4\ndiameter = 1.2\nfraction = 0.5\n";
+  const CliRun r = run_gkt("evolve " + scene.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("cvode: steps="), std::string::npos);
+  const auto rows = parse_csv(r.out);
+  ASSERT_EQ(rows.size(), 5U);
+  const std::vector<std::string> columns{"time",         "temperature",  "temperature_ratio_1", "temperature_ratio_2",
+                                         "a2_species_1", "a2_species_2", "cooling_rate"};
+  EXPECT_EQ(rows[0], columns);
+  // The HCS of `gkt table`: a scene without the evolve keys.
+  const fs::path hcs = fs::temp_directory_path() / ("gkt_mixture_hcs_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(hcs) << "model = \"mixture\"\nalpha = 0.8\npacking_fraction = 0.1\norder = 1\n"
+                        "coefficients = [\"temperature_ratio_1\", \"temperature_ratio_2\", \"a2_species_1\", "
+                        "\"a2_species_2\", \"cooling_rate\"]\n"
+                        "[[species]]\nmass = 1\ndiameter = 1\nfraction = 0.5\n"
+                        "[[species]]\nmass = 4\ndiameter = 1.2\nfraction = 0.5\n";
+  const CliRun t = run_gkt("table " + hcs.string());
+  ASSERT_EQ(t.status, 0) << t.err;
+  const auto reference = parse_csv(t.out);
+  for (std::size_t c = 0; c < 5; ++c)
+    EXPECT_NEAR(std::stod(rows.back()[2 + c]), std::stod(reference[1][c]), 1e-9) << columns[2 + c];
+  EXPECT_GT(std::abs(std::stod(rows[1][2]) - std::stod(reference[1][0])), 1e-3);  // not relaxed at τ = 0.01
+  EXPECT_LT(std::stod(rows.back()[1]), 1e-3);
+  // Given initial ratios (Σ x_i γ_i = 1) relax to the same state; the Maxwellian scheme has no a2 columns.
+  const CliRun g = run_gkt("evolve " + scene.string() +
+                           " --set temperature_ratio_1=1.5 --set temperature_ratio_2=0.5 --set hcs='\"maxwellian\"'");
+  ASSERT_EQ(g.status, 0) << g.err;
+  EXPECT_EQ(parse_csv(g.out)[0].size(), 5U);
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {" --set temperature_ratio_1=1.5", "temperature_ratio_i: the initial ratios T_i/T must satisfy"},
+           {" --set temperature_ratio_3=1", "temperature_ratio_3: the scene has 2 species"},
+           {" --set a2_species_1=0.9", "a2_species_1: must be a number in"},
+           {" --set hcs_order=9", "hcs_order: must be an integer in [2, 5]"},
+           {" --set 'coefficients=[\"shear_viscosity\"]'",
+            "coefficients: unknown key for gkt evolve with model \"mixture\""},
+           {" --set hcs='\"maxwellian\"' --set a2_species_2=0.1", "a2_species_2: hcs = \"maxwellian\" carries no"},
+           {" --set order=2", "order: unknown key for gkt evolve with model \"mixture\""}}) {
+    const CliRun bad = run_gkt("evolve " + scene.string() + args);
+    EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << args << ": " << bad.err;
+    EXPECT_EQ(bad.err.find('\n'), bad.err.size() - 1) << bad.err;
+  }
+  fs::remove(scene);
+  fs::remove(hcs);
 }
 
 // Transport coefficients along a trajectory: once the cumulants have relaxed, η*, κ*, μ* about

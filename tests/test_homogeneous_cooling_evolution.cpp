@@ -101,3 +101,36 @@ TEST(HcsEvolution, RejectsBadInput) {
                std::invalid_argument);
   EXPECT_THROW((void)gkt::evolve_homogeneous_cooling(hierarchy, 1.0, {}, {1.0}, 0.0, 1e-12), std::invalid_argument);
 }
+
+// The dense (Enskog) gas: its homogeneous collision operator is χ times Boltzmann's, so the dense
+// trajectory at τ is the dilute one at χτ (theory.md §12.4): T, a_k and the collisions per particle
+// agree to the integration tolerance (two CVODE runs with different step sequences), ζ* is χ times
+// the dilute one. χ(φ = 0.25, Carnahan–Starling) = 2.370…; χ < 1 or not finite is refused.
+TEST(HcsEvolution, DenseGasIsTheDiluteOneWithTimeScaledByChi) {
+  for (int d : {2, 3}) {
+    gkt::HomogeneousCoolingState h(d);
+    const auto hierarchy = h.hierarchy(Rational(7, 10), 4);
+    const double phi = 0.25;
+    const double chi = d == 3 ? (1 - phi / 2) / std::pow(1 - phi, 3) : (1 - 7 * phi / 16) / std::pow(1 - phi, 2);
+    const auto times = log_times(1e-2, 1e3, 12);
+    std::vector<double> scaled;
+    for (const double t : times) scaled.push_back(chi * t);
+    const auto dense = gkt::evolve_homogeneous_cooling(hierarchy, 1.0, {0.05}, times, 1e-11, 1e-16, chi);
+    const auto dilute = gkt::evolve_homogeneous_cooling(hierarchy, 1.0, {0.05}, scaled, 1e-11, 1e-16);
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      const auto &a = dense.samples[i], &b = dilute.samples[i];
+      EXPECT_DOUBLE_EQ(a.time, times[i]);
+      EXPECT_NEAR(a.temperature / b.temperature, 1, 1e-8) << d << " " << times[i];
+      EXPECT_NEAR(a.collisions / b.collisions, 1, 1e-8) << d << " " << times[i];
+      for (int k = 2; k <= 4; ++k) EXPECT_NEAR(a.a[k], b.a[k], 1e-9) << d << " " << k;
+      EXPECT_NEAR(a.cooling_rate / (chi * b.cooling_rate), 1, 1e-8) << d << " " << times[i];
+    }
+    // The dense gas cools faster at the same τ.
+    EXPECT_LT(dense.samples.back().temperature, 0.5 * dilute.samples.front().temperature);
+  }
+  gkt::HomogeneousCoolingState h(3);
+  const auto hierarchy = h.hierarchy(Rational(4, 5), 3);
+  for (const double chi : {0.5, std::nan(""), static_cast<double>(INFINITY)})
+    EXPECT_THROW((void)gkt::evolve_homogeneous_cooling(hierarchy, 1.0, {}, {1.0}, 1e-8, 1e-12, chi),
+                 std::invalid_argument);
+}

@@ -441,6 +441,36 @@ TEST(MixtureEnskog, ForceMobility) {
       }
 }
 
+// The heat flux per external force, L_j of q ∋ −Σ_j L_j F_j (GDH's Σ_i L_ij; theory.md (18.15)). In the
+// dilute elastic gas a force F_j acts like −T∇ln n_j (the sources of (18.14) and (17.6) then coincide),
+// so L_j* = −D''_j* at every order — two different solves (force mode with ζ(D + M), density mode with
+// its ∂ζ/∂n_j source) that meet only at α = 1; a uniform gravitational field (F_j = m_j g) drives no
+// heat flux, Σ_j L_j m_j = 0, dilute and dense. Inelastic gases depart from −D''_j* by more than 10⁻³.
+TEST(MixtureEnskog, HeatFluxPerForce) {
+  for (int d : {2, 3})
+    for (double phi : {0.0, 0.25})
+      for (double alpha : {1.0, 0.7}) {
+        const gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.3, ""}, {3, 1.4, 0.7, ""}}, alpha, phi);
+        const gkt::MixtureNavierStokes ns(m, 3);
+        const double mbar = m.mean_mass(), mass[2] = {1 / mbar, 3 / mbar};
+        for (int order : {1, 2, 3}) {
+          const auto v = ns.coefficients(order);
+          ASSERT_EQ(v.heat_mobility.size(), 2U);
+          EXPECT_LT(std::abs(v.heat_mobility[0] * mass[0] + v.heat_mobility[1] * mass[1]),
+                    1e-12 * std::abs(v.heat_mobility[0]))
+              << d << " " << phi << " " << alpha << " " << order;
+          if (phi > 0) continue;
+          for (std::size_t j = 0; j < 2; ++j) {
+            const double relative = std::abs(v.heat_mobility[j] / -v.dufour[j] - 1);
+            if (alpha == 1.0)
+              EXPECT_LT(relative, 1e-12) << d << " " << order << " " << j;
+            else
+              EXPECT_GT(relative, 1e-3) << d << " " << order << " " << j;
+          }
+        }
+      }
+}
+
 // Garzó, Dufty & Hrenya's first-Sonine shear viscosity of the dense mixture (PRE 76, 031303 (2007);
 // seed 003): η = Σ_i η_i^k + η^c, η^c = (2B_2/(d+2)) Σ_ij μ_ij (1+α_ij) χ_ij n_i σ_ij^d η_j^k +
 // (d/(d+2)) κ^c, with κ^c their bulk viscosity (B_k as in BulkViscosityEqualsClosedForms). At order 1

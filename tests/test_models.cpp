@@ -13,6 +13,7 @@
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/models/transport_model.hpp"
 #include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 
 using gkt::Capability;
@@ -155,7 +156,8 @@ TEST(ModelSchema, DeclaredCapabilities) {
     }
   }
   EXPECT_TRUE(gkt::make_transport_model("smooth-inelastic")->supports(Capability::formula));
-  EXPECT_FALSE(gkt::make_transport_model("mixture")->supports(Capability::evolve));
+  EXPECT_TRUE(gkt::make_transport_model("mixture")->supports(Capability::evolve));
+  EXPECT_FALSE(gkt::make_transport_model("hard-spheres")->supports(Capability::evolve));
 }
 
 // `gkt formula` asks the model: the first-Sonine closed form of the one-component gas, validated.
@@ -248,4 +250,41 @@ TEST(ModelFacade, AggregationTrajectoryThroughTheModel) {
   request.parameters.numbers["t_end"] = Rational(2);
   request.parameters.choices["distribution"] = "yes";
   EXPECT_TRUE(contains(refusal([&] { (void)model->evolve(request); }), "distribution: must be one of"));
+}
+
+// `tolerance` drives a mixture's HCS cumulant order (issue 20 item 8; theory.md §16.3): without
+// `hcs_order` the value is mixture_cooling_state at the smallest K whose value differs from K + 1's by
+// less than the tolerance, that difference its error; the row's second pass (order fixed,
+// row_tolerance set) gives the same value; a tolerance no K ≤ 5 meets is reported not converged;
+// `hcs_order` given keeps the fixed K (and the old error, the distance to the Maxwellian state).
+TEST(ModelFacade, ToleranceDrivesTheMixtureHcsOrder) {
+  auto model = gkt::make_transport_model("mixture");
+  ParameterPoint p = binary();
+  p.numbers["mass_2"] = Rational(4);
+  p.numbers["alpha"] = Rational(4, 5);
+  gkt::Mixture m = gkt::make_mixture(3, {{1, 1, 0.5, ""}, {4, 1, 0.5, ""}}, 0.8);
+  std::vector<double> ratio;  // T_1/T at K = 2, 3, … as far as the scan needs
+  auto at = [&](std::size_t i) {
+    while (ratio.size() <= i)
+      ratio.push_back(gkt::mixture_cooling_state(m, gkt::MixtureHcsScheme::linear, static_cast<int>(ratio.size()) + 2)
+                          .temperature_ratio[0]);
+    return ratio[i];
+  };
+  const Rational tolerance(1, 10000);
+  std::size_t chosen = 0;
+  while (!(std::abs(at(chosen) - at(chosen + 1)) < 1e-4)) ++chosen;
+  ASSERT_GT(chosen, 0U);  // K = 2 does not meet 1e-4 here: the scan has work to do
+  const auto scanned = model->evaluate(p, {"temperature_ratio_1"}, {1, tolerance});
+  EXPECT_DOUBLE_EQ(scanned[0].value.to_double(), ratio[chosen]);
+  EXPECT_NEAR(scanned[0].error.to_double(), std::abs(ratio[chosen] - ratio[chosen + 1]), 1e-15);
+  EXPECT_TRUE(scanned[0].converged);
+  gkt::OrderRequest second{3, std::nullopt};
+  second.row_tolerance = tolerance;
+  EXPECT_DOUBLE_EQ(model->evaluate(p, {"temperature_ratio_1"}, second)[0].value.to_double(), ratio[chosen]);
+  EXPECT_FALSE(model->evaluate(p, {"temperature_ratio_1"}, {1, Rational(1, 100000000)})[0].converged);
+  ParameterPoint fixed = p;
+  fixed.numbers["hcs_order"] = Rational(2);
+  const auto k2 = model->evaluate(fixed, {"temperature_ratio_1"}, {1, tolerance});
+  EXPECT_DOUBLE_EQ(k2[0].value.to_double(), ratio[0]);
+  EXPECT_GT(k2[0].error.to_double(), 1e-3);
 }

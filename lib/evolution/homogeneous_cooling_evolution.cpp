@@ -36,6 +36,7 @@ struct Problem {
   mutable std::optional<CumulantHierarchy> current;
   int k_max = 0;
   double zeta_factor = 0;  // 4/(d+2) · (d+2)/(2d) = 2/d: dθ/dτ = (2/d) R_1 θ^{3/2}
+  double chi = 1;          // Enskog: every collision rate is χ times the dilute one (theory.md (15.1))
   mutable std::vector<double> a, f, jac, grad_e, grad_c;
 
   /// The hierarchy at the state's temperature.
@@ -62,7 +63,7 @@ int rates(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   const double theta = yv[0];
   if (!(theta > 0)) return 1;  // recoverable: CVODE retries with a smaller step
   p.unpack(yv);
-  const double sq = std::sqrt(theta);
+  const double sq = p.chi * std::sqrt(theta);
   const CumulantHierarchy& h = p.at(theta);
   dv[0] = p.zeta_factor * h.energy_moment(p.a) * theta * sq;
   dv[1] = sq * h.collision_rate(p.a);
@@ -78,18 +79,18 @@ int jacobian(sunrealtype, N_Vector y, N_Vector, SUNMatrix jm, void* data, N_Vect
   if (!(theta > 0)) return 1;
   p.unpack(yv);
   const int n = p.k_max + 1, unknowns = p.k_max - 1;
-  const double sq = std::sqrt(theta);
+  const double root = std::sqrt(theta), sq = p.chi * root;
   p.jac.assign(static_cast<std::size_t>(unknowns) * unknowns, 0.0);
   p.h->residual(p.a, p.f, &p.jac);
   p.h->gradients(p.a, p.grad_e, p.grad_c);
   const double r1 = p.h->energy_moment(p.a), rate = p.h->collision_rate(p.a);
   SUNMatZero(jm);
   SM_ELEMENT_D(jm, 0, 0) = 1.5 * p.zeta_factor * r1 * sq;
-  SM_ELEMENT_D(jm, 1, 0) = 0.5 * rate / sq;
+  SM_ELEMENT_D(jm, 1, 0) = p.chi * 0.5 * rate / root;
   for (int k = 2; k < n; ++k) {
     SM_ELEMENT_D(jm, 0, k) = p.zeta_factor * p.grad_e[k] * theta * sq;
     SM_ELEMENT_D(jm, 1, k) = sq * p.grad_c[k];
-    SM_ELEMENT_D(jm, k, 0) = 0.5 * p.f[static_cast<std::size_t>(k - 2)] / (sq * p.h->norm(k));
+    SM_ELEMENT_D(jm, k, 0) = p.chi * 0.5 * p.f[static_cast<std::size_t>(k - 2)] / (root * p.h->norm(k));
     for (int q = 2; q < n; ++q)
       SM_ELEMENT_D(jm, k, q) = sq * p.jac[static_cast<std::size_t>(k - 2) * unknowns + (q - 2)] / p.h->norm(k);
   }
@@ -145,7 +146,8 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
     s.collisions = yv[1];
     problem.unpack(yv);
     s.a = problem.a;
-    s.cooling_rate = -(dimension + 2) * problem.at(yv[0] / temperature0).energy_moment(s.a) / (2.0 * dimension);
+    s.cooling_rate =
+        -problem.chi * (dimension + 2) * problem.at(yv[0] / temperature0).energy_moment(s.a) / (2.0 * dimension);
     result.samples.push_back(std::move(s));
   }
   long v = 0;
@@ -168,8 +170,12 @@ bool EvolutionFailure::tolerances() const { return flag_ == CV_TOO_MUCH_ACC; }
 
 EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
                                            const std::vector<double>& initial_a, const std::vector<double>& times,
-                                           double rtol, double atol) {
+                                           double rtol, double atol, double chi) {
+  if (!(chi >= 1) || !std::isfinite(chi))
+    throw std::invalid_argument("packing_fraction: the contact value chi must be finite and >= 1, got " +
+                                std::to_string(chi));
   Problem problem;
+  problem.chi = chi;
   problem.h = &hierarchy;
   problem.k_max = hierarchy.k_max();
   problem.zeta_factor = 2.0 / hierarchy.dimension();

@@ -143,8 +143,8 @@ Trajectory tabulate_trajectory(const std::string& model, int dimension, int k_ma
     if (!wanted.empty()) {
       const SampleTransport at = transport(s);
       // Critical sizes at the instantaneous state (theory.md §12.3), ζ*(τ) from the hierarchy.
-      const HcsStability stability =
-          monodisperse_stability(dimension, s.cooling_rate, at.values, {}, 1.0, at.cooling_temperature_exponent);
+      const HcsStability stability = monodisperse_stability(dimension, s.cooling_rate, at.values, at.dense, at.alpha,
+                                                            at.cooling_temperature_exponent);
       for (const auto* column : wanted) row.push_back(column->value(at.values, stability));
     }
     t.rows.push_back(std::move(row));

@@ -10,6 +10,8 @@
 #include <stdexcept>
 
 #include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/evolution/mixture_cooling_evolution.hpp"
+#include "gkt/models/cooling_trajectory.hpp"
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/common/sonine_solution.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
@@ -128,13 +130,85 @@ class MixtureModel final : public TransportModel {
   }
   [[nodiscard]] int max_order() const override { return kMaxOrder; }
   [[nodiscard]] bool supports(Capability capability) const override {
-    return capability == Capability::table || capability == Capability::stability;
+    return capability == Capability::table || capability == Capability::stability || capability == Capability::evolve;
+  }
+
+  /// The keys of `gkt evolve`: the mixture's own (species, α, φ, hcs, hcs_order), the initial
+  /// T_i(0)/T(0) and a2,i(0) of every species, and CVODE's tolerances (theory.md §16.7).
+  [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
+    std::vector<ParameterSpec> specs;
+    for (const auto& spec : parameters())
+      if (spec.name != "reduced_gravity") specs.push_back(spec);
+    const ParameterSpec a2 = detail::evolution_a2_spec(2);  // the union of both dimensions' ranges; evolve() checks d's
+    for (int i = 1; i <= kMaxSpecies; ++i) {
+      specs.push_back(real(index_name("temperature_ratio", i), Rational(0), false, Rational(1000000L), true,
+                           Rational(1),
+                           "initial T_i(0)/T(0) of species i (sum_i x_i T_i/T = 1; default: equipartition)"));
+      ParameterSpec a = a2;
+      a.name = index_name("a2_species", i);
+      a.description = "initial a2 of species i (hcs = \"linear\" or \"nonlinear\")";
+      specs.push_back(a);
+    }
+    for (auto& spec : detail::evolution_common_parameters())
+      if (spec.name == "rtol" || spec.name == "atol") specs.push_back(std::move(spec));
+    return specs;
+  }
+
+  /// T(τ)/T(0), T_i/T, the a_k,i and ζ* from mixture_cooling_state's equations away from the HCS,
+  /// integrated from the given start (theory.md §16.7).
+  Trajectory evolve(const TrajectoryRequest& request) override {
+    if (!request.coefficients.empty())
+      throw std::invalid_argument("coefficients: none are offered along a mixture trajectory");
+    const detail::SchemaPoint p(evolution_parameters(), request.parameters);
+    const Mixture mixture = make(p);
+    const auto s = static_cast<int>(mixture.size());
+    const std::string hcs = p.choice("hcs");
+    const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                    : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                        : MixtureHcsScheme::nonlinear;
+    const int k_max = hcs_order(request.parameters);
+    std::vector<double> ratio;
+    std::vector<std::vector<double>> cumulants;
+    for (int i = 1; i <= s; ++i) {
+      ratio.push_back(p.number(index_name("temperature_ratio", i)).to_double());
+      const std::string a2 = index_name("a2_species", i);
+      if (p.given(a2) && scheme == MixtureHcsScheme::maxwellian)
+        throw std::invalid_argument(a2 + ": hcs = \"maxwellian\" carries no cumulants");
+      ParameterSpec range = detail::evolution_a2_spec(mixture.dimension);
+      range.name = a2;
+      range.check(p.number(a2));
+      if (scheme != MixtureHcsScheme::maxwellian) cumulants.push_back({p.number(a2).to_double()});
+    }
+    for (int i = s + 1; i <= kMaxSpecies; ++i)
+      for (const std::string& key : {index_name("temperature_ratio", i), index_name("a2_species", i)})
+        if (p.given(key)) throw std::invalid_argument(key + ": the scene has " + std::to_string(s) + " species");
+    const MixtureEvolutionResult result =
+        evolve_mixture_cooling(mixture, scheme, k_max, ratio, cumulants, request.times, p.number("rtol").to_double(),
+                               p.number("atol").to_double());
+    Trajectory t;
+    t.columns = {"time", "temperature"};
+    for (int i = 1; i <= s; ++i) t.columns.push_back(index_name("temperature_ratio", i));
+    const int carried = scheme == MixtureHcsScheme::maxwellian ? 1 : k_max;
+    for (int q = 2; q <= carried; ++q)
+      for (int i = 1; i <= s; ++i) t.columns.push_back(index_name(cumulant_base(q), i));
+    t.columns.emplace_back("cooling_rate");
+    for (const auto& sample : result.samples) {
+      std::vector<double> row{sample.time, sample.temperature};
+      for (const double g : sample.temperature_ratio) row.push_back(g);
+      for (int q = 2; q <= carried; ++q)
+        for (const auto& c : sample.cumulants) row.push_back(c[static_cast<std::size_t>(q)]);
+      row.push_back(sample.cooling_rate);
+      t.rows.push_back(std::move(row));
+    }
+    t.counters = result.counters;
+    return t;
   }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
     const detail::SchemaPoint p(parameters(), point);  // validated by the registry's guard
     const std::string hcs = p.choice("hcs");
+    if (hcs_memo_.size() > 256) hcs_memo_.clear();  // bound memory in long sweeps (never mid-evaluation)
     const Mixture mixture = make(p);
     const auto s = static_cast<int>(mixture.size());
     std::vector<CoefficientValue> out;
@@ -144,15 +218,37 @@ class MixtureModel final : public TransportModel {
     std::optional<MixtureCoolingState> chosen, alternative, higher;  // solved once, if an HCS value is asked for
     TransportCache transport;                                        // built once, if a transport value is asked for
     transport.gravity = p.number("reduced_gravity").to_double();
-    for (const auto& c : coefficients) {
-      int i = 0, cumulant = 0;
-      Kind kind = c == "cooling_rate" ? Kind::cooling_rate : Kind::transport;
+    struct Parsed {
+      Kind kind;
+      int i, cumulant;  // species from 1 (0: none), cumulant index (0: none)
+    };
+    auto parse = [&](const std::string& c) {
+      Parsed q{c == "cooling_rate" ? Kind::cooling_rate : Kind::transport, 0, 0};
       for (int k = 1; k <= s; ++k) {
-        if (c == index_name("temperature_ratio", k)) i = k, kind = Kind::temperature_ratio;
-        for (int q = 2; q <= hcs_k; ++q)
-          if (c == index_name(cumulant_base(q), k)) i = k, kind = Kind::cumulant, cumulant = q;
-        if (c == index_name("tracer_diffusion", k)) i = k, kind = Kind::tracer_diffusion;
+        if (c == index_name("temperature_ratio", k)) q = {Kind::temperature_ratio, k, 0};
+        for (int n = 2; n <= hcs_k; ++n)
+          if (c == index_name(cumulant_base(n), k)) q = {Kind::cumulant, k, n};
+        if (c == index_name("tracer_diffusion", k)) q = {Kind::tracer_diffusion, k, 0};
       }
+      return q;
+    };
+    const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                    : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                        : MixtureHcsScheme::nonlinear;
+    // `tolerance` without `hcs_order` (first Sonine or more): one cumulant order K for every HCS value
+    // of the call, the smallest at which successive K agree within it (theory.md §16.3).
+    const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
+    const bool scan = tolerance && !point.numbers.contains("hcs_order") && scheme != MixtureHcsScheme::maxwellian;
+    std::vector<HcsPick> picks;
+    for (const auto& c : coefficients)
+      if (const Parsed q = parse(c); scan && q.kind != Kind::transport && q.kind != Kind::tracer_diffusion)
+        picks.push_back({q.kind == Kind::cooling_rate ? -1 : q.i - 1, q.cumulant});
+    const std::string memo = scan ? memo_key(point) : std::string();
+    const int scan_k = picks.empty() ? 0 : common_hcs_order(mixture, scheme, memo, picks, *tolerance);
+    for (const auto& c : coefficients) {
+      const Parsed parsed = parse(c);
+      const Kind kind = parsed.kind;
+      const int i = parsed.i, cumulant = parsed.cumulant;
       if (kind == Kind::transport) {
         const auto all = transport_names(s);
         if (std::find(all.begin(), all.end(), c) == all.end())
@@ -169,9 +265,15 @@ class MixtureModel final : public TransportModel {
       // The HCS carries a_2 … a_K (K = hcs_order) whatever the transport order. The errors of ζ* and
       // T_i/T are the difference from the Maxwellian (or first-Sonine) state, those of the a_k,i the
       // difference from the linear scheme at K + 1 (theory.md §16.3).
-      const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
-                                      : hcs == "linear"   ? MixtureHcsScheme::linear
-                                                          : MixtureHcsScheme::nonlinear;
+      if (scan) {
+        const HcsPick pick{kind == Kind::cooling_rate ? -1 : static_cast<int>(k), cumulant};
+        const MixtureCoolingState &here = hcs_state(mixture, scheme, memo, scan_k),
+                                  &next = hcs_state(mixture, scheme, memo, scan_k + 1);
+        const double v = pick(here), error = std::abs(v - pick(next));
+        out.push_back({Rational::from_double(v), Rational::from_double(error), order.tolerance ? 1 : order.order,
+                       here.solved && next.solved && error < tolerance->to_double(), false, here.solved, true});
+        continue;
+      }
       if (!chosen) {
         chosen = mixture_cooling_state(mixture, scheme, hcs_k);
         alternative = mixture_cooling_state(
@@ -218,6 +320,47 @@ class MixtureModel final : public TransportModel {
             "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
             "nonlinear in them) or Maxwellian",
             {"linear", "nonlinear", "maxwellian"}};
+  }
+
+  /// One HCS value of a tolerance scan: ζ* (species < 0), T_i/T (cumulant 0) or a_q,i (species from 0).
+  struct HcsPick {
+    int species, cumulant;
+    [[nodiscard]] double operator()(const MixtureCoolingState& st) const {
+      const auto i = static_cast<std::size_t>(species < 0 ? 0 : species);
+      return species < 0     ? st.cooling_rate
+             : cumulant == 0 ? st.temperature_ratio[i]
+                             : st.cumulants[i][static_cast<std::size_t>(cumulant)];
+    }
+  };
+
+  /// Returns the HCS at cumulant order K, solved once per parameter point (`memo` its key).
+  const MixtureCoolingState& hcs_state(const Mixture& mixture, MixtureHcsScheme scheme, const std::string& memo,
+                                       int k) {
+    const std::string key = memo + "K" + std::to_string(k);
+    if (auto it = hcs_memo_.find(key); it != hcs_memo_.end()) return it->second;
+    return hcs_memo_.emplace(key, mixture_cooling_state(mixture, scheme, k)).first->second;
+  }
+
+  /// Returns the smallest K ∈ [max(2, q), kMaxHcsOrder] at which every pick's value differs from its
+  /// value at K + 1 by less than `tolerance`; else the K of the smallest largest difference (the
+  /// values are then flagged, and the CLI warns).
+  int common_hcs_order(const Mixture& mixture, MixtureHcsScheme scheme, const std::string& memo,
+                       const std::vector<HcsPick>& picks, const Rational& tolerance) {
+    int lowest = 2;
+    for (const HcsPick& pick : picks) lowest = std::max(lowest, pick.cumulant);
+    const double limit = tolerance.to_double();
+    int best = kMaxHcsOrder;
+    double best_error = INFINITY;
+    for (int k = lowest; k <= kMaxHcsOrder; ++k) {
+      const MixtureCoolingState &here = hcs_state(mixture, scheme, memo, k),
+                                &next = hcs_state(mixture, scheme, memo, k + 1);
+      if (!here.solved || !next.solved) continue;
+      double worst = 0;
+      for (const HcsPick& pick : picks) worst = std::max(worst, std::abs(pick(here) - pick(next)));
+      if (worst < limit) return k;
+      if (worst < best_error) best = k, best_error = worst;
+    }
+    return best;
   }
 
   /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the
@@ -287,7 +430,8 @@ class MixtureModel final : public TransportModel {
       static const std::map<std::string, Vector> per_species{
           {"thermal_diffusion", &MixtureTransportValues::thermal_diffusion},
           {"pressure_diffusion", &MixtureTransportValues::pressure_diffusion},
-          {"dufour", &MixtureTransportValues::dufour}};
+          {"dufour", &MixtureTransportValues::dufour},
+          {"heat_mobility", &MixtureTransportValues::heat_mobility}};
       static const std::map<std::string, Vector> per_pair{
           {"mutual_diffusion", &MixtureTransportValues::mutual_diffusion},
           {"mobility", &MixtureTransportValues::mobility}};
@@ -335,16 +479,28 @@ class MixtureModel final : public TransportModel {
     for (const char* c : {"bulk_viscosity", "cooling_rate_first_order", "pressure"}) n.emplace_back(c);
     for (int i = 1; i <= s; ++i)
       for (int j = 1; j <= s; ++j) n.push_back(index_name("mobility", i, j));
+    for (int i = 1; i <= s; ++i) n.push_back(index_name("heat_mobility", i));
     return n;
   }
-  /// The external-force coefficients L_ij: listed only when the scene names them.
-  static bool on_request(const std::string& name) { return name.rfind("mobility_", 0) == 0; }
+  /// The external-force coefficients D^F_ij and L_j: listed only when the scene names them.
+  static bool on_request(const std::string& name) {
+    return name.rfind("mobility_", 0) == 0 || name.rfind("heat_mobility_", 0) == 0;
+  }
   /// Zero in the dilute gas (p* = 1): listed by default only for a dense scene.
   static bool dense_only(const std::string& name) {
     return name == "bulk_viscosity" || name == "cooling_rate_first_order" || name == "pressure";
   }
 
   static constexpr int kMaxHcsOrder = 5;
+  /// HCS states of the tolerance scans (scanned_hcs_value), kept across calls.
+  std::map<std::string, MixtureCoolingState> hcs_memo_;
+  /// Returns the memo key of a parameter point: every exact number and choice (the scheme included).
+  static std::string memo_key(const ParameterPoint& point) {
+    std::string key;
+    for (const auto& [name, value] : point.numbers) key.append(name).append("=").append(value.to_string()).append("|");
+    for (const auto& [name, value] : point.choices) key.append(name).append("=").append(value).append("|");
+    return key;
+  }
 
   /// Returns "a<q>_species" (built by appending: GCC 12 misreports "a" + std::string as overlapping).
   static std::string cumulant_base(int q) {

@@ -98,6 +98,8 @@ HcsStability monodisperse_stability(int dimension, double cooling_rate, const Na
 struct SampleTransport {
   NavierStokesValues values;
   double cooling_temperature_exponent = 0.5;
+  EnskogState dense{};  ///< the dense gas's φ, χ (dilute default: p* = 1)
+  double alpha = 1;     ///< restitution, for the dense gas's p* (unused when dilute)
 };
 
 /// Returns the names of the coefficients offered along a cooling trajectory (η*, κ*, μ*, critical values).

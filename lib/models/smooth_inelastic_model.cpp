@@ -268,7 +268,9 @@ class SmoothInelasticModel final : public TransportModel {
                                       true,
                                       Rational(1),
                                       "initial temperature T(0)/T0",
-                                      {}}};
+                                      {}},
+                                     find_parameter(parameters(), "packing_fraction"),
+                                     find_parameter(parameters(), "pair_correlation")};
     for (auto& spec : evolution_common_parameters()) specs.push_back(std::move(spec));
     return specs;
   }
@@ -276,23 +278,34 @@ class SmoothInelasticModel final : public TransportModel {
     return trajectory_coefficient_names();
   }
   /// The cumulant hierarchy at constant α integrated from T(0), a2(0) (theory.md §12); η*, κ*, μ* at
-  /// Sonine order N about the instantaneous cumulants a(τ) (§12.3).
+  /// Sonine order N about the instantaneous cumulants a(τ) (§12.3). Dense (φ > 0): every collision
+  /// rate carries χ(φ) (theory.md §12.4), the coefficients are the Enskog ones at φ.
   Trajectory evolve(const TrajectoryRequest& request) override {
     const SchemaPoint p(evolution_parameters(), request.parameters);
     if (!p.given("alpha")) throw missing(p.spec("alpha"));
     const int d = p.number("dimension") == Rational(2) ? 2 : 3;
     evolution_a2_spec(d).check(p.number("a2"));
     const Rational alpha = p.number("alpha");
+    const Rational phi = p.number("packing_fraction");
+    if (phi > max_packing_fraction(d))
+      throw std::invalid_argument("packing_fraction: must be a number in [0, " +
+                                  max_packing_fraction(d).to_decimal_string() +
+                                  "] for dimension = " + std::to_string(d) + ", got " + phi.to_decimal_string());
+    const PairCorrelation& closure = pair_correlation(p.choice("pair_correlation"));
+    const EnskogState dense =
+        phi.sign() == 0 ? EnskogState{} : enskog_state(d, phi.to_double(), closure);  // dilute: χ = 1 exactly
     const int order = static_cast<int>(p.number("order").to_double());
     const int k_max = order + 1;  // cumulants a_2 … a_{order+1}
     HomogeneousCoolingState hcs(d);
     const EvolutionResult result = evolve_homogeneous_cooling(
         hcs.hierarchy(alpha, k_max), p.number("temperature").to_double(), {p.number("a2").to_double()}, request.times,
-        p.number("rtol").to_double(), p.number("atol").to_double());
+        p.number("rtol").to_double(), p.number("atol").to_double(), dense.chi);
     std::optional<NavierStokesSolver> solver;
     if (!request.coefficients.empty()) solver.emplace(d);
     return tabulate_trajectory(name(), d, k_max, result, request.coefficients, [&](const EvolutionSample& s) {
-      return SampleTransport{solver->solve(alpha, order, s.a)};
+      if (phi.sign() == 0) return SampleTransport{solver->solve(alpha, order, s.a)};
+      return SampleTransport{solver->solve(alpha, order, s.a, SonineScheme::standard, dense), 0.5, dense,
+                             alpha.to_double()};
     });
   }
 

@@ -81,7 +81,9 @@ Table evolve(const std::string& scene_path, const std::vector<std::string>& over
   return evolve(read_scene_table(scene_path, overrides), counters);
 }
 
-Table evolve(const toml::table& t, std::string& counters) {
+Table evolve(const toml::table& scene, std::string& counters) {
+  toml::table t = scene;
+  flatten_mixture(t);  // a mixture's [[species]] tables and α matrix become its indexed keys
   const auto* model_node = t.get("model");
   if (model_node == nullptr || !model_node->is_string()) throw unsupported_model();
   const std::string model_name = model_node->as_string()->get();
@@ -104,7 +106,7 @@ Table evolve(const toml::table& t, std::string& counters) {
     const std::string k(key.str());
     if (!valid.contains(k))
       throw error(k + ": unknown key for gkt evolve with model \"" + model_name +
-                  "\"; valid keys: " + join({valid.begin(), valid.end()}));
+                  "\"; valid keys: " + join(indexed_keys_collapsed(valid)));
   }
   TrajectoryRequest request;
   for (const auto& spec : specs) {

@@ -114,8 +114,37 @@ void apply_override(toml::table& scene, const std::string& assignment) {
   if (key == "t_end" || key == "points") scene.erase("times");
 }
 
+/// Refuses, before any value is read, a scene whose sweeps make more than kMaxSweepPoints rows:
+/// the product over every swept key (lists and ranges), not each key alone.
+void check_row_count(const toml::table& table, const std::vector<ParameterSpec>& specs) {
+  double rows = 1;
+  std::string keys, factors;
+  for (const auto& spec : specs) {
+    const auto* node = table.get(spec.name);
+    if (node == nullptr || spec.kind == ParameterSpec::Kind::choice) continue;
+    double count = 1;
+    if (const auto* array = node->as_array()) count = static_cast<double>(array->size());
+    if (const auto* range = node->as_table())
+      if (const auto* points = range->get("points"); points != nullptr && points->is_integer())
+        count = std::max<double>(1, static_cast<double>(points->as_integer()->get()));
+    if (count <= 1) continue;
+    rows *= count;
+    keys += (keys.empty() ? "" : ", ") + spec.name;
+    factors += (factors.empty() ? "" : " x ") + std::to_string(static_cast<long long>(count));
+  }
+  if (rows > static_cast<double>(kMaxSweepPoints)) {
+    char total[32];
+    std::snprintf(total, sizeof total, "%.3g", rows);
+    throw error(keys + ": the sweep makes " + total + " rows (" + factors + "); at most " +
+                std::to_string(kMaxSweepPoints) + " rows per table");
+  }
+}
+
 }  // namespace
 
+/// Mixtures: the [[species]] tables become mass_k, diameter_k, fraction_k (k from 1) and the
+/// integer `species`; a restitution matrix `alpha = [[…], …]` becomes alpha_i_j (i ≤ j). Keys
+/// given explicitly (e.g. --set mass_2=…) win over the tables.
 void flatten_mixture(toml::table& scene) {
   const toml::node* node = scene.get("species");
   if (node == nullptr) return;
@@ -193,32 +222,6 @@ std::vector<std::string> indexed_keys_collapsed(const std::set<std::string>& key
     if (std::find(out.begin(), out.end(), base) == out.end()) out.push_back(base);
   }
   return out;
-}
-
-/// Refuses, before any value is read, a scene whose sweeps make more than kMaxSweepPoints rows:
-/// the product over every swept key (lists and ranges), not each key alone.
-void check_row_count(const toml::table& table, const std::vector<ParameterSpec>& specs) {
-  double rows = 1;
-  std::string keys, factors;
-  for (const auto& spec : specs) {
-    const auto* node = table.get(spec.name);
-    if (node == nullptr || spec.kind == ParameterSpec::Kind::choice) continue;
-    double count = 1;
-    if (const auto* array = node->as_array()) count = static_cast<double>(array->size());
-    if (const auto* range = node->as_table())
-      if (const auto* points = range->get("points"); points != nullptr && points->is_integer())
-        count = std::max<double>(1, static_cast<double>(points->as_integer()->get()));
-    if (count <= 1) continue;
-    rows *= count;
-    keys += (keys.empty() ? "" : ", ") + spec.name;
-    factors += (factors.empty() ? "" : " x ") + std::to_string(static_cast<long long>(count));
-  }
-  if (rows > static_cast<double>(kMaxSweepPoints)) {
-    char total[32];
-    std::snprintf(total, sizeof total, "%.3g", rows);
-    throw error(keys + ": the sweep makes " + total + " rows (" + factors + "); at most " +
-                std::to_string(kMaxSweepPoints) + " rows per table");
-  }
 }
 
 toml::table parse_scene_text(const std::string& text, const std::string& source) {

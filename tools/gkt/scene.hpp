@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,10 +43,12 @@ toml::table parse_scene_text(const std::string& text, const std::string& source)
 /// Applies `overrides` ("key=value", value in TOML syntax) to a scene table, as `--set` does.
 void apply_overrides(toml::table& scene, const std::vector<std::string>& overrides);
 
-/// Mixtures: the [[species]] tables become mass_k, diameter_k, fraction_k (k from 1) and the
-/// integer `species`; a restitution matrix `alpha = [[…], …]` becomes alpha_i_j (i ≤ j). Keys
-/// given explicitly (e.g. --set mass_2=…) win over the tables.
+/// Mixtures: turns the [[species]] tables into mass_k, diameter_k, fraction_k (k from 1) and the
+/// integer `species`, and a restitution matrix into alpha_i_j (i ≤ j); keys given explicitly win.
 void flatten_mixture(toml::table& scene);
+
+/// Returns the keys with their species/pair indices collapsed (mass_1 … mass_4 become mass_i).
+std::vector<std::string> indexed_keys_collapsed(const std::set<std::string>& keys);
 
 /// Returns the exact value of a numeric TOML node; throws "<key>: must be a number …".
 Rational scene_number(const toml::node& node, const std::string& key);

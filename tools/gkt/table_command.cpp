@@ -86,6 +86,7 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
     const Rational tolerance = *request.tolerance;
     request.tolerance.reset();
     request.order = common;
+    request.row_tolerance = tolerance;
     auto flags = values;
     values = model.evaluate(parameters, scene.coefficients, request);
     for (std::size_t k = 0; k < values.size(); ++k) values[k].converged = flags[k].converged;

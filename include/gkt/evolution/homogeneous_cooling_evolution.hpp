@@ -64,10 +64,13 @@ EvolutionResult evolve_viscoelastic_cooling(const class ViscoelasticHierarchy& h
 
 /// Returns the trajectory from T/T0 = temperature0 and cumulants initial_a (a_2 … a_K; missing
 /// ones 0) at the increasing positive `times`, with CVODE tolerances rtol (relative) and atol
-/// (absolute). Throws std::invalid_argument on bad input, EvolutionFailure (an invalid_argument) if
-/// CVODE stops early, std::runtime_error if CVODE cannot even be set up.
+/// (absolute). `chi` ≥ 1 is the Enskog contact value of a dense gas: its homogeneous collision
+/// operator is χ times Boltzmann's (theory.md (15.1)), so every rate and the reported ζ* = χ ζ*_dilute
+/// carry χ while τ stays in units of the dilute initial mean free time (theory.md §12.4). Throws
+/// std::invalid_argument on bad input, EvolutionFailure (an invalid_argument) if CVODE stops early,
+/// std::runtime_error if CVODE cannot even be set up.
 EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
                                            const std::vector<double>& initial_a, const std::vector<double>& times,
-                                           double rtol, double atol);
+                                           double rtol, double atol, double chi = 1);
 
 }  // namespace gkt

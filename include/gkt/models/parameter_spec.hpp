@@ -49,6 +49,10 @@ struct ParameterPoint {
 struct OrderRequest {
   int order = 1;
   std::optional<Rational> tolerance;
+  /// Set with `order` when that order was chosen by a tolerance scan (the second pass of a `gkt table`
+  /// row): values whose accuracy the Sonine order does not govern — a mixture's HCS cumulant order
+  /// (theory.md §16.3) — still meet this tolerance. Other models ignore it.
+  std::optional<Rational> row_tolerance = std::nullopt;
 };
 
 /// Returns the spec named `name` in `schema`; throws std::logic_error if the schema has none (a

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -278,6 +280,182 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
   out.solved =
       fixed_point && std::isfinite(out.cooling_rate) && spread <= 1e-12 * std::max(1.0, std::abs(out.cooling_rate));
   return out;
+}
+
+namespace {
+
+/// The pair moments Δ^p_ij at the widths θ_i, θ_j (exact, or from MixtureCoolingDynamics' interpolants).
+using PairMoments = std::function<PairCumulantMoments(std::size_t, std::size_t, double, double)>;
+
+/// mixture_cooling_rates with the pair moments from `moments`.
+MixtureCoolingRates cooling_rates(const Mixture& mixture, std::span<const double> temperature_ratio,
+                                  const std::vector<std::vector<double>>& cumulants, MixtureHcsScheme scheme,
+                                  const PairMoments& moments) {
+  const std::size_t s = mixture.size();
+  const int d = mixture.dimension;
+  if (temperature_ratio.size() != s)
+    throw std::invalid_argument("temperature_ratio: one ratio per species (" + std::to_string(s) + "), got " +
+                                std::to_string(temperature_ratio.size()));
+  for (const double g : temperature_ratio)
+    if (!(g > 0) || !std::isfinite(g))
+      throw std::invalid_argument("temperature_ratio: must be finite numbers > 0, got " + std::to_string(g));
+  const bool maxwellian = scheme == MixtureHcsScheme::maxwellian;
+  const int K = maxwellian ? 2 : static_cast<int>(cumulants.empty() ? 0 : cumulants[0].size()) - 1;
+  if (!maxwellian && (cumulants.size() != s || K < 2 || K > 6))
+    throw std::invalid_argument("cumulants: a_0 … a_K (K in [2, 6]) for each of the " + std::to_string(s) + " species");
+  if (!maxwellian)
+    for (const auto& c : cumulants)
+      if (static_cast<int>(c.size()) != K + 1)
+        throw std::invalid_argument("cumulants: every species carries a_0 … a_K with the same K");
+  const bool products = scheme == MixtureHcsScheme::nonlinear;
+  const std::vector<double> chi = mixture.contact_values();
+  MixtureCoolingRates out;
+  out.cooling_rate.assign(s, 0.0);
+  out.cumulant_rate.assign(s, std::vector<double>(static_cast<std::size_t>(K) + 1, 0.0));
+  // ζ_i^M of (16.4) (the Maxwellian scheme's rates, and the a-free part of the others).
+  std::vector<double> zeta_m(s);
+  species_cooling_rates(mixture, temperature_ratio, chi, zeta_m);
+  if (maxwellian) {
+    out.cooling_rate = zeta_m;
+    for (std::size_t i = 0; i < s; ++i)
+      out.mixture_cooling_rate += mixture.species[i].fraction * temperature_ratio[i] * zeta_m[i];
+    return out;
+  }
+  const double lam = lambda(d);
+  std::vector<double> th(s), c(s * s), correction(s * s, 0.0);
+  for (std::size_t i = 0; i < s; ++i) th[i] = theta(mixture, i, temperature_ratio[i]);
+  std::vector<PairCumulantMoments> pm(s * s);
+  auto coefficient = [&](std::size_t i, int k) {
+    return k < 2 ? (k == 0 ? 1.0 : 0.0) : cumulants[i][static_cast<std::size_t>(k)];
+  };
+  auto kept = [&](int k, int l) { return k != 1 && l != 1 && (products || k == 0 || l == 0); };
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t j = 0; j < s; ++j) {
+      const std::size_t P = i * s + j;
+      c[P] = pair_weight(mixture, chi, i, j, th[i], th[j]);
+      pm[P] = moments(i, j, th[i], th[j]);
+      for (int k = 0; k <= K; ++k)
+        for (int l = 0; l <= K; ++l)
+          if (kept(k, l) && (k != 0 || l != 0)) correction[P] += coefficient(i, k) * coefficient(j, l) * pm[P](1, k, l);
+    }
+  // ζ_i(a) as the HCS solver's equal-rate conditions take it: (16.6) with the scheme's a-terms.
+  species_cooling_rates(mixture, temperature_ratio, chi, out.cooling_rate, correction);
+  const CumulantOverlaps ov = cumulant_overlaps(d, K);
+  for (std::size_t i = 0; i < s; ++i) {
+    const double zeta = out.cooling_rate[i];
+    out.mixture_cooling_rate += mixture.species[i].fraction * temperature_ratio[i] * zeta;
+    // d⟨X^p⟩_i/dτ = Σ_{k≤p} ⟨X^p S_k⟩ da_k,i/dτ = R_p, the residual of (16.8) (p ζ_i⟨X^p⟩_i + Λ B^p_i with
+    // the scheme's products): triangular in k.
+    std::vector<double>& rate = out.cumulant_rate[i];
+    for (int p = 2; p <= K; ++p) {
+      const auto P = static_cast<std::size_t>(p);
+      double xp = ov.moment[P], bp = 0;
+      for (int k = 2; k <= p; ++k) xp += coefficient(i, k) * ov.overlap[P][static_cast<std::size_t>(k)];
+      for (std::size_t j = 0; j < s; ++j)
+        for (int k = 0; k <= K; ++k)
+          for (int l = 0; l <= K; ++l)
+            if (kept(k, l)) bp += c[i * s + j] * pm[i * s + j](p, k, l) * coefficient(i, k) * coefficient(j, l);
+      const double zeta_x = products ? zeta : zeta_m[i], x_zeta = products ? xp : ov.moment[P];
+      double residual = p * (zeta_x * xp + (zeta - zeta_x) * x_zeta) + lam * bp;
+      for (int k = 2; k < p; ++k)
+        residual -= ov.overlap[P][static_cast<std::size_t>(k)] * rate[static_cast<std::size_t>(k)];
+      rate[P] = residual / ov.overlap[P][P];
+    }
+  }
+  return out;
+}
+
+/// Chebyshev–Lobatto interpolation of a pair's moments in u = ln(θ_i/θ_j) on [lo, hi].
+struct PairMomentInterpolant {
+  double lo = 0, hi = 0;
+  std::vector<PairCumulantMoments> nodes;  // at u_k = mid + half cos(kπ/n), k = 0 … n
+  [[nodiscard]] bool covers(double u) const { return u >= lo && u <= hi; }
+  [[nodiscard]] PairCumulantMoments operator()(double u) const {
+    const std::size_t n = nodes.size() - 1;
+    const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    PairCumulantMoments out{nodes[0].k_max, std::vector<double>(nodes[0].values.size(), 0.0)};
+    double norm = 0;
+    for (std::size_t k = 0; k <= n; ++k) {
+      const double x = mid + half * std::cos(std::numbers::pi * static_cast<double>(k) / static_cast<double>(n));
+      if (u == x) return nodes[k];
+      const double w = ((k % 2 == 0) ? 1.0 : -1.0) * ((k == 0 || k == n) ? 0.5 : 1.0) / (u - x);
+      norm += w;
+      for (std::size_t q = 0; q < out.values.size(); ++q) out.values[q] += w * nodes[k].values[q];
+    }
+    for (double& v : out.values) v /= norm;
+    return out;
+  }
+};
+
+}  // namespace
+
+MixtureCoolingRates mixture_cooling_rates(const Mixture& mixture, std::span<const double> temperature_ratio,
+                                          const std::vector<std::vector<double>>& cumulants, MixtureHcsScheme scheme) {
+  const int K = cumulants.empty() ? 2 : static_cast<int>(cumulants[0].size()) - 1;
+  return cooling_rates(mixture, temperature_ratio, cumulants, scheme,
+                       [&](std::size_t i, std::size_t j, double theta_i, double theta_j) {
+                         return pair_cumulant_moments(mixture, i, j, theta_i, theta_j, std::max(K, 2));
+                       });
+}
+
+struct MixtureCoolingDynamics::Tables {
+  std::vector<PairMomentInterpolant> pairs;  // i·s + j
+};
+
+MixtureCoolingDynamics::MixtureCoolingDynamics(const Mixture& mixture, MixtureHcsScheme scheme, int hcs_order,
+                                               std::span<const double> log_ratio_low,
+                                               std::span<const double> log_ratio_high)
+    : mixture_(mixture), scheme_(scheme), k_max_(hcs_order) {
+  mixture_.validate();
+  if (hcs_order < 2 || hcs_order > 6)
+    throw std::invalid_argument("hcs_order: must be an integer in [2, 6], got " + std::to_string(hcs_order));
+  const std::size_t s = mixture_.size();
+  if (log_ratio_low.size() != s * s || log_ratio_high.size() != s * s)
+    throw std::invalid_argument("temperature_ratio: bounds of ln(T_i/T_j) for every pair");
+  auto tables = std::make_shared<Tables>();
+  tables_ = tables;
+  if (scheme == MixtureHcsScheme::maxwellian) return;  // (16.4) in closed form: nothing to tabulate
+  tables->pairs.resize(s * s);
+  const double mbar = mixture_.mean_mass();
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t j = 0; j < s; ++j) {
+      // u = ln(θ_i/θ_j) = ln(m_i/m_j) − ln(γ_i/γ_j); the same species: u = 0 (one node).
+      const double mass = std::log(mixture_.species[i].mass / mixture_.species[j].mass);
+      PairMomentInterpolant& t = tables->pairs[i * s + j];
+      if (i == j) {
+        t.lo = t.hi = 0;
+        t.nodes.push_back(pair_cumulant_moments(mixture_, i, i, 1.0, 1.0, k_max_));
+        continue;
+      }
+      const double low = std::min(log_ratio_low[i * s + j], log_ratio_high[i * s + j]);
+      const double high = std::max(log_ratio_low[i * s + j], log_ratio_high[i * s + j]);
+      // A margin of 0.05 + 20 % of the span; the moments are analytic in u (their nearest
+      // singularities at Im u = ±π, θ_i/θ_j = −1), so n ∝ half-width nodes give round-off accuracy.
+      const double margin = 0.05 + 0.2 * (high - low);
+      t.lo = mass - high - margin;
+      t.hi = mass - low + margin;
+      const double half = 0.5 * (t.hi - t.lo);
+      const auto n = static_cast<std::size_t>(std::min(96.0, 16 + std::ceil(16 * half)));
+      for (std::size_t k = 0; k <= n; ++k) {
+        const double u =
+            0.5 * (t.lo + t.hi) + half * std::cos(std::numbers::pi * static_cast<double>(k) / static_cast<double>(n));
+        const double theta_j = mixture_.species[j].mass / mbar;  // γ_j = 1
+        t.nodes.push_back(pair_cumulant_moments(mixture_, i, j, theta_j * std::exp(u), theta_j, k_max_));
+      }
+    }
+}
+
+MixtureCoolingRates MixtureCoolingDynamics::rates(std::span<const double> temperature_ratio,
+                                                  const std::vector<std::vector<double>>& cumulants) const {
+  const std::size_t s = mixture_.size();
+  return cooling_rates(mixture_, temperature_ratio, cumulants, scheme_,
+                       [&](std::size_t i, std::size_t j, double theta_i, double theta_j) {
+                         const PairMomentInterpolant& t = tables_->pairs[i * s + j];
+                         if (i == j) return t.nodes.front();
+                         const double u = std::log(theta_i / theta_j);
+                         // Outside the tabulated range: the exact moments (slower, never wrong).
+                         return t.covers(u) ? t(u) : pair_cumulant_moments(mixture_, i, j, theta_i, theta_j, k_max_);
+                       });
 }
 
 MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureCoolingState& state) {

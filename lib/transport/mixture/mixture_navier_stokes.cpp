@@ -473,11 +473,22 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order) const 
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j)
       out.pressure_diffusion[i] += mass_[i] * mass_[j] * fraction_[j] * out.mutual_diffusion[i * s + j];
-  // L_ij = −m_i × the number flux of species i per F_j, reduced by m̄ n D0/T (18.14).
+  // D^F_ij = −m_i × the number flux of species i per F_j, reduced by m̄ n D0/T (18.14).
   out.mobility.assign(s * s, 0.0);
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j)
       out.mobility[i * s + j] = -mass_[i] * number_flux(modes.force[j], i) * temperature / d0;
+  // GDH's Σ_i L_ij: q ∋ −Σ_j L_j F_j, the kinetic heat flux (17.10) of the force mode plus, dense, its
+  // collisional transfer (18.9) (the f0 ∂f0 part has no force term), reduced by κ0 (18.15).
+  out.heat_mobility.assign(s, 0.0);
+  for (std::size_t j = 0; j < s; ++j) {
+    const Eigen::VectorXd& e = modes.force[j];
+    double heat = 0;
+    for (std::size_t i = 0; i < s; ++i)
+      heat += 0.5 * mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(e.segment(static_cast<Eigen::Index>(i) * n, n)) / d;
+    if (dense_) heat += collisional_heat(e);
+    out.heat_mobility[j] = -heat / kappa0;
+  }
 
   species_drift(order, self, cross, out);
 

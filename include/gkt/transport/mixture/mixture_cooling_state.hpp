@@ -3,6 +3,7 @@
 // approximation with the cumulants a2,i, linear or nonlinear in them (docs/theory.md §16).
 #pragma once
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -46,6 +47,41 @@ struct MixtureCoolingState {
 /// (16.8)); ignored by the Maxwellian scheme.
 MixtureCoolingState mixture_cooling_state(const Mixture& mixture,
                                           MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian, int sonine_order = 2);
+
+/// The rates of change of a freely cooling mixture away from its HCS, per ν0(T) (theory.md §16.7).
+struct MixtureCoolingRates {
+  std::vector<double> cooling_rate;                ///< ζ_i* = −(d ln T_i/dt)/ν0(T) of every species
+  double mixture_cooling_rate = 0;                 ///< ζ* = −(d ln T/dt)/ν0(T) = Σ_i x_i γ_i ζ_i*
+  std::vector<std::vector<double>> cumulant_rate;  ///< (d a_k,i/dt)/ν0(T) at [i][k], k = 0 … K (0 for k < 2)
+};
+
+/// Returns the rates of a homogeneous mixture at temperature ratios γ_i = T_i/T (Σ x_i γ_i = 1) with
+/// cumulants a_k,i (`cumulants[i][k]`, k = 0 … K, K ∈ [2, 6]; ignored by the Maxwellian scheme):
+/// the X^p balances (16.8) without the HCS condition, ⟨X^p⟩_i(a) changing as p ζ_i⟨X^p⟩_i + Λ B^p_i
+/// (the scheme's products kept or dropped as in mixture_cooling_state, so that its HCS is the rest
+/// point), and ζ_i* of (16.6). Throws std::invalid_argument naming the field on bad input.
+MixtureCoolingRates mixture_cooling_rates(const Mixture& mixture, std::span<const double> temperature_ratio,
+                                          const std::vector<std::vector<double>>& cumulants, MixtureHcsScheme scheme);
+
+/// mixture_cooling_rates for one mixture, scheme and K along a trajectory: the pair moments are
+/// computed exactly once at Chebyshev nodes in u = ln(θ_i/θ_j) and interpolated (to round-off), on
+/// the range the trajectory is expected to visit — ln(γ_i/γ_j) between log_ratio_low[i·s + j] and
+/// log_ratio_high[i·s + j], with a margin; outside it the exact moments are computed (theory.md §16.7).
+class MixtureCoolingDynamics {
+ public:
+  MixtureCoolingDynamics(const Mixture& mixture, MixtureHcsScheme scheme, int hcs_order,
+                         std::span<const double> log_ratio_low, std::span<const double> log_ratio_high);
+  /// Returns mixture_cooling_rates(mixture, temperature_ratio, cumulants, scheme) (a_0 … a_K per species).
+  [[nodiscard]] MixtureCoolingRates rates(std::span<const double> temperature_ratio,
+                                          const std::vector<std::vector<double>>& cumulants) const;
+
+ private:
+  struct Tables;  // the interpolants (mixture_cooling_state.cpp)
+  Mixture mixture_;
+  MixtureHcsScheme scheme_;
+  int k_max_;
+  std::shared_ptr<const Tables> tables_;
+};
 
 /// How the Maxwellian HCS of a mixture responds to the partial densities at fixed T.
 struct MixtureCoolingSensitivity {

@@ -23,9 +23,12 @@ struct MixtureTransportValues {
   /// D_ij* at i·s + j: j_i = −Σ_j (m_i m_j n_j/ρ) D_ij ∇ln n_j − ρ D^T_i ∇ln T (theory.md (17.1)).
   std::vector<double> mutual_diffusion;
   std::vector<double> thermal_diffusion;  ///< D^T_i*
-  /// L_ij* = L_ij T/(m̄ n D0) at i·s + j: j_i ∋ −Σ_j L_ij F_j for external forces F_j on the particles
-  /// of species j ([garzo2007mixture]; theory.md (18.14)).
+  /// D^F_ij* = D^F_ij T/(m̄ n D0) at i·s + j: j_i ∋ −Σ_j D^F_ij F_j for external forces F_j on the
+  /// particles of species j (GDH's D^F_ij, [garzo2007mixture]; theory.md (18.14)).
   std::vector<double> mobility;
+  /// L_j* = L_j/κ0 (species from 0): q ∋ −Σ_j L_j F_j, the heat flux per external force on species j, GDH's
+  /// Σ_i L_ij ([garzo2007mixture]; theory.md (18.15)); −D''_j* in the dilute elastic gas.
+  std::vector<double> heat_mobility;
   std::vector<double> pressure_diffusion;  ///< D^p_i* = Σ_j m_i m_j n_j D_ij/ρ² (j_i ∋ −ρ D^p_i ∇ln p; (17.8))
   std::vector<double> dufour;              ///< D''_j*: q = −λ∇T − T² Σ_j D''_j ∇ln n_j
   /// Per-particle drift of species i relative to u, w_i = j_i/(m_i n_i) = D0 Σ_j drift[i·s + j] ∇ln n_j +
