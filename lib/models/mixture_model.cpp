@@ -229,7 +229,7 @@ class MixtureModel final : public TransportModel {
       throw std::invalid_argument("coefficients: " + name +
                                   " is computed for the dilute gas only (packing_fraction = 0)");
     const std::size_t h = 1 - k;
-    const Tracer tracer{m.dimension, m.species[k].mass / m.species[h].mass,
+    const Tracer tracer{m.dimension, ExactValue(m.species[k].mass.exact() / m.species[h].mass.exact()),
                         m.species[k].diameter / m.species[h].diameter, m.restitution(k, h), m.restitution(h, h)};
     // Built for the order asked (+2 for the estimate); a tolerance scan rebuilds it larger as it goes.
     std::optional<TracerDiffusion> diffusion;
@@ -378,7 +378,7 @@ class MixtureModel final : public TransportModel {
       for (const char* field : {"mass", "diameter", "fraction"})
         if (!p.given(index_name(field, i)))
           throw std::invalid_argument("species[" + std::to_string(i) + "]." + field + ": required");
-      sp.mass = p.number(index_name("mass", i)).to_double();
+      sp.mass = ExactValue(p.number(index_name("mass", i)));
       sp.diameter = p.number(index_name("diameter", i)).to_double();
       sp.fraction = p.number(index_name("fraction", i)).to_double();
       m.species.push_back(sp);
