@@ -36,7 +36,7 @@ ParameterSpec choice(const std::string& name, std::vector<std::string> choices, 
 
 std::vector<ParameterSpec> aggregation_evolution_parameters() {
   return {integer("dimension", Rational(2), Rational(3), Rational(3), "spatial dimension"),
-          number("alpha", Rational(0), false, Rational(1), Rational(1), "normal restitution of rebounding collisions"),
+          restitution_spec("alpha", "normal restitution of rebounding collisions"),
           number("critical_energy", Rational(0), true, kMaxScale, Rational(1),
                  "critical energy theta*/theta0 of two monomers; theta*_ij = theta*_11 mu_ij/mu_11"),
           choice("criterion", {"relative-speed", "normal-impact", "always"}, "when a collision sticks"),

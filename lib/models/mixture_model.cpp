@@ -68,15 +68,7 @@ class MixtureModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     std::vector<ParameterSpec> p{
-        {"dimension",
-         ParameterSpec::Kind::integer,
-         Rational(2),
-         Rational(3),
-         true,
-         true,
-         Rational(3),
-         "spatial dimension",
-         {}},
+        detail::dimension_spec(),
         {"species",
          ParameterSpec::Kind::integer,
          Rational(2),
@@ -88,8 +80,7 @@ class MixtureModel final : public TransportModel {
          {}},
         real("packing_fraction", Rational(0), true, max_packing_fraction(2), false, Rational(0),
              "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
-        real("alpha", Rational(0), false, Rational(1), true, Rational(1),
-             "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
+        detail::restitution_spec("alpha", "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
         real("reduced_gravity", Rational(-1000000L), true, Rational(1000000L), true, Rational(0),
              "g* = rho g/(n dT/dz) of the segregation criterion thermal_diffusion_factor_i "
              "(dp/dz = -rho g)"),
@@ -113,8 +104,7 @@ class MixtureModel final : public TransportModel {
     }
     for (int i = 1; i <= kMaxSpecies; ++i)
       for (int j = i; j <= kMaxSpecies; ++j)
-        p.push_back(real(index_name("alpha", i, j), Rational(0), false, Rational(1), true, Rational(1),
-                         "restitution coefficient of the pair (i, j)"));
+        p.push_back(detail::restitution_spec(index_name("alpha", i, j), "restitution coefficient of the pair (i, j)"));
     return p;
   }
   /// At a fixed dimension the packing fraction is limited to that dimension's range.

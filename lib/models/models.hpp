@@ -34,6 +34,11 @@ std::vector<ParameterSpec> aggregation_evolution_parameters();
 Trajectory aggregation_trajectory(const TrajectoryRequest& request);
 std::unique_ptr<TransportModel> make_rough_walton_model();
 
+/// Returns the spec of `dimension`: an integer in [2, 3], default 3, described as `description`.
+ParameterSpec dimension_spec(std::string description = "spatial dimension");
+/// Returns the spec of a restitution coefficient `name`: a number in (0, 1], default 1.
+ParameterSpec restitution_spec(std::string name, std::string description);
+
 /// Returns `model` behind a guard that validates every call against the model's schema first
 /// (validated_model.cpp): the registry hands out only guarded models.
 std::unique_ptr<TransportModel> validated(std::unique_ptr<TransportModel> model);
