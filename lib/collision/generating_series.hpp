@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "collision/ring.hpp"
@@ -111,6 +112,59 @@ struct GeneratingSeries {
   }
 };
 
+/// Returns the Taylor coefficients f_m, 0 ≤ m_v ≤ box_v (index order of GeneratingSeries, k0
+/// slowest), of the f with f_0 = 1 and Π·Ef = f·Qc (theory.md (3.2)–(3.3)):
+/// |m| f_m = Σ_{e≠0} (Qc_e − |m−e| Π_e) f_{m−e}. `pi` has constant term 1; the constant term of
+/// `qc` (an Euler derivative: none) is ignored. Exact in the ring.
+template <class Ring>
+std::vector<Ring> euler_recurrence(const SmallPolynomial<Ring>& pi, const SmallPolynomial<Ring>& qc,
+                                   const Exponents& box) {
+  struct RecurrenceTerm {
+    Exponents e;
+    Ring q, p;
+  };
+  std::vector<RecurrenceTerm> rec;
+  for (const auto& term : pi.terms)
+    if (term.e != Exponents{}) rec.push_back({term.e, Ring(0L), term.c});
+  for (const auto& term : qc.terms) {
+    bool merged = false;
+    for (auto& r : rec)
+      if (r.e == term.e) {
+        r.q = term.c;
+        merged = true;
+      }
+    if (!merged && term.e != Exponents{}) rec.push_back({term.e, term.c, Ring(0L)});
+  }
+  auto index = [&](int k0, int k1, int k2, int k3) {
+    return ((static_cast<std::size_t>(k0) * (box[1] + 1) + k1) * (box[2] + 1) + k2) * (box[3] + 1) + k3;
+  };
+  std::size_t size = 1;
+  for (int v = 0; v < kVariables; ++v) size *= static_cast<std::size_t>(box[v] + 1);
+  std::vector<Ring> f(size, Ring(0L)), weighted(size, Ring(0L));  // f_m and |m| f_m
+  f[0] = Ring(1L);
+  // Lexicographic order: every m − e (e ≥ 0, e ≠ 0) comes before m.
+  for (int k0 = 0; k0 <= box[0]; ++k0)
+    for (int k1 = 0; k1 <= box[1]; ++k1)
+      for (int k2 = 0; k2 <= box[2]; ++k2)
+        for (int k3 = 0; k3 <= box[3]; ++k3) {
+          const int degree = k0 + k1 + k2 + k3;
+          if (degree == 0) continue;
+          Ring acc(0L);
+          for (const auto& r : rec) {
+            const int j0 = k0 - r.e[0], j1 = k1 - r.e[1], j2 = k2 - r.e[2], j3 = k3 - r.e[3];
+            if (j0 < 0 || j1 < 0 || j2 < 0 || j3 < 0) continue;
+            const std::size_t src = index(j0, j1, j2, j3);
+            if (!r.q.is_zero()) acc.add_product(r.q, f[src]);
+            if (!r.p.is_zero()) acc.sub_product(r.p, weighted[src]);
+          }
+          const std::size_t dst = index(k0, k1, k2, k3);
+          weighted[dst] = acc;
+          divide(acc, Rational(degree));
+          f[dst] = std::move(acc);
+        }
+  return f;
+}
+
 /// Returns the Taylor coefficients of J(Q0 + Σ x_v Q_v)/J(Q0) in the box (exact in Ring).
 template <class Ring>
 GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& pair, const Ring& alpha,
@@ -171,48 +225,7 @@ GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& p
   const auto pi = a * n1 * n2;
   const auto qc = ra * (a.euler() * n1 * n2) - r1 * (a * n1.euler() * n2) - r2 * (a * n1 * n2.euler());
 
-  struct RecurrenceTerm {
-    Exponents e;
-    Ring q, p;
-  };
-  std::vector<RecurrenceTerm> rec;
-  for (const auto& term : pi.terms)
-    if (term.e != Exponents{}) rec.push_back({term.e, Ring(0L), term.c});
-  for (const auto& term : qc.terms) {
-    bool merged = false;
-    for (auto& r : rec)
-      if (r.e == term.e) {
-        r.q = term.c;
-        merged = true;
-      }
-    if (!merged) rec.push_back({term.e, term.c, Ring(0L)});
-  }
-
-  std::size_t size = 1;
-  for (int v = 0; v < kVariables; ++v) size *= static_cast<std::size_t>(box[v] + 1);
-  out.coefficients.assign(size, Ring(0L));
-  std::vector<Ring> weighted(size, Ring(0L));  // |m| f_m
-  out.coefficients[0] = Ring(1L);
-  // Lexicographic order: every m − e (e ≥ 0, e ≠ 0) comes before m.
-  for (int k0 = 0; k0 <= box[0]; ++k0)
-    for (int k1 = 0; k1 <= box[1]; ++k1)
-      for (int k2 = 0; k2 <= box[2]; ++k2)
-        for (int k3 = 0; k3 <= box[3]; ++k3) {
-          const int degree = k0 + k1 + k2 + k3;
-          if (degree == 0) continue;
-          Ring acc(0L);
-          for (const auto& r : rec) {
-            const int j0 = k0 - r.e[0], j1 = k1 - r.e[1], j2 = k2 - r.e[2], j3 = k3 - r.e[3];
-            if (j0 < 0 || j1 < 0 || j2 < 0 || j3 < 0) continue;
-            const std::size_t src = out.index(j0, j1, j2, j3);
-            if (!r.q.is_zero()) acc.add_product(r.q, out.coefficients[src]);
-            if (!r.p.is_zero()) acc.sub_product(r.p, weighted[src]);
-          }
-          const std::size_t dst = out.index(k0, k1, k2, k3);
-          weighted[dst] = acc;
-          divide(acc, Rational(degree));
-          out.coefficients[dst] = std::move(acc);
-        }
+  out.coefficients = euler_recurrence(pi, qc, box);
   return out;
 }
 
