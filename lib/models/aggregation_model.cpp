@@ -54,24 +54,8 @@ class AggregationModel final : public TransportModel {
                  "[-8/(d(d+2)), 4/(d+2)]"),
             real("packing_fraction", Rational(0), true, Rational(7, 10), Rational(0),
                  "packing fraction: chi(phi) of the default pair correlation multiplies every rate"),
-            {"criterion",
-             ParameterSpec::Kind::choice,
-             Rational(0),
-             Rational(0),
-             true,
-             true,
-             Rational(0),
-             "when a collision sticks",
-             {"relative-speed", "normal-impact", "always"}},
-            {"kernel",
-             ParameterSpec::Kind::choice,
-             Rational(0),
-             Rational(0),
-             true,
-             true,
-             Rational(0),
-             "aggregation kernel",
-             {"kinetic", "constant", "sum"}}};
+            choice_spec("criterion", "when a collision sticks", {"relative-speed", "normal-impact", "always"}),
+            choice_spec("kernel", "aggregation kernel", {"kinetic", "constant", "sum"})};
   }
   [[nodiscard]] int max_order() const override { return 1; }
   [[nodiscard]] bool supports(Capability capability) const override {

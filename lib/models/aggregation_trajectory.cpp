@@ -28,8 +28,7 @@ ParameterSpec integer(const std::string& name, Rational lo, Rational hi, Rationa
 }
 
 ParameterSpec choice(const std::string& name, std::vector<std::string> choices, const std::string& description) {
-  return {name,        ParameterSpec::Kind::choice, Rational(0), Rational(0), true, true, Rational(0),
-          description, std::move(choices)};
+  return choice_spec(name, description, std::move(choices));
 }
 
 }  // namespace

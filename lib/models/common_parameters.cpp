@@ -15,4 +15,9 @@ ParameterSpec restitution_spec(std::string name, std::string description) {
           Rational(1),     std::move(description),    {}};
 }
 
+ParameterSpec choice_spec(std::string name, std::string description, std::vector<std::string> choices) {
+  return {std::move(name), ParameterSpec::Kind::choice, Rational(0),       Rational(0), true, true,
+          Rational(0),     std::move(description),      std::move(choices)};
+}
+
 }  // namespace gkt::detail

@@ -198,16 +198,11 @@ class MixtureModel final : public TransportModel {
   static constexpr int kMaxOrder = 12;
 
   static ParameterSpec hcs_spec() {
-    return {"hcs",
-            ParameterSpec::Kind::choice,
-            Rational(0),
-            Rational(0),
-            true,
-            true,
-            Rational(0),
-            "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
-            "nonlinear in them) or Maxwellian",
-            {"linear", "nonlinear", "maxwellian"}};
+    return detail::choice_spec(
+        "hcs",
+        "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
+        "nonlinear in them) or Maxwellian",
+        {"linear", "nonlinear", "maxwellian"});
   }
 
   /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the

@@ -38,6 +38,8 @@ std::unique_ptr<TransportModel> make_rough_walton_model();
 ParameterSpec dimension_spec(std::string description = "spatial dimension");
 /// Returns the spec of a restitution coefficient `name`: a number in (0, 1], default 1.
 ParameterSpec restitution_spec(std::string name, std::string description);
+/// Returns the spec of the choice `name` among `choices` (the first is the default).
+ParameterSpec choice_spec(std::string name, std::string description, std::vector<std::string> choices);
 
 /// Returns `model` behind a guard that validates every call against the model's schema first
 /// (validated_model.cpp): the registry hands out only guarded models.

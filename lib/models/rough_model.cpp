@@ -45,15 +45,9 @@ class RoughModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     auto specs = rough_grain_parameters("beta", "tangential restitution coefficient (-1 smooth, +1 perfectly rough)");
-    specs.push_back({"hcs",
-                     ParameterSpec::Kind::choice,
-                     Rational(0),
-                     Rational(0),
-                     true,
-                     true,
-                     Rational(0),
-                     "approximation of the homogeneous cooling state: first Sonine (cumulants linear) or Maxwellian",
-                     {"linear", "maxwellian"}});
+    specs.push_back(choice_spec(
+        "hcs", "approximation of the homogeneous cooling state: first Sonine (cumulants linear) or Maxwellian",
+        {"linear", "maxwellian"}));
     return specs;
   }
   [[nodiscard]] int max_order() const override { return 1; }

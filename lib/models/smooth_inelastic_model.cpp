@@ -105,37 +105,22 @@ class SmoothInelasticModel final : public TransportModel {
     return names;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    return {dimension_spec(),
-            restitution_spec("alpha", "normal restitution coefficient"),
-            {"hcs",
-             ParameterSpec::Kind::choice,
-             Rational(0),
-             Rational(0),
-             true,
-             true,
-             Rational(0),
-             "cumulant scheme of the homogeneous cooling state",
-             {"nonlinear", "linear"}},
-            {"scheme",
-             ParameterSpec::Kind::choice,
-             Rational(0),
-             Rational(0),
-             true,
-             true,
-             Rational(0),
-             "Sonine trial-function weight of the Navier-Stokes coefficients: Maxwellian or HCS",
-             {"standard", "modified"}},
-            {"packing_fraction",
-             ParameterSpec::Kind::real,
-             Rational(0),
-             max_packing_fraction(2),
-             true,
-             true,
-             Rational(0),
-             "packing fraction phi (0 = dilute; Enskog theory above; at most 0.5 in 3D, 0.7 in 2D)",
-             {}},
-            {"pair_correlation", ParameterSpec::Kind::choice, Rational(0), Rational(0), true, true, Rational(0),
-             "contact value chi(phi) of the pair correlation", pair_correlation_names()}};
+    return {
+        dimension_spec(),
+        restitution_spec("alpha", "normal restitution coefficient"),
+        choice_spec("hcs", "cumulant scheme of the homogeneous cooling state", {"nonlinear", "linear"}),
+        choice_spec("scheme", "Sonine trial-function weight of the Navier-Stokes coefficients: Maxwellian or HCS",
+                    {"standard", "modified"}),
+        {"packing_fraction",
+         ParameterSpec::Kind::real,
+         Rational(0),
+         max_packing_fraction(2),
+         true,
+         true,
+         Rational(0),
+         "packing fraction phi (0 = dilute; Enskog theory above; at most 0.5 in 3D, 0.7 in 2D)",
+         {}},
+        choice_spec("pair_correlation", "contact value chi(phi) of the pair correlation", pair_correlation_names())};
   }
   /// At a fixed dimension the packing fraction is limited to that dimension's range.
   [[nodiscard]] std::vector<ParameterSpec> scene_parameters(const ParameterPoint& fixed) const override {
