@@ -308,7 +308,8 @@ contains
     coefficient = out(1)
   end function
 
-  !> Builds the binary's table: masses, diameters, the symmetric restitution matrix alpha(2, 2),
+  !> Builds the binary's table: masses (each converted once to the short rational it rounds, 0.1 -> 1/10,
+  !> as gkt.h says), diameters, the symmetric restitution matrix alpha(2, 2),
   !> Sonine order, nodes in x_1, max_packing_fraction (0: dilute) and packing_nodes in phi.
   function gkt_binary_table_create(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction, &
                                    packing_nodes, table) result(status)

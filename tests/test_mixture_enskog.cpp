@@ -73,7 +73,7 @@ double gdh_bulk_viscosity_pair(const gkt::Mixture& m, const std::vector<double>&
                                std::size_t i, std::size_t j) {
   const int d = m.dimension;
   const std::size_t s = m.size();
-  const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ij = mi / (mi + mj);
+  const double mi = m.species[i].mass.value(), mj = m.species[j].mass.value(), mu_ij = mi / (mi + mj);
   const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter);
   const double g = std::tgamma((d + 1) / 2.0) / std::tgamma(d / 2.0) *
                    std::sqrt(2 * gamma[i] * temperature / mi + 2 * gamma[j] * temperature / mj);
@@ -213,7 +213,7 @@ TEST(MixtureEnskog, BulkViscosityEqualsClosedForms) {
       double kappa = 0, partial = 0;
       for (std::size_t i = 0; i < 2; ++i)
         for (std::size_t j = 0; j < 2; ++j) {
-          const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ji = mj / (mi + mj);
+          const double mi = m.species[i].mass.value(), mj = m.species[j].mass.value(), mu_ji = mj / (mi + mj);
           const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter), a = m.restitution(i, j);
           const double ni = n * m.species[i].fraction, nj = n * m.species[j].fraction;
           kappa += gdh_bulk_viscosity_pair(m, gamma, n, T, i, j);
@@ -314,14 +314,14 @@ TEST(MixtureEnskog, ElasticReciprocity) {
         for (int order : {1, 3}) {
           const auto v = ns.coefficients(order);
           for (std::size_t l = 0; l < 2; ++l) {
-            const double ml = m.species[l].mass, nl = n * m.species[l].fraction;
+            const double ml = m.species[l].mass.value(), nl = n * m.species[l].fraction;
             double lhs = v.dufour[l] * kappa0 / nl, rhs = rho * v.thermal_diffusion[l] * d0 / (ml * nl);
             for (std::size_t i = 0; i < 2; ++i) {
               lhs -= d / 2.0 * ml / rho * v.mutual_diffusion[i * 2 + l] * n * d0;
               for (std::size_t j = 0; j < 2; ++j) {
                 const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter);
                 rhs +=
-                    2 * b2 * rho * v.thermal_diffusion[i] * d0 / m.species[i].mass * std::pow(sigma, d) *
+                    2 * b2 * rho * v.thermal_diffusion[i] * d0 / m.species[i].mass.value() * std::pow(sigma, d) *
                     chi[i * 2 + j] *
                     ((j == l ? 1.0 : 0.0) + 0.5 * m.species[j].fraction * dchi[(i * 2 + j) * 2 + l] / chi[i * 2 + j]);
               }
@@ -492,7 +492,7 @@ TEST(MixtureEnskog, ShearViscosityEqualsGdhFirstSonine) {
         for (std::size_t i = 0; i < 2; ++i) {
           eta += v.shear_viscosity_kinetic[i];
           for (std::size_t j = 0; j < 2; ++j) {
-            const double mi = m.species[i].mass, mj = m.species[j].mass, mu_ij = mi / (mi + mj);
+            const double mi = m.species[i].mass.value(), mj = m.species[j].mass.value(), mu_ij = mi / (mi + mj);
             const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter), a = m.restitution(i, j);
             eta += 2 * b_constant(d, 2) / (d + 2) * mu_ij * (1 + a) * chi[i * 2 + j] * n * m.species[i].fraction *
                        std::pow(sigma, d) * v.shear_viscosity_kinetic[j] +

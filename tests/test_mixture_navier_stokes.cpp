@@ -152,8 +152,8 @@ TEST(MixtureNavierStokes, MassFluxesSumToZero) {
       for (std::size_t j = 0; j < 3; ++j) {
         double sum = 0, big = 0;
         for (std::size_t i = 0; i < 3; ++i) {
-          sum += m.species[i].mass * v.mutual_diffusion[i * 3 + j];
-          big = std::max(big, std::abs(m.species[i].mass * v.mutual_diffusion[i * 3 + j]));
+          sum += m.species[i].mass.value() * v.mutual_diffusion[i * 3 + j];
+          big = std::max(big, std::abs(m.species[i].mass.value() * v.mutual_diffusion[i * 3 + j]));
         }
         EXPECT_LT(std::abs(sum), 1e-13 * big);
       }
@@ -178,7 +178,7 @@ TEST(MixtureNavierStokes, CoolingStateSensitivityEqualsFiniteDifferences) {
       for (double v : n) total += v;
       for (std::size_t k = 0; k < 3; ++k) {
         m.species[k].fraction = n[k] / total;
-        mbar += m.species[k].fraction * m.species[k].mass;
+        mbar += m.species[k].fraction * m.species[k].mass.value();
         sbar += m.species[k].fraction * m.species[k].diameter;
       }
       double sum = 0;  // fractions summing to 1 within 1e-12

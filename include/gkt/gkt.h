@@ -176,7 +176,8 @@ gkt_status gkt_model_evaluate_to_tolerance(gkt_model* model, size_t count, const
 typedef struct gkt_binary_table gkt_binary_table;
 
 /** Builds the table of two species: mass[i] > 0, diameter[i] > 0 (any consistent units; only
- *  ratios enter the reduced values), the restitution matrix alpha[2i + j] (symmetric, each in
+ *  ratios enter the reduced values; each mass is converted once to the short rational it rounds,
+ *  0.1 -> 1/10, as a scene's decimal is read: docs/architecture.md §4), the restitution matrix alpha[2i + j] (symmetric, each in
  *  (0, 1]; row- or column-major alike), Sonine order in [1, 12], nodes in [3, 64] points in x_1
  *  ∈ [0, 1]; max_packing_fraction in [0, 0.5) (3D) or [0, 0.7) (2D), 0 for a dilute table; and
  *  packing_nodes in [3, 64] points in φ (used only when max_packing_fraction > 0). Costs one

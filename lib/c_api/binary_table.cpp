@@ -20,7 +20,7 @@ struct gkt_binary_table {
         dimension(mixture.dimension),
         max_packing_fraction(max_packing) {
     for (std::size_t i = 0; i < 2; ++i) {
-      mass[i] = mixture.species[i].mass;
+      mass[i] = mixture.species[i].mass.value();
       diameter[i] = mixture.species[i].diameter;
       species_volume[i] = gkt::unit_sphere_volume(dimension) * std::pow(diameter[i], dimension);
     }

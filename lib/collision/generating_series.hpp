@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "collision/euler_recurrence.hpp"
@@ -113,6 +114,32 @@ struct GeneratingSeries {
   }
 };
 
+/// Returns the Taylor coefficients f_m, 0 ≤ m_v ≤ box_v (index order of GeneratingSeries, k0
+/// slowest), of the f with f_0 = 1 and Π·Ef = f·Qc (theory.md (3.2)–(3.3)):
+/// |m| f_m = Σ_{e≠0} (Qc_e − |m−e| Π_e) f_{m−e}. `pi` has constant term 1; the constant term of
+/// `qc` (an Euler derivative: none) is ignored. Exact in the ring.
+template <class Ring>
+std::vector<Ring> euler_recurrence(const SmallPolynomial<Ring>& pi, const SmallPolynomial<Ring>& qc,
+                                   const Exponents& box) {
+  struct RecurrenceTerm {
+    Exponents e;
+    Ring q, p;
+  };
+  std::vector<RecurrenceTerm> rec;
+  for (const auto& term : pi.terms)
+    if (term.e != Exponents{}) rec.push_back({term.e, Ring(0L), term.c});
+  for (const auto& term : qc.terms) {
+    bool merged = false;
+    for (auto& r : rec)
+      if (r.e == term.e) {
+        r.q = term.c;
+        merged = true;
+      }
+    if (!merged && term.e != Exponents{}) rec.push_back({term.e, term.c, Ring(0L)});
+  }
+  return solve_euler_recurrence<Ring>(rec, box);
+}
+
 /// Returns the Taylor coefficients of J(Q0 + Σ x_v Q_v)/J(Q0) in the box (exact in Ring).
 template <class Ring>
 GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& pair, const Ring& alpha,
@@ -173,24 +200,7 @@ GeneratingSeries<Ring> expand_gaussian_collision_integral(const CollisionPair& p
   const auto pi = a * n1 * n2;
   const auto qc = ra * (a.euler() * n1 * n2) - r1 * (a * n1.euler() * n2) - r2 * (a * n1 * n2.euler());
 
-  struct RecurrenceTerm {
-    Exponents e;
-    Ring q, p;
-  };
-  std::vector<RecurrenceTerm> rec;
-  for (const auto& term : pi.terms)
-    if (term.e != Exponents{}) rec.push_back({term.e, Ring(0L), term.c});
-  for (const auto& term : qc.terms) {
-    bool merged = false;
-    for (auto& r : rec)
-      if (r.e == term.e) {
-        r.q = term.c;
-        merged = true;
-      }
-    if (!merged) rec.push_back({term.e, term.c, Ring(0L)});
-  }
-
-  out.coefficients = solve_euler_recurrence<Ring>(rec, box);
+  out.coefficients = euler_recurrence(pi, qc, box);
   return out;
 }
 

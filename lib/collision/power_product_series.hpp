@@ -1,7 +1,8 @@
 // Private: exact Taylor coefficients of a product of real powers of polynomials,
 //   f(x) = Π_i p_i(x)^{r_i},   p_i(0) ≠ 0,   x = (x0, …, x3),
-// by the Euler-operator recurrence of docs/theory.md (3.2)–(3.3): with Π = Π_i p_i (normalised
-// to constant term 1) and Qc = Σ_i r_i (E p_i) Π_{j≠i} p_j, Π·Ef = f·Qc gives
+// by the Euler-operator recurrence of docs/theory.md (3.2)–(3.3) (euler_recurrence of
+// generating_series.hpp): with Π = Π_i p_i (normalised to constant term 1) and
+// Qc = Σ_i r_i (E p_i) Π_{j≠i} p_j, Π·Ef = f·Qc gives
 //   |m| f_m = Σ_{e≠0} (Qc_e − |m−e| Π_e) f_{m−e},   f_0 = 1.
 // Every product is truncated to the requested box (terms outside it never feed back).
 // The rough-sphere integral (docs/theory.md §19) has four factors; the smooth engine's three
@@ -60,23 +61,7 @@ std::vector<Ring> expand_power_product(std::vector<PowerFactor<Ring>> factors, c
       if (j != i) term = truncated_product(term, factors[j].polynomial, box);
     qc = qc + term;
   }
-  struct RecurrenceTerm {
-    Exponents e;
-    Ring q, p;
-  };
-  std::vector<RecurrenceTerm> rec;
-  for (const auto& t : pi.terms)
-    if (t.e != Exponents{}) rec.push_back({t.e, Ring(0L), t.c});
-  for (const auto& t : qc.terms) {
-    bool merged = false;
-    for (auto& r : rec)
-      if (r.e == t.e) {
-        r.q = t.c;
-        merged = true;
-      }
-    if (!merged && t.e != Exponents{}) rec.push_back({t.e, t.c, Ring(0L)});
-  }
-  return solve_euler_recurrence<Ring>(rec, box);
+  return euler_recurrence(pi, qc, box);
 }
 
 }  // namespace gkt::detail

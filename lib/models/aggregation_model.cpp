@@ -41,16 +41,8 @@ class AggregationModel final : public TransportModel {
             "sticking_energy", "rebound_energy", "energy_loss"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    return {{"dimension",
-             ParameterSpec::Kind::integer,
-             Rational(2),
-             Rational(3),
-             true,
-             true,
-             Rational(3),
-             "spatial dimension",
-             {}},
-            real("alpha", Rational(0), false, Rational(1), Rational(1), "normal restitution of rebounding collisions"),
+    return {dimension_spec(),
+            restitution_spec("alpha", "normal restitution of rebounding collisions"),
             real("critical_energy", Rational(0), true, Rational(1000000), Rational(1),
                  "critical energy theta*/theta0 of two monomers; theta*_ij = theta*_11 mu_ij/mu_11"),
             size("size_i"),
@@ -62,24 +54,8 @@ class AggregationModel final : public TransportModel {
                  "[-8/(d(d+2)), 4/(d+2)]"),
             real("packing_fraction", Rational(0), true, Rational(7, 10), Rational(0),
                  "packing fraction: chi(phi) of the default pair correlation multiplies every rate"),
-            {"criterion",
-             ParameterSpec::Kind::choice,
-             Rational(0),
-             Rational(0),
-             true,
-             true,
-             Rational(0),
-             "when a collision sticks",
-             {"relative-speed", "normal-impact", "always"}},
-            {"kernel",
-             ParameterSpec::Kind::choice,
-             Rational(0),
-             Rational(0),
-             true,
-             true,
-             Rational(0),
-             "aggregation kernel",
-             {"kinetic", "constant", "sum"}}};
+            choice_spec("criterion", "when a collision sticks", {"relative-speed", "normal-impact", "always"}),
+            choice_spec("kernel", "aggregation kernel", {"kinetic", "constant", "sum"})};
   }
   [[nodiscard]] int max_order() const override { return 1; }
   [[nodiscard]] bool supports(Capability capability) const override {

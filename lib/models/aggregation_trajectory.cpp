@@ -28,15 +28,14 @@ ParameterSpec integer(const std::string& name, Rational lo, Rational hi, Rationa
 }
 
 ParameterSpec choice(const std::string& name, std::vector<std::string> choices, const std::string& description) {
-  return {name,        ParameterSpec::Kind::choice, Rational(0), Rational(0), true, true, Rational(0),
-          description, std::move(choices)};
+  return choice_spec(name, description, std::move(choices));
 }
 
 }  // namespace
 
 std::vector<ParameterSpec> aggregation_evolution_parameters() {
   return {integer("dimension", Rational(2), Rational(3), Rational(3), "spatial dimension"),
-          number("alpha", Rational(0), false, Rational(1), Rational(1), "normal restitution of rebounding collisions"),
+          restitution_spec("alpha", "normal restitution of rebounding collisions"),
           number("critical_energy", Rational(0), true, kMaxScale, Rational(1),
                  "critical energy theta*/theta0 of two monomers; theta*_ij = theta*_11 mu_ij/mu_11"),
           choice("criterion", {"relative-speed", "normal-impact", "always"}, "when a collision sticks"),

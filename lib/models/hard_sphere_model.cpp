@@ -18,17 +18,7 @@ class HardSphereModel final : public TransportModel {
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     return {"shear_viscosity", "thermal_conductivity", "self_diffusion"};
   }
-  [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    return {{"dimension",
-             ParameterSpec::Kind::integer,
-             Rational(2),
-             Rational(3),
-             true,
-             true,
-             Rational(3),
-             "spatial dimension",
-             {}}};
-  }
+  [[nodiscard]] std::vector<ParameterSpec> parameters() const override { return {dimension_spec()}; }
   [[nodiscard]] int max_order() const override { return kHardSphereMaxOrder; }
 
   [[nodiscard]] bool supports(Capability capability) const override {

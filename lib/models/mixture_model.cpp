@@ -70,15 +70,7 @@ class MixtureModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     std::vector<ParameterSpec> p{
-        {"dimension",
-         ParameterSpec::Kind::integer,
-         Rational(2),
-         Rational(3),
-         true,
-         true,
-         Rational(3),
-         "spatial dimension",
-         {}},
+        detail::dimension_spec(),
         {"species",
          ParameterSpec::Kind::integer,
          Rational(2),
@@ -90,8 +82,7 @@ class MixtureModel final : public TransportModel {
          {}},
         real("packing_fraction", Rational(0), true, max_packing_fraction(2), false, Rational(0),
              "packing fraction phi (below 0.5 in 3D, 0.7 in 2D)"),
-        real("alpha", Rational(0), false, Rational(1), true, Rational(1),
-             "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
+        detail::restitution_spec("alpha", "restitution coefficient of every pair (alpha_i_j overrides one pair)"),
         real("reduced_gravity", Rational(-1000000L), true, Rational(1000000L), true, Rational(0),
              "g* = rho g/(n dT/dz) of the segregation criterion thermal_diffusion_factor_i "
              "(dp/dz = -rho g)"),
@@ -115,8 +106,7 @@ class MixtureModel final : public TransportModel {
     }
     for (int i = 1; i <= kMaxSpecies; ++i)
       for (int j = i; j <= kMaxSpecies; ++j)
-        p.push_back(real(index_name("alpha", i, j), Rational(0), false, Rational(1), true, Rational(1),
-                         "restitution coefficient of the pair (i, j)"));
+        p.push_back(detail::restitution_spec(index_name("alpha", i, j), "restitution coefficient of the pair (i, j)"));
     return p;
   }
   /// At a fixed dimension the packing fraction is limited to that dimension's range.
@@ -310,16 +300,11 @@ class MixtureModel final : public TransportModel {
   static constexpr int kMaxOrder = 12;
 
   static ParameterSpec hcs_spec() {
-    return {"hcs",
-            ParameterSpec::Kind::choice,
-            Rational(0),
-            Rational(0),
-            true,
-            true,
-            Rational(0),
-            "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
-            "nonlinear in them) or Maxwellian",
-            {"linear", "nonlinear", "maxwellian"}};
+    return detail::choice_spec(
+        "hcs",
+        "species distributions of the homogeneous cooling state: first Sonine (a2 of each species, linear or "
+        "nonlinear in them) or Maxwellian",
+        {"linear", "nonlinear", "maxwellian"});
   }
 
   /// One HCS value of a tolerance scan: ζ* (species < 0), T_i/T (cumulant 0) or a_q,i (species from 0).
@@ -372,7 +357,7 @@ class MixtureModel final : public TransportModel {
       throw std::invalid_argument("coefficients: " + name +
                                   " is computed for the dilute gas only (packing_fraction = 0)");
     const std::size_t h = 1 - k;
-    const Tracer tracer{m.dimension, m.species[k].mass / m.species[h].mass,
+    const Tracer tracer{m.dimension, ExactValue(m.species[k].mass.exact() / m.species[h].mass.exact()),
                         m.species[k].diameter / m.species[h].diameter, m.restitution(k, h), m.restitution(h, h)};
     // Built for the order asked (+2 for the estimate); a tolerance scan rebuilds it larger as it goes.
     std::optional<TracerDiffusion> diffusion;
@@ -534,7 +519,7 @@ class MixtureModel final : public TransportModel {
       for (const char* field : {"mass", "diameter", "fraction"})
         if (!p.given(index_name(field, i)))
           throw std::invalid_argument("species[" + std::to_string(i) + "]." + field + ": required");
-      sp.mass = p.number(index_name("mass", i)).to_double();
+      sp.mass = ExactValue(p.number(index_name("mass", i)));
       sp.diameter = p.number(index_name("diameter", i)).to_double();
       sp.fraction = p.number(index_name("fraction", i)).to_double();
       m.species.push_back(sp);

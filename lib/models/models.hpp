@@ -49,6 +49,13 @@ Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, con
 RoughCoolingState linear_rough_state(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa);
 std::unique_ptr<TransportModel> make_uniform_shear_model();
 
+/// Returns the spec of `dimension`: an integer in [2, 3], default 3, described as `description`.
+ParameterSpec dimension_spec(std::string description = "spatial dimension");
+/// Returns the spec of a restitution coefficient `name`: a number in (0, 1], default 1.
+ParameterSpec restitution_spec(std::string name, std::string description);
+/// Returns the spec of the choice `name` among `choices` (the first is the default).
+ParameterSpec choice_spec(std::string name, std::string description, std::vector<std::string> choices);
+
 /// Returns `model` behind a guard that validates every call against the model's schema first
 /// (validated_model.cpp): the registry hands out only guarded models.
 std::unique_ptr<TransportModel> validated(std::unique_ptr<TransportModel> model);

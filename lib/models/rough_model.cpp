@@ -14,6 +14,7 @@
 #include "gkt/transport/rough/rough_shear_viscosity.hpp"
 #include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 #include "models/models.hpp"
+#include "models/rough_parameters.hpp"
 
 namespace gkt::detail {
 
@@ -43,52 +44,13 @@ class RoughModel final : public TransportModel {
             "orientation_correlation"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    return {{"dimension",
-             ParameterSpec::Kind::integer,
-             Rational(2),
-             Rational(3),
-             true,
-             true,
-             Rational(3),
-             "spatial dimension (3: spheres, three rotational degrees of freedom; 2: disks, one)",
-             {}},
-            {"alpha",
-             ParameterSpec::Kind::real,
-             Rational(0),
-             Rational(1),
-             false,
-             true,
-             Rational(1),
-             "normal restitution coefficient",
-             {}},
-            {"beta",
-             ParameterSpec::Kind::real,
-             Rational(-1),
-             Rational(1),
-             true,
-             true,
-             Rational(1),
-             "tangential restitution coefficient (-1 smooth, +1 perfectly rough)",
-             {}},
-            {"moment_of_inertia",
-             ParameterSpec::Kind::real,
-             Rational(0),
-             Rational(1),
-             false,
-             true,
-             Rational(2, 5),
-             "reduced moment of inertia kappa = 4I/(m sigma^2) (2/5 uniform spheres, 1/2 uniform disks)",
-             {}},
-            {"hcs",
-             ParameterSpec::Kind::choice,
-             Rational(0),
-             Rational(0),
-             true,
-             true,
-             Rational(0),
-             "approximation of the homogeneous cooling state: first Sonine (cumulants linear), Maxwellian, or first "
-             "Sonine falling back to Maxwellian (cumulants nan) where the linear scheme has no root",
-             {"linear", "maxwellian", "linear-or-maxwellian"}}};
+    auto specs = rough_grain_parameters("beta", "tangential restitution coefficient (-1 smooth, +1 perfectly rough)");
+    specs.push_back(choice_spec("hcs",
+                                "approximation of the homogeneous cooling state: first Sonine (cumulants linear), "
+                                "Maxwellian, or first Sonine falling back to Maxwellian (cumulants nan) where the "
+                                "linear scheme has no root",
+                                {"linear", "maxwellian", "linear-or-maxwellian"}));
+    return specs;
   }
   [[nodiscard]] int max_order() const override { return 1; }
   [[nodiscard]] bool supports(Capability capability) const override {
@@ -105,20 +67,9 @@ class RoughModel final : public TransportModel {
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
     const auto specs = parameters();
-    const Rational dim = point.number("dimension", Rational(3));
-    specs[0].check(dim);
-    const Rational alpha = point.number("alpha", Rational(1));
-    specs[1].check(alpha);
-    const Rational beta = point.number("beta", Rational(1));
-    specs[2].check(beta);
-    const Rational kappa = point.number("moment_of_inertia", Rational(2, 5));
-    specs[3].check(kappa);
-    const std::string scheme = point.choice("hcs", "linear");
-    specs[4].check(scheme);
-    if (order.tolerance)
-      throw std::invalid_argument("tolerance: the rough model has the first approximation only: use order = 1");
-    if (order.order != 1) throw std::invalid_argument("order: must be exactly 1, got " + std::to_string(order.order));
-    const int d = dim == Rational(2) ? 2 : 3;
+    const auto [d, alpha, beta, kappa] = read_rough_grain(specs, point, "beta");
+    const std::string scheme = SchemaPoint(specs, point).choice("hcs");
+    require_first_approximation(order, "rough");
     RoughCoolingState s;
     if (scheme == "linear") {
       s = linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region (theory.md §19.6)
@@ -164,15 +115,8 @@ class RoughModel final : public TransportModel {
         throw std::invalid_argument("coefficients: unknown coefficient '" + name +
                                     "' for model rough; valid: " + join(coefficient_names()));
       }
-      CoefficientValue v;
-      v.order = 1;
-      v.exact = false;
-      v.error_estimated = false;  // a first approximation: no higher order to estimate from
       // θ = inf at β = −1 (no spin cooling state), NaN where the linear scheme has no root.
-      v.defined = std::isfinite(x);
-      v.converged = v.defined;
-      v.value = v.defined ? Rational::from_double(x) : Rational(0);
-      out.push_back(v);
+      out.push_back(first_approximation(x));
     }
     return out;
   }

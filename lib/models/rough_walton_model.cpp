@@ -8,6 +8,7 @@
 
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "models/models.hpp"
+#include "models/rough_parameters.hpp"
 
 namespace gkt::detail {
 
@@ -32,51 +33,18 @@ class RoughWaltonModel final : public TransportModel {
             "cooling_rate_first_order"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    return {{"dimension",
-             ParameterSpec::Kind::integer,
-             Rational(2),
-             Rational(3),
-             true,
-             true,
-             Rational(3),
-             "spatial dimension (3: spheres, three rotational degrees of freedom; 2: disks, one)",
-             {}},
-            {"alpha",
-             ParameterSpec::Kind::real,
-             Rational(0),
-             Rational(1),
-             false,
-             true,
-             Rational(1),
-             "normal restitution coefficient",
-             {}},
-            {"beta0",
-             ParameterSpec::Kind::real,
-             Rational(-1),
-             Rational(1),
-             true,
-             true,
-             Rational(1),
-             "tangential restitution of sticking collisions (-1 smooth, +1 perfectly rough)",
-             {}},
-            {"moment_of_inertia",
-             ParameterSpec::Kind::real,
-             Rational(0),
-             Rational(1),
-             false,
-             true,
-             Rational(2, 5),
-             "reduced moment of inertia kappa = 4I/(m sigma^2) (2/5 uniform spheres, 1/2 uniform disks)",
-             {}},
-            {"friction",
-             ParameterSpec::Kind::real,
-             Rational(0),
-             Rational(1000000),
-             true,
-             true,
-             Rational(1, 2),
-             "Coulomb friction coefficient mu_f (0: smooth; the model rough is mu_f -> infinity)",
-             {}}};
+    auto specs = rough_grain_parameters(
+        "beta0", "tangential restitution of sticking collisions (-1 smooth, +1 perfectly rough)");
+    specs.push_back({"friction",
+                     ParameterSpec::Kind::real,
+                     Rational(0),
+                     Rational(1000000),
+                     true,
+                     true,
+                     Rational(1, 2),
+                     "Coulomb friction coefficient mu_f (0: smooth; the model rough is mu_f -> infinity)",
+                     {}});
+    return specs;
   }
   [[nodiscard]] int max_order() const override { return 1; }
   [[nodiscard]] bool supports(Capability capability) const override {
@@ -93,20 +61,10 @@ class RoughWaltonModel final : public TransportModel {
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
     const auto specs = parameters();
-    const Rational dim = point.number("dimension", Rational(3));
-    specs[0].check(dim);
-    const Rational alpha = point.number("alpha", Rational(1));
-    specs[1].check(alpha);
-    const Rational beta0 = point.number("beta0", Rational(1));
-    specs[2].check(beta0);
-    const Rational kappa = point.number("moment_of_inertia", Rational(2, 5));
-    specs[3].check(kappa);
-    const Rational friction = point.number("friction", Rational(1, 2));
-    specs[4].check(friction);
-    if (order.tolerance)
-      throw std::invalid_argument("tolerance: the rough-walton model has the first approximation only: use order = 1");
-    if (order.order != 1) throw std::invalid_argument("order: must be exactly 1, got " + std::to_string(order.order));
-    const RoughWaltonState s = rough_walton_cooling_state(dim == Rational(2) ? 2 : 3, alpha, beta0, kappa, friction);
+    const auto [d, alpha, beta0, kappa] = read_rough_grain(specs, point, "beta0");
+    require_first_approximation(order, "rough-walton");
+    const RoughWaltonState s =
+        rough_walton_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"));
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
       double x = 0;
@@ -128,14 +86,7 @@ class RoughWaltonModel final : public TransportModel {
         throw std::invalid_argument("coefficients: unknown coefficient '" + name +
                                     "' for model rough-walton; valid: " + join(coefficient_names()));
       }
-      CoefficientValue v;
-      v.order = 1;
-      v.exact = false;
-      v.error_estimated = false;  // a first approximation
-      v.defined = std::isfinite(x);
-      v.converged = v.defined;
-      v.value = v.defined ? Rational::from_double(x) : Rational(0);
-      out.push_back(v);
+      out.push_back(first_approximation(x));
     }
     return out;
   }

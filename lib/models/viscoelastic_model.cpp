@@ -176,15 +176,7 @@ class ViscoelasticModel final : public TransportModel {
   }
 
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
-    std::vector<ParameterSpec> specs{{"dimension",
-                                      ParameterSpec::Kind::integer,
-                                      Rational(2),
-                                      Rational(3),
-                                      true,
-                                      true,
-                                      Rational(3),
-                                      "spatial dimension (viscoelastic spheres: 3)",
-                                      {}},
+    std::vector<ParameterSpec> specs{dimension_spec("spatial dimension (viscoelastic spheres: 3)"),
                                      {"delta",
                                       ParameterSpec::Kind::real,
                                       Rational(0),

@@ -39,8 +39,8 @@ void Mixture::validate() const {
   double sum = 0;
   for (std::size_t i = 0; i < s; ++i) {
     const Species& sp = species[i];
-    if (!(sp.mass > 0) || !std::isfinite(sp.mass))
-      throw std::invalid_argument(species_field("mass", i) + ": must be a number > 0, got " + number(sp.mass));
+    if (!(sp.mass.value() > 0) || !std::isfinite(sp.mass.value()))
+      throw std::invalid_argument(species_field("mass", i) + ": must be a number > 0, got " + number(sp.mass.value()));
     if (!(sp.diameter > 0) || !std::isfinite(sp.diameter))
       throw std::invalid_argument(species_field("diameter", i) + ": must be a number > 0, got " + number(sp.diameter));
     if (!(sp.fraction >= 0 && sp.fraction <= 1))  // 0: a tracer (the limit x_i → 0)
@@ -69,7 +69,7 @@ void Mixture::validate() const {
 
 double Mixture::mean_mass() const {
   double m = 0;
-  for (const auto& sp : species) m += sp.fraction * sp.mass;
+  for (const auto& sp : species) m += sp.fraction * sp.mass.value();
   return m;
 }
 

@@ -10,9 +10,9 @@
 
 #include <Eigen/Dense>
 
+#include "algebra/nearby_rational.hpp"
 #include "gkt/algebra/sonine.hpp"
 #include "gkt/collision/collision_moments.hpp"
-#include "transport/common/nearby_rational.hpp"
 
 namespace gkt {
 
@@ -22,7 +22,9 @@ namespace {
 double lambda(int d) { return (d + 2) * std::sqrt(2.0) / 8.0; }
 
 /// Returns θ_i = m_i/(m̄ γ_i), the Maxwellian width in units of √(2T/m̄).
-double theta(const Mixture& m, std::size_t i, double gamma) { return m.species[i].mass / (m.mean_mass() * gamma); }
+double theta(const Mixture& m, std::size_t i, double gamma) {
+  return m.species[i].mass.value() / (m.mean_mass() * gamma);
+}
 
 /// c_ij = x_j χ_ij (σ_ij/σ̄)^{d−1} √(1/θ_i + 1/θ_j).
 double pair_weight(const Mixture& m, std::span<const double> chi, std::size_t i, std::size_t j, double theta_i,
@@ -92,9 +94,9 @@ struct PairCumulantMoments {
 PairCumulantMoments pair_cumulant_moments(const Mixture& m, std::size_t i, std::size_t j, double theta_i,
                                           double theta_j, int k_max) {
   const int d = m.dimension;
-  // The moments depend on the mass and width ratios only: m_j = θ_j = 1 and short rationals for the
-  // ratios (theory.md §16.3).
-  const CollisionPair pair{d, detail::nearby_rational(m.species[i].mass / m.species[j].mass), Rational(1),
+  // The moments depend on the mass and width ratios only: m_j = θ_j = 1, the exact mass ratio and a
+  // short rational for the computed width ratio (theory.md §16.3).
+  const CollisionPair pair{d, m.species[i].mass.exact() / m.species[j].mass.exact(), Rational(1),
                            detail::nearby_rational(theta_i / theta_j), Rational(1)};
   const auto e = scalar_collision_moments<Rational>(pair, Rational::from_double(m.restitution(i, j)), k_max);
   const auto sk = sonine_table(sonine_twice_m(d, 0), k_max);
@@ -152,7 +154,7 @@ void species_cooling_rates(const Mixture& mixture, std::span<const double> tempe
     double sum = 0;
     for (std::size_t j = 0; j < s; ++j) {
       const double theta_j = theta(mixture, j, temperature_ratio[j]);
-      const double mu_ji = mixture.species[j].mass / (a.mass + mixture.species[j].mass);
+      const double mu_ji = mixture.species[j].mass.value() / (a.mass.value() + mixture.species[j].mass.value());
       double change = pair_energy_change(mu_ji, mixture.restitution(i, j), theta_i / theta_j);
       if (!correction.empty()) change += correction[i * s + j];
       sum += pair_weight(mixture, chi, i, j, theta_i, theta_j) * change;
@@ -420,7 +422,7 @@ MixtureCoolingDynamics::MixtureCoolingDynamics(const Mixture& mixture, MixtureHc
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j) {
       // u = ln(θ_i/θ_j) = ln(m_i/m_j) − ln(γ_i/γ_j); the same species: u = 0 (one node).
-      const double mass = std::log(mixture_.species[i].mass / mixture_.species[j].mass);
+      const double mass = std::log(mixture_.species[i].mass.value() / mixture_.species[j].mass.value());
       PairMomentInterpolant& t = tables->pairs[i * s + j];
       if (i == j) {
         t.lo = t.hi = 0;
@@ -439,7 +441,7 @@ MixtureCoolingDynamics::MixtureCoolingDynamics(const Mixture& mixture, MixtureHc
       for (std::size_t k = 0; k <= n; ++k) {
         const double u =
             0.5 * (t.lo + t.hi) + half * std::cos(std::numbers::pi * static_cast<double>(k) / static_cast<double>(n));
-        const double theta_j = mixture_.species[j].mass / mbar;  // γ_j = 1
+        const double theta_j = mixture_.species[j].mass.value() / mbar;  // γ_j = 1
         t.nodes.push_back(pair_cumulant_moments(mixture_, i, j, theta_j * std::exp(u), theta_j, k_max_));
       }
     }
@@ -470,7 +472,7 @@ MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, co
   const std::vector<double>& g = state.temperature_ratio;
   std::vector<double> m(s), x(s);
   for (std::size_t k = 0; k < s; ++k) {
-    m[k] = mixture.species[k].mass / mbar;
+    m[k] = mixture.species[k].mass.value() / mbar;
     x[k] = mixture.species[k].fraction;
   }
   // dF(i, k) = ∂ζ_i/∂γ_k, dn(i, j) = ∂ζ_i/∂n_j; ζ(i) the rates (all equal).

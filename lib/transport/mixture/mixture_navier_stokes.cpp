@@ -9,11 +9,11 @@
 
 #include <Eigen/Dense>
 
+#include "algebra/nearby_rational.hpp"
 #include "gkt/collision/collision_moments.hpp"
 #include "gkt/operators/mixture_collisional_transfer.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "transport/common/galerkin_pieces.hpp"
-#include "transport/common/nearby_rational.hpp"
 
 namespace gkt {
 
@@ -136,7 +136,7 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order)
   // n σ̄^d σ_ij/σ̄ (theory.md (18.3)).
   double diameter_moment = 0;
   for (std::size_t k = 0; k < s_; ++k) {
-    mass_.push_back(mixture.species[k].mass / mixture.mean_mass());
+    mass_.push_back(mixture.species[k].mass.value() / mixture.mean_mass());
     theta_.push_back(mass_[k] / state_.temperature_ratio[k]);
     fraction_.push_back(mixture.species[k].fraction);
     diameter_moment += fraction_[k] * std::pow(mixture.species[k].diameter / mixture.mean_diameter(), d);
@@ -155,11 +155,12 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order)
   for (std::size_t i = 0; i < s_; ++i)
     for (std::size_t j = 0; j < s_; ++j) {
       // The moments depend on the mass ratio and the width ratio only: the pair is built with
-      // m_j = θ_j = 1. The vector mode's cross moments need √(θ_i/θ_j) rational; it and m_i/m_j are
-      // continued-fraction convergents with denominators ≤ 2^26 within 1e-12 relative (else the
-      // exact double): 3 times faster than 53-bit dyadic rationals (docs/performance.md).
+      // m_j = θ_j = 1. m_i/m_j is exact (the species carry their masses exactly). The vector mode's
+      // cross moments need √(θ_i/θ_j) rational: the computed double becomes the continued-fraction
+      // convergent with denominator ≤ 2^26 within 1e-12 relative (else the exact double), 3 times
+      // faster than 53-bit dyadic rationals (docs/performance.md).
       const Rational r = detail::nearby_rational(std::sqrt(theta_[i] / theta_[j]), 1L << 26);
-      const Rational mass_ratio = detail::nearby_rational(mass_[i] / mass_[j], 1L << 26);
+      const Rational mass_ratio = mixture.species[i].mass.exact() / mixture.species[j].mass.exact();
       const CollisionPair pair{d, mass_ratio, Rational(1), r * r, Rational(1)};
       const Rational alpha = Rational::from_double(mixture.restitution(i, j));
       const double sigma = 0.5 * (mixture.species[i].diameter + mixture.species[j].diameter) / mixture.mean_diameter();

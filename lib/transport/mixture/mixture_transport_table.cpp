@@ -112,7 +112,7 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   species.packing_fraction = 0;
   species.validate();
   for (std::size_t i = 0; i < 2; ++i) {
-    mass_[i] = mixture.species[i].mass;
+    mass_[i] = mixture.species[i].mass.value();
     diameter_[i] = mixture.species[i].diameter;
     species_volume_[i] = unit_sphere_volume(dimension_) * std::pow(diameter_[i], dimension_);
   }

@@ -28,7 +28,8 @@ Mixture as_mixture(const Tracer& t) {
 void Tracer::validate() const {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
-  if (!(mass_ratio > 0) || !std::isfinite(mass_ratio)) throw std::invalid_argument("mass_ratio: must be a number > 0");
+  if (!(mass_ratio.value() > 0) || !std::isfinite(mass_ratio.value()))
+    throw std::invalid_argument("mass_ratio: must be a number > 0");
   if (!(diameter_ratio > 0) || !std::isfinite(diameter_ratio))
     throw std::invalid_argument("diameter_ratio: must be a number > 0");
   detail::require_restitution(alpha_tracer, "alpha_tracer");
@@ -41,11 +42,10 @@ TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order) : max_orde
   const MixtureCoolingState hcs = mixture_cooling_state(as_mixture(tracer));
   const int d = tracer.dimension;
   gamma_ = hcs.temperature_ratio[0];
-  theta0_ = tracer.mass_ratio / gamma_;  // θ = m/(2T) in units of the host's √(2T/m)
+  theta0_ = tracer.mass_ratio.value() / gamma_;  // θ = m/(2T) in units of the host's √(2T/m)
   // [garzo2004tracer]; (16.8)–(16.9): M(p, q) = ζ̂ D(p, q) + w L(p, q) in units of n σ^{d−1} √(2T/m), with L the
   // Boltzmann–Lorentz operator (loss − gain, normalised by J0) in the tracer's basis c S_p.
-  const CollisionPair pair{d, Rational::from_double(tracer.mass_ratio), Rational(1), Rational::from_double(theta0_),
-                           Rational(1)};
+  const CollisionPair pair{d, tracer.mass_ratio.exact(), Rational(1), Rational::from_double(theta0_), Rational(1)};
   const Rational alpha = Rational::from_double(tracer.alpha_tracer);
   const int n = max_order - 1;
   const auto gain = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1_post, 1, n);

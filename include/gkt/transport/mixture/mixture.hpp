@@ -7,11 +7,15 @@
 #include <string>
 #include <vector>
 
+#include "gkt/algebra/exact_value.hpp"
+
 namespace gkt {
 
-/// One component. Mass and diameter are in any consistent unit (only ratios enter).
+/// One component. Mass and diameter are in any consistent unit (only ratios enter). The mass reaches
+/// the engine exactly (its ratios m_i/m_j are exact rationals there): give it as a Rational (the
+/// scene's decimal) or as a double, which ExactValue converts once (0.1 → 1/10; docs/architecture.md §4).
 struct Species {
-  double mass = 1;
+  ExactValue mass = 1.0;
   double diameter = 1;
   double fraction = 1;  ///< mole fraction x_i = n_i/n; 0 is a tracer (the limit x_i → 0)
   std::string name;     ///< optional label

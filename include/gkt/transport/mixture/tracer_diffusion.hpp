@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "gkt/algebra/exact_value.hpp"
 #include "gkt/transport/common/sonine_solution.hpp"
 
 namespace gkt {
@@ -12,10 +13,10 @@ namespace gkt {
 /// A tracer species 0 in a one-component host gas (mass m, diameter σ, restitution α_hh).
 struct Tracer {
   int dimension = 3;
-  double mass_ratio = 1;      ///< m0/m
-  double diameter_ratio = 1;  ///< σ0/σ
-  double alpha_tracer = 1;    ///< α_0h, tracer–host restitution
-  double alpha_host = 1;      ///< α_hh, host–host restitution
+  ExactValue mass_ratio = 1.0;  ///< m0/m, exact in the engine (a double is converted once: ExactValue)
+  double diameter_ratio = 1;    ///< σ0/σ
+  double alpha_tracer = 1;      ///< α_0h, tracer–host restitution
+  double alpha_host = 1;        ///< α_hh, host–host restitution
 
   /// Throws std::invalid_argument naming the field for d ∉ {2, 3}, ratios ≤ 0, α outside (0, 1].
   void validate() const;

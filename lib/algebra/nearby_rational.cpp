@@ -1,4 +1,4 @@
-#include "transport/common/nearby_rational.hpp"
+#include "algebra/nearby_rational.hpp"
 
 #include <cmath>
 
@@ -11,8 +11,11 @@ Rational nearby_rational(double x, long max_denominator) {
     const double a = std::floor(rest);
     if (a > 1e15) break;
     const auto ai = static_cast<long>(a);
-    const long p2 = ai * p1 + p0, q2 = ai * q1 + q0;
+    // a ≤ 1e15 and q1 ≤ max_denominator: q2 cannot overflow; p2 can for a large x (stop there).
+    const long q2 = ai * q1 + q0;
     if (q2 > max_denominator) break;
+    long p2 = 0;
+    if (__builtin_mul_overflow(ai, p1, &p2) || __builtin_add_overflow(p2, p0, &p2)) break;
     p0 = p1, q0 = q1, p1 = p2, q1 = q2;
     const double frac = rest - a;
     if (frac < 1e-300 || std::abs(static_cast<double>(p1) / static_cast<double>(q1) - x) <= 1e-17 * x) break;

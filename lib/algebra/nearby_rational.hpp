@@ -1,4 +1,4 @@
-// Private: short exact rationals for the engine's pair parameters (mass and width ratios).
+// Private: short exact rationals for doubles — a caller's number (ExactValue) or a computed width ratio.
 #pragma once
 
 #include "gkt/algebra/rational.hpp"

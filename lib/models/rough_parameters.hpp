@@ -1,0 +1,36 @@
+// Private: what the two rough-sphere adapters ("rough", "rough-walton") share — the keys of a rough
+// grain (dimension, α, a tangential restitution, κ), reading them from a point, the first-order-only
+// request and the first-approximation value (docs/theory.md §19).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "models/models.hpp"
+
+namespace gkt::detail {
+
+/// Returns the schema dimension, alpha, `tangential`, moment_of_inertia (in this order): d ∈ {2, 3}
+/// (default 3), α ∈ (0, 1] (default 1), `tangential` ∈ [−1, 1] (default 1, described as
+/// `tangential_description`), κ = 4I/(mσ²) ∈ (0, 1] (default 2/5).
+std::vector<ParameterSpec> rough_grain_parameters(const std::string& tangential,
+                                                  const std::string& tangential_description);
+
+/// The rough grain of a validated point (absent keys take the schema's defaults).
+struct RoughGrain {
+  int dimension = 3;
+  Rational alpha, tangential, moment_of_inertia;
+};
+/// Returns the grain of `point` read by name through `schema`, the tangential restitution from key `tangential`.
+RoughGrain read_rough_grain(const std::vector<ParameterSpec>& schema, const ParameterPoint& point,
+                            const std::string& tangential);
+
+/// Throws std::invalid_argument unless `order` asks for order = 1 (the rough models have the first
+/// approximation only); `model` names the model in the message.
+void require_first_approximation(const OrderRequest& order, const std::string& model);
+
+/// Returns x as a first approximation: order 1, no error estimate, undefined (and not converged)
+/// where x is not finite (θ = inf where the spin decouples, NaN where a scheme has no root).
+CoefficientValue first_approximation(double x);
+
+}  // namespace gkt::detail
