@@ -15,8 +15,9 @@
 
 /// A binary's table and what the C layer needs to check states against it.
 struct gkt_binary_table {
-  gkt_binary_table(const gkt::Mixture& mixture, int order, int nodes, double max_packing, int packing_nodes)
-      : table(mixture, order, nodes, max_packing, packing_nodes),
+  gkt_binary_table(const gkt::Mixture& mixture, int order, int nodes, double max_packing, int packing_nodes,
+                   double tolerance)
+      : table(mixture, order, nodes, max_packing, packing_nodes, tolerance),
         dimension(mixture.dimension),
         max_packing_fraction(max_packing) {
     for (std::size_t i = 0; i < 2; ++i) {
@@ -98,9 +99,10 @@ using gkt::c_api::require_pointer;
 
 extern "C" {
 
-gkt_status gkt_binary_table_create(int dimension, const double mass[2], const double diameter[2], const double alpha[4],
-                                   int order, int nodes, double max_packing_fraction, int packing_nodes,
-                                   gkt_binary_table** out) {
+gkt_status gkt_binary_table_create_to_tolerance(int dimension, const double mass[2], const double diameter[2],
+                                                const double alpha[4], int order, int nodes,
+                                                double max_packing_fraction, int packing_nodes, double tolerance,
+                                                gkt_binary_table** out) {
   return guarded([&] {
     require_pointer(out, "out");
     require_pointer(mass, "mass");
@@ -125,10 +127,17 @@ gkt_status gkt_binary_table_create(int dimension, const double mass[2], const do
     gkt::Mixture mixture = gkt::make_mixture(dimension, species, 1.0);
     mixture.alpha.assign(alpha, alpha + 4);
     mixture.validate();
-    auto t = std::make_unique<gkt_binary_table>(mixture, order, nodes, max_packing_fraction, packing_nodes);
+    auto t = std::make_unique<gkt_binary_table>(mixture, order, nodes, max_packing_fraction, packing_nodes, tolerance);
     *out = t.release();
     return GKT_OK;
   });
+}
+
+gkt_status gkt_binary_table_create(int dimension, const double mass[2], const double diameter[2], const double alpha[4],
+                                   int order, int nodes, double max_packing_fraction, int packing_nodes,
+                                   gkt_binary_table** out) {
+  return gkt_binary_table_create_to_tolerance(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction,
+                                              packing_nodes, 1e-3, out);
 }
 
 void gkt_binary_table_destroy(gkt_binary_table* table) { std::unique_ptr<gkt_binary_table> owned(table); }
@@ -138,6 +147,19 @@ gkt_status gkt_binary_table_interpolation_error(const gkt_binary_table* table, d
     require_pointer(table, "table");
     require_pointer(out, "out");
     *out = table->table.interpolation_error();
+    return GKT_OK;
+  });
+}
+
+gkt_status gkt_binary_table_build_cost(const gkt_binary_table* table, int* intervals, int* solves, double* seconds) {
+  return guarded([&] {
+    require_pointer(table, "table");
+    require_pointer(intervals, "intervals");
+    require_pointer(solves, "solves");
+    require_pointer(seconds, "seconds");
+    *intervals = table->table.intervals();
+    *solves = table->table.build_solves();
+    *seconds = table->table.build_seconds();
     return GKT_OK;
   });
 }

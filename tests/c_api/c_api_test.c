@@ -215,6 +215,21 @@ static void binary_table(void) {
 
   CHECK(gkt_binary_table_create(3, mass, diameter, alpha, 1, 16, 0.0, 3, &table) == GKT_OK && table != NULL);
   CHECK(gkt_binary_table_interpolation_error(table, &error) == GKT_OK && error >= 0 && error < 1e-6);
+  {
+    /* One interval of 16 nodes: 16 nodes, 15 midpoints and 8 validation points solved. */
+    int intervals = -1, solves = -1;
+    double seconds = -1;
+    CHECK(gkt_binary_table_build_cost(table, &intervals, &solves, &seconds) == GKT_OK);
+    CHECK(intervals == 1 && solves == 16 + 15 + 8 && seconds > 0);
+    EXPECT_ERROR(gkt_binary_table_build_cost(table, &intervals, NULL, &seconds), GKT_INVALID_ARGUMENT,
+                 "solves: must not be NULL");
+  }
+  {
+    gkt_binary_table* refused = NULL;
+    EXPECT_ERROR(gkt_binary_table_create_to_tolerance(3, mass, diameter, alpha, 1, 16, 0.0, 3, 0.0, &refused),
+                 GKT_INVALID_ARGUMENT, "tolerance: must be a number in (0, 1], got 0");
+    CHECK(refused == NULL);
+  }
 
   /* Physical against reduced × the reference gas of (m̄, σ̄), written out here. */
   x1 = 0.3, n = 0.02, t = 2.5;
