@@ -37,6 +37,12 @@ std::string short_number(double x, int digits = 3) {
   throw std::invalid_argument(std::string(name) + ": must be " + range + ", got " + short_number(value));
 }
 
+/// Throws "fraction_1: must be a number in [low, high] (the table's range), got x".
+[[noreturn, gnu::cold, gnu::noinline]] void refuse_fraction(double x, double low, double high) {
+  throw std::invalid_argument("fraction_1: must be a number in [" + short_number(low, 6) + ", " +
+                              short_number(high, 6) + "] (the table's fraction_range), got " + short_number(x));
+}
+
 }  // namespace
 
 BinaryTransportTable::Reduced BinaryTransportTable::solve(const Mixture& mixture, int order) {
@@ -121,8 +127,8 @@ constexpr double kMinWidth = 1.0 / 4096;  // the narrowest piece the build split
 }  // namespace
 
 BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, int nodes, double max_packing_fraction,
-                                           int packing_nodes, double tolerance)
-    : dimension_(mixture.dimension), max_packing_(max_packing_fraction) {
+                                           int packing_nodes, double tolerance, std::array<double, 2> fraction_range)
+    : dimension_(mixture.dimension), max_packing_(max_packing_fraction), fraction_range_(fraction_range) {
   const auto started = std::chrono::steady_clock::now();
   if (mixture.size() != 2) throw std::invalid_argument("species: the transport table is for binaries (2 species)");
   if (nodes < 3 || nodes > kMaxNodes)
@@ -136,6 +142,9 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
                                 ") for dimension = " + std::to_string(mixture.dimension));
   if (!(tolerance > 0 && tolerance <= 1))
     throw std::invalid_argument("tolerance: must be a number in (0, 1], got " + short_number(tolerance));
+  if (!(fraction_range[0] >= 0 && fraction_range[0] < fraction_range[1] && fraction_range[1] <= 1))
+    throw std::invalid_argument("fraction_range: must be [x_low, x_high] with 0 <= x_low < x_high <= 1, got [" +
+                                short_number(fraction_range[0], 6) + ", " + short_number(fraction_range[1], 6) + "]");
   Mixture species = mixture;  // what the table keeps: dimension, masses, diameters, α
   species.species[0].fraction = species.species[1].fraction = 0.5;
   species.packing_fraction = 0;
@@ -180,7 +189,8 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
       }
     return worst;
   };
-  std::vector<Pending> pending{{0.0, 1.0, nodes, max_packing_ > 0 ? packing_nodes : 1, false, INFINITY, 0}};
+  std::vector<Pending> pending{
+      {fraction_range[0], fraction_range[1], nodes, max_packing_ > 0 ? packing_nodes : 1, false, INFINITY, 0}};
   while (!pending.empty()) {
     const Pending p = pending.back();
     pending.pop_back();
@@ -217,11 +227,12 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
       grid += " x " + std::to_string(p.packing_nodes) + " in phi";
       where += ", phi = " + short_number(worst.packing);
     }
-    throw std::invalid_argument("tolerance: the interpolation error " + short_number(worst.error) + " at " + where +
-                                " exceeds the tolerance " + short_number(tolerance) + " on x_1 in [" +
-                                short_number(p.low, 6) + ", " + short_number(p.high, 6) + "] with " + grid +
-                                ", and bisecting no longer helps (the order-" + std::to_string(order) +
-                                " coefficients vary too fast there, e.g. a pole of the truncated solution)");
+    throw std::invalid_argument(
+        "tolerance: the interpolation error " + short_number(worst.error) + " at " + where + " exceeds the tolerance " +
+        short_number(tolerance) + " on x_1 in [" + short_number(p.low, 6) + ", " + short_number(p.high, 6) + "] with " +
+        grid + ", and bisecting no longer helps (the order-" + std::to_string(order) +
+        " coefficients vary too fast there, e.g. a pole of the truncated solution; a fraction_range that "
+        "leaves it out may build)");
   }
   std::sort(pieces_.begin(), pieces_.end(), [](const Piece& l, const Piece& r) {
     return l.fraction_axis.nodes.front() < r.fraction_axis.nodes.front();
@@ -267,7 +278,11 @@ BinaryTransportTable::Reduced BinaryTransportTable::Piece::reduced_at(double x, 
 }
 
 BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double temperature) const {
-  if (!(x1 >= 0 && x1 <= 1)) refuse_state("fraction_1", "a number in [0, 1]", x1, temperature);
+  if (!(x1 >= fraction_range_[0] && x1 <= fraction_range_[1])) {
+    if (fraction_range_[0] == 0 && fraction_range_[1] == 1)
+      refuse_state("fraction_1", "a number in [0, 1]", x1, temperature);
+    refuse_fraction(x1, fraction_range_[0], fraction_range_[1]);
+  }
   if (!(n > 0 && n < INFINITY)) refuse_state("number_density", "a finite number > 0", n, temperature);
   if (!(temperature > 0 && temperature < INFINITY))
     refuse_state("temperature", "a finite number > 0", temperature, temperature);

@@ -50,15 +50,17 @@ class BinaryTransportTable {
   /// outside [0, φ limit), tolerance outside (0, 1]), on a mixture that fails Mixture::validate, and
   /// when bisection no longer helps (a piece narrower than 2^-10 or whose error three successive
   /// bisections did not halve): the one-line message names the error reached, where, and the x_1
-  /// interval (e.g. around a pole of the order-N solution).
+  /// interval (e.g. around a pole of the order-N solution). `fraction_range` [x_low, x_high] ⊆ [0, 1]
+  /// (x_low < x_high) limits the table to those compositions (a table below a pole; evaluate then
+  /// refuses x_1 outside it); bad ranges are refused naming fraction_range.
   BinaryTransportTable(const Mixture& mixture, int order, int nodes = 24, double max_packing_fraction = 0,
-                       int packing_nodes = 12, double tolerance = 1e-3);
+                       int packing_nodes = 12, double tolerance = 1e-3,
+                       std::array<double, 2> fraction_range = {0.0, 1.0});
 
-  /// Returns the coefficients at x_1 ∈ [0, 1], density n > 0 and temperature T > 0 (no allocation);
-  /// every value is nan if φ = n v_d Σ x_i σ_i^d exceeds the table's φ_max (0 for a dilute table,
-  /// which treats any n as dilute). Throws std::invalid_argument naming the argument when x_1, n or
-  /// T is outside its range or not finite, or when the coefficients at (n, T) over- or underflow a
-  /// double.
+  /// Returns the coefficients at x_1 ∈ fraction_range ([0, 1] by default), density n > 0 and temperature T > 0 (no
+  /// allocation); every value is nan if φ = n v_d Σ x_i σ_i^d exceeds the table's φ_max (0 for a dilute table, which
+  /// treats any n as dilute). Throws std::invalid_argument naming the argument when x_1, n or T is outside its range or
+  /// not finite, or when the coefficients at (n, T) over- or underflow a double.
   [[nodiscard]] BinaryTransport evaluate(double fraction_1, double number_density, double temperature) const;
 
   /// Returns the largest |interpolated − solved| of the reduced coefficients, relative to
@@ -74,6 +76,8 @@ class BinaryTransportTable {
   [[nodiscard]] int fraction_nodes() const;
   /// Returns the largest number of nodes in φ of a piece after refinement (1 for a dilute table).
   [[nodiscard]] int packing_nodes() const;
+  /// Returns the compositions [x_low, x_high] the table covers.
+  [[nodiscard]] std::array<double, 2> fraction_range() const { return fraction_range_; }
   /// Returns the number of x_1 subintervals (pieces) the build settled on (1 without bisection).
   [[nodiscard]] int intervals() const { return static_cast<int>(pieces_.size()); }
   /// Returns the number of direct mixture solves the build made (nodes, midpoints, validation).
@@ -104,6 +108,7 @@ class BinaryTransportTable {
   int dimension_;
   std::array<double, 2> mass_{}, diameter_{}, species_volume_{};  // species_volume_: v_d σ_i^d
   double max_packing_ = 0;
+  std::array<double, 2> fraction_range_{0.0, 1.0};
   std::vector<Piece> pieces_;   // ordered in x_1
   std::vector<double> breaks_;  // the pieces' upper ends but the last (evaluate's search)
   double interpolation_error_ = 0, validation_error_ = 0;
