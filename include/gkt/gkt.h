@@ -33,7 +33,8 @@ extern "C" {
 typedef enum gkt_status {
   GKT_OK = 0,               /**< success: every output written */
   GKT_INVALID_ARGUMENT = 1, /**< bad input: an unknown name, a value outside its range, a NULL pointer */
-  GKT_OUT_OF_RANGE = 2,     /**< a valid state that a table does not cover (φ above the table's φ_max) */
+  GKT_OUT_OF_RANGE = 2,     /**< a valid state that a table does not cover (φ above the table's φ_max, x_1 outside
+                                 its fraction_range) */
   GKT_INTERNAL_ERROR = 3    /**< anything else the library reported (out of memory, a bug); see the message */
 } gkt_status;
 
@@ -189,11 +190,14 @@ gkt_status gkt_binary_table_create(int dimension, const double mass[2], const do
                                    gkt_binary_table** out);
 
 /** Builds the table as gkt_binary_table_create, to the interpolation error `tolerance` in (0, 1]
- *  instead of 1e-3 (nodes and packing_nodes are then the starting points per axis and interval). */
+ *  instead of 1e-3 (nodes and packing_nodes are then the starting points per axis and interval),
+ *  over the compositions fraction_range = {x_low, x_high}, 0 <= x_low < x_high <= 1 (NULL: [0, 1];
+ *  e.g. below a pole of the order-N solution that makes the full range refused). Evaluating the
+ *  table at an x_1 in [0, 1] outside that range returns GKT_OUT_OF_RANGE. */
 gkt_status gkt_binary_table_create_to_tolerance(int dimension, const double mass[2], const double diameter[2],
                                                 const double alpha[4], int order, int nodes,
                                                 double max_packing_fraction, int packing_nodes, double tolerance,
-                                                gkt_binary_table** out);
+                                                const double fraction_range[2], gkt_binary_table** out);
 
 /** Writes the cost of the table's build: the x_1 intervals it settled on, the mixture solves it
  *  made (nodes, error and validation points) and the wall-clock seconds. */

@@ -147,7 +147,7 @@ TEST(CApi, BinaryTableEqualsTheCppTable) {
 TEST(CApi, BinaryTableRefusesATableThatMissesItsTolerance) {
   const double mass[2] = {1, 10}, diameter[2] = {1, 1}, alpha[4] = {0.8, 0.8, 0.8, 0.8};
   gkt_binary_table* table = nullptr;
-  EXPECT_EQ(gkt_binary_table_create_to_tolerance(3, mass, diameter, alpha, 1, 8, 0, 3, 1e-3, &table),
+  EXPECT_EQ(gkt_binary_table_create_to_tolerance(3, mass, diameter, alpha, 1, 8, 0, 3, 1e-3, nullptr, &table),
             GKT_INVALID_ARGUMENT);
   EXPECT_EQ(table, nullptr);
   const std::string what = gkt_last_error();
