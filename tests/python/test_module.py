@@ -360,3 +360,8 @@ def test_binary_table_refuses_a_pole_of_the_truncated_solution():
     table is refused with the library's one-line message naming the x_1 interval, not built wrong."""
     with pytest.raises(ValueError, match=r"^tolerance: the interpolation error .* on x_1 in \[0\.96"):
         gkt.BinaryTransportTable((1, 10), (1, 1), 0.8, order=1, nodes=8)
+    # Below the pole the table builds and refuses compositions outside its range.
+    table = gkt.BinaryTransportTable((1, 10), (1, 1), 0.8, order=1, nodes=8, fraction_range=(0, 0.9))
+    assert table.interpolation_error <= 1e-3
+    with pytest.raises(ValueError, match=r"^fraction_1: must be a number in \[0, 0\.9\] \(the table's fraction_range\), got 0\.95$"):
+        table.evaluate(0.95, 1.0, 1.0)
