@@ -70,6 +70,7 @@ module gkt
   public :: gkt_enskog_first_sonine_values, gkt_enskog_first_sonine_values_at, gkt_enskog_first_sonine_physical
   public :: gkt_model_create, gkt_model_destroy, gkt_model_set_number, gkt_model_set_choice, gkt_model_evaluate
   public :: gkt_binary_table_create, gkt_binary_table_destroy, gkt_binary_table_interpolation_error
+  public :: gkt_binary_table_create_to_tolerance, gkt_binary_table_build_cost
   public :: gkt_binary_table_evaluate, gkt_binary_table_evaluate_reduced, gkt_binary_table_evaluate_cells
 
   ! The per-cell calls bind directly: no conversion on the way.
@@ -190,6 +191,28 @@ module gkt
       real(c_double), value :: max_packing_fraction
       integer(c_int), value :: packing_nodes
       type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_binary_table_create_to_tolerance(dimension, mass, diameter, alpha, order, nodes, &
+                                                max_packing_fraction, packing_nodes, tolerance, fraction_range, out) &
+        bind(C, name="gkt_binary_table_create_to_tolerance") result(status)
+      import :: c_int, c_double, c_ptr
+      integer(c_int), value :: dimension
+      real(c_double), intent(in) :: mass(2), diameter(2), alpha(4)
+      integer(c_int), value :: order, nodes
+      real(c_double), value :: max_packing_fraction
+      integer(c_int), value :: packing_nodes
+      real(c_double), value :: tolerance
+      real(c_double), intent(in) :: fraction_range(2)
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_binary_table_build_cost(table, intervals, solves, seconds) bind(C, name="gkt_binary_table_build_cost") &
+        result(status)
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table
+      integer(c_int), intent(out) :: intervals, solves
+      real(c_double), intent(out) :: seconds
       integer(c_int) :: status
     end function
     subroutine c_binary_table_destroy(table) bind(C, name="gkt_binary_table_destroy")
@@ -321,6 +344,28 @@ contains
                                    max_packing_fraction, packing_nodes, table%handle)
   end function
 
+  !> Builds the table as gkt_binary_table_create, to the interpolation error `tolerance` in (0, 1]
+  !> (1e-3 there) over the compositions fraction_range = [x_low, x_high] within [0, 1].
+  function gkt_binary_table_create_to_tolerance(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction, &
+                                                packing_nodes, tolerance, fraction_range, table) result(status)
+    integer(c_int), intent(in) :: dimension, order, nodes, packing_nodes
+    real(c_double), intent(in) :: mass(2), diameter(2), alpha(2, 2), max_packing_fraction, tolerance, fraction_range(2)
+    type(gkt_binary_table), intent(out) :: table
+    integer(c_int) :: status
+    status = c_binary_table_create_to_tolerance(dimension, mass, diameter, reshape(alpha, [4]), order, nodes, &
+                                                max_packing_fraction, packing_nodes, tolerance, fraction_range, &
+                                                table%handle)
+  end function
+
+  !> Writes the table's build cost: x_1 intervals, mixture solves and wall-clock seconds.
+  function gkt_binary_table_build_cost(table, intervals, solves, seconds) result(status)
+    type(gkt_binary_table), intent(in) :: table
+    integer(c_int), intent(out) :: intervals, solves
+    real(c_double), intent(out) :: seconds
+    integer(c_int) :: status
+    status = c_binary_table_build_cost(table%handle, intervals, solves, seconds)
+  end function
+
   !> Frees the table (a table never created is ignored).
   subroutine gkt_binary_table_destroy(table)
     type(gkt_binary_table), intent(inout) :: table
@@ -328,7 +373,8 @@ contains
     table%handle = c_null_ptr
   end subroutine
 
-  !> Writes the largest relative interpolation error measured between the nodes at creation.
+  !> Writes the largest relative interpolation error measured at creation (between the nodes and at
+  !> independent validation points).
   function gkt_binary_table_interpolation_error(table, error) result(status)
     type(gkt_binary_table), intent(in) :: table
     real(c_double), intent(out) :: error

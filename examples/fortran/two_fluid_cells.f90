@@ -29,6 +29,8 @@ program two_fluid_cells
   type(gkt_binary_transport) :: batch(cells)
   real(dp) :: mass(2), volume(2), number_density(2), n, x1, phi, error, batch_x1(cells), batch_n(cells)
   integer :: cell
+  integer(c_int) :: intervals, solves
+  real(dp) :: seconds
   character(len=4096) :: scene
 
   volume = pi / 6 * diameter**3
@@ -37,6 +39,9 @@ program two_fluid_cells
                                      table), "gkt_binary_table_create")
   call check(gkt_binary_table_interpolation_error(table, error), "gkt_binary_table_interpolation_error")
   write (*, '(a, es10.3)') '# gkt ' // gkt_version() // ', binary table interpolation error ', error
+  call check(gkt_binary_table_build_cost(table, intervals, solves, seconds), "gkt_binary_table_build_cost")
+  write (*, '(a, i0, a, i0, a, f0.2, a)') '# built on ', intervals, ' x_1 interval(s) with ', solves, &
+    ' mixture solves in ', seconds, ' s'
 
   if (command_argument_count() >= 1) then
     call get_command_argument(1, scene)

@@ -34,7 +34,8 @@ extern "C" {
 typedef enum gkt_status {
   GKT_OK = 0,               /**< success: every output written */
   GKT_INVALID_ARGUMENT = 1, /**< bad input: an unknown name, a value outside its range, a NULL pointer */
-  GKT_OUT_OF_RANGE = 2,     /**< a valid state that a table does not cover (φ above the table's φ_max) */
+  GKT_OUT_OF_RANGE = 2,     /**< a valid state that a table does not cover (φ above the table's φ_max, x_1 outside
+                                 its fraction_range) */
   GKT_INTERNAL_ERROR = 3    /**< anything else the library reported (out of memory, a bug); see the message */
 } gkt_status;
 
@@ -171,7 +172,8 @@ gkt_status gkt_model_evaluate_to_tolerance(gkt_model* model, size_t count, const
 /* ---- binary mixtures: the per-cell transport table ---------------------------------------------- */
 
 /** A binary's Navier–Stokes table (theory.md §17.8, dense §18.10), solved once at creation on
- *  Chebyshev–Lobatto nodes of x_1 (and φ) and interpolated per cell without allocation.
+ *  Chebyshev–Lobatto nodes of x_1 (and φ), x_1 split into subintervals until a requested accuracy
+ *  holds at every point checked, and interpolated per cell without allocation.
  *  Evaluation is thread-safe (the table is read only). */
 typedef struct gkt_binary_table gkt_binary_table;
 
@@ -180,16 +182,34 @@ typedef struct gkt_binary_table gkt_binary_table;
  *  0.1 -> 1/10, as a scene's decimal is read: docs/architecture.md §4), the restitution matrix alpha[2i + j] (symmetric, each in
  *  (0, 1]; row- or column-major alike), Sonine order in [1, 12], nodes in [3, 64] points in x_1
  *  ∈ [0, 1]; max_packing_fraction in [0, 0.5) (3D) or [0, 0.7) (2D), 0 for a dilute table; and
- *  packing_nodes in [3, 64] points in φ (used only when max_packing_fraction > 0). Costs one
- *  mixture solve per node (seconds for a dense table). */
+ *  packing_nodes in [3, 64] points in φ (used only when max_packing_fraction > 0). The table
+ *  meets an interpolation error of 1e-3 (relative to max(1, |value|) of the reduced coefficients)
+ *  at every point checked, or is refused: GKT_INVALID_ARGUMENT, the message naming the error
+ *  reached and the x_1 interval (e.g. a pole of the order-N solution). Costs a few mixture solves
+ *  per node (seconds for a dense table; see gkt_binary_table_build_cost). */
 gkt_status gkt_binary_table_create(int dimension, const double mass[2], const double diameter[2], const double alpha[4],
                                    int order, int nodes, double max_packing_fraction, int packing_nodes,
                                    gkt_binary_table** out);
 
+/** Builds the table as gkt_binary_table_create, to the interpolation error `tolerance` in (0, 1]
+ *  instead of 1e-3 (nodes and packing_nodes are then the starting points per axis and interval),
+ *  over the compositions fraction_range = {x_low, x_high}, 0 <= x_low < x_high <= 1 (NULL: [0, 1];
+ *  e.g. below a pole of the order-N solution that makes the full range refused). Evaluating the
+ *  table at an x_1 in [0, 1] outside that range returns GKT_OUT_OF_RANGE. */
+gkt_status gkt_binary_table_create_to_tolerance(int dimension, const double mass[2], const double diameter[2],
+                                                const double alpha[4], int order, int nodes,
+                                                double max_packing_fraction, int packing_nodes, double tolerance,
+                                                const double fraction_range[2], gkt_binary_table** out);
+
+/** Writes the cost of the table's build: the x_1 intervals it settled on, the mixture solves it
+ *  made (nodes, error and validation points) and the wall-clock seconds. */
+gkt_status gkt_binary_table_build_cost(const gkt_binary_table* table, int* intervals, int* solves, double* seconds);
+
 /** Frees a table (NULL is ignored). */
 void gkt_binary_table_destroy(gkt_binary_table* table);
 
-/** Writes the largest relative interpolation error measured between the nodes at creation. */
+/** Writes the largest relative interpolation error measured at creation (between the nodes and at
+ *  independent validation points against direct solves). */
 gkt_status gkt_binary_table_interpolation_error(const gkt_binary_table* table, double* out);
 
 /** The Navier–Stokes set of a binary at one state; species indices 0, 1 (C) = 1, 2 (Fortran,

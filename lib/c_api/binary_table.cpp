@@ -15,8 +15,9 @@
 
 /// A binary's table and what the C layer needs to check states against it.
 struct gkt_binary_table {
-  gkt_binary_table(const gkt::Mixture& mixture, int order, int nodes, double max_packing, int packing_nodes)
-      : table(mixture, order, nodes, max_packing, packing_nodes),
+  gkt_binary_table(const gkt::Mixture& mixture, int order, int nodes, double max_packing, int packing_nodes,
+                   double tolerance, std::array<double, 2> fraction_range)
+      : table(mixture, order, nodes, max_packing, packing_nodes, tolerance, fraction_range),
         dimension(mixture.dimension),
         max_packing_fraction(max_packing) {
     for (std::size_t i = 0; i < 2; ++i) {
@@ -49,9 +50,19 @@ std::string index(std::size_t i) {
   return out;
 }
 
+/// Throws a Refusal (GKT_OUT_OF_RANGE) unless x_1 ∈ [0, 1] is within the table's fraction_range.
+void require_covered_fraction(const gkt_binary_table& t, double fraction_1, const std::string& field) {
+  const std::array<double, 2> range = t.table.fraction_range();
+  if (!(fraction_1 >= range[0] && fraction_1 <= range[1]))
+    throw Refusal{GKT_OUT_OF_RANGE, field + ": must be in [" + number(range[0]) + ", " + number(range[1]) +
+                                        "] (the table's fraction_range), got " + number(fraction_1)};
+}
+
 /// True if (x_1, n, T) is a valid state the table covers (the checks of require_state, no message).
 bool covers(const gkt_binary_table& t, double x1, double n, double temperature) {
-  if (!(x1 >= 0 && x1 <= 1 && n > 0 && std::isfinite(n) && temperature > 0 && std::isfinite(temperature))) return false;
+  const std::array<double, 2> range = t.table.fraction_range();
+  if (!(x1 >= range[0] && x1 <= range[1] && n > 0 && std::isfinite(n) && temperature > 0 && std::isfinite(temperature)))
+    return false;
   return t.max_packing_fraction <= 0 ||
          n * (x1 * t.species_volume[0] + (1 - x1) * t.species_volume[1]) <= t.max_packing_fraction;
 }
@@ -59,6 +70,7 @@ bool covers(const gkt_binary_table& t, double x1, double n, double temperature) 
 /// Throws a Refusal unless (x_1, n, T) is a state the table covers; suffix names the cell ("[3]").
 void require_state(const gkt_binary_table& t, double x1, double n, double temperature, const char* suffix = "") {
   require_fraction(x1, (std::string("fraction_1") + suffix).c_str());
+  require_covered_fraction(t, x1, std::string("fraction_1") + suffix);
   require_positive(n, (std::string("number_density") + suffix).c_str());
   require_positive(temperature, (std::string("temperature") + suffix).c_str());
   if (t.max_packing_fraction > 0) {
@@ -98,9 +110,10 @@ using gkt::c_api::require_pointer;
 
 extern "C" {
 
-gkt_status gkt_binary_table_create(int dimension, const double mass[2], const double diameter[2], const double alpha[4],
-                                   int order, int nodes, double max_packing_fraction, int packing_nodes,
-                                   gkt_binary_table** out) {
+gkt_status gkt_binary_table_create_to_tolerance(int dimension, const double mass[2], const double diameter[2],
+                                                const double alpha[4], int order, int nodes,
+                                                double max_packing_fraction, int packing_nodes, double tolerance,
+                                                const double fraction_range[2], gkt_binary_table** out) {
   return guarded([&] {
     require_pointer(out, "out");
     require_pointer(mass, "mass");
@@ -125,10 +138,20 @@ gkt_status gkt_binary_table_create(int dimension, const double mass[2], const do
     gkt::Mixture mixture = gkt::make_mixture(dimension, species, 1.0);
     mixture.alpha.assign(alpha, alpha + 4);
     mixture.validate();
-    auto t = std::make_unique<gkt_binary_table>(mixture, order, nodes, max_packing_fraction, packing_nodes);
+    auto t = std::make_unique<gkt_binary_table>(mixture, order, nodes, max_packing_fraction, packing_nodes, tolerance,
+                                                fraction_range != nullptr
+                                                    ? std::array<double, 2>{fraction_range[0], fraction_range[1]}
+                                                    : std::array<double, 2>{0.0, 1.0});
     *out = t.release();
     return GKT_OK;
   });
+}
+
+gkt_status gkt_binary_table_create(int dimension, const double mass[2], const double diameter[2], const double alpha[4],
+                                   int order, int nodes, double max_packing_fraction, int packing_nodes,
+                                   gkt_binary_table** out) {
+  return gkt_binary_table_create_to_tolerance(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction,
+                                              packing_nodes, 1e-3, nullptr, out);
 }
 
 void gkt_binary_table_destroy(gkt_binary_table* table) { std::unique_ptr<gkt_binary_table> owned(table); }
@@ -138,6 +161,19 @@ gkt_status gkt_binary_table_interpolation_error(const gkt_binary_table* table, d
     require_pointer(table, "table");
     require_pointer(out, "out");
     *out = table->table.interpolation_error();
+    return GKT_OK;
+  });
+}
+
+gkt_status gkt_binary_table_build_cost(const gkt_binary_table* table, int* intervals, int* solves, double* seconds) {
+  return guarded([&] {
+    require_pointer(table, "table");
+    require_pointer(intervals, "intervals");
+    require_pointer(solves, "solves");
+    require_pointer(seconds, "seconds");
+    *intervals = table->table.intervals();
+    *solves = table->table.build_solves();
+    *seconds = table->table.build_seconds();
     return GKT_OK;
   });
 }
@@ -181,6 +217,7 @@ gkt_status gkt_binary_table_evaluate_reduced(const gkt_binary_table* table, doub
     require_pointer(out, "out");
     gkt::c_api::require_fraction(fraction_1, "fraction_1");
     const gkt_binary_table& t = *table;
+    gkt::c_api::require_covered_fraction(t, fraction_1, "fraction_1");
     if (!(packing_fraction >= 0 && packing_fraction <= t.max_packing_fraction)) {
       if (packing_fraction > t.max_packing_fraction && std::isfinite(packing_fraction))
         throw Refusal{GKT_OUT_OF_RANGE, "packing_fraction: must be in [0, " + number(t.max_packing_fraction) +

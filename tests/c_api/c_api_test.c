@@ -215,6 +215,37 @@ static void binary_table(void) {
 
   CHECK(gkt_binary_table_create(3, mass, diameter, alpha, 1, 16, 0.0, 3, &table) == GKT_OK && table != NULL);
   CHECK(gkt_binary_table_interpolation_error(table, &error) == GKT_OK && error >= 0 && error < 1e-6);
+  {
+    /* One interval of 16 nodes: 16 nodes, 15 midpoints and 8 validation points solved. */
+    int intervals = -1, solves = -1;
+    double seconds = -1;
+    CHECK(gkt_binary_table_build_cost(table, &intervals, &solves, &seconds) == GKT_OK);
+    CHECK(intervals == 1 && solves == 16 + 15 + 8 && seconds > 0);
+    EXPECT_ERROR(gkt_binary_table_build_cost(table, &intervals, NULL, &seconds), GKT_INVALID_ARGUMENT,
+                 "solves: must not be NULL");
+  }
+  {
+    gkt_binary_table* refused = NULL;
+    EXPECT_ERROR(gkt_binary_table_create_to_tolerance(3, mass, diameter, alpha, 1, 16, 0.0, 3, 0.0, NULL, &refused),
+                 GKT_INVALID_ARGUMENT, "tolerance: must be a number in (0, 1], got 0");
+    CHECK(refused == NULL);
+  }
+  {
+    /* A table of x_1 in [0.2, 0.6] refuses the valid x_1 = 0.7 as out of its range. */
+    const double range[2] = {0.2, 0.6}, bad_range[2] = {0.6, 0.2};
+    gkt_binary_table* part = NULL;
+    gkt_binary_transport v;
+    CHECK(gkt_binary_table_create_to_tolerance(3, mass, diameter, alpha, 1, 8, 0.0, 3, 1e-3, range, &part) == GKT_OK);
+    CHECK(gkt_binary_table_evaluate(part, 0.4, 1.0, 1.0, &v) == GKT_OK && v.shear_viscosity > 0);
+    EXPECT_ERROR(gkt_binary_table_evaluate(part, 0.7, 1.0, 1.0, &v), GKT_OUT_OF_RANGE,
+                 "fraction_1: must be in [0.2, 0.6] (the table's fraction_range), got 0.7");
+    EXPECT_ERROR(gkt_binary_table_evaluate_reduced(part, 0.1, 0.0, &v), GKT_OUT_OF_RANGE, "fraction_1: must be in [0.2");
+    gkt_binary_table_destroy(part);
+    part = NULL;
+    EXPECT_ERROR(gkt_binary_table_create_to_tolerance(3, mass, diameter, alpha, 1, 8, 0.0, 3, 1e-3, bad_range, &part),
+                 GKT_INVALID_ARGUMENT, "fraction_range: must be [x_low, x_high]");
+    CHECK(part == NULL);
+  }
 
   /* Physical against reduced × the reference gas of (m̄, σ̄), written out here. */
   x1 = 0.3, n = 0.02, t = 2.5;

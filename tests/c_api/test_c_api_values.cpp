@@ -142,6 +142,19 @@ TEST(CApi, BinaryTableEqualsTheCppTable) {
   gkt_binary_table_destroy(table);
 }
 
+// Mass ratio 10 at order 1 has a pole of the truncated solution at x_1 ≈ 0.970 (theory.md §17.8):
+// the C API refuses the table as the library does, with its one-line message, and writes no handle.
+TEST(CApi, BinaryTableRefusesATableThatMissesItsTolerance) {
+  const double mass[2] = {1, 10}, diameter[2] = {1, 1}, alpha[4] = {0.8, 0.8, 0.8, 0.8};
+  gkt_binary_table* table = nullptr;
+  EXPECT_EQ(gkt_binary_table_create_to_tolerance(3, mass, diameter, alpha, 1, 8, 0, 3, 1e-3, nullptr, &table),
+            GKT_INVALID_ARGUMENT);
+  EXPECT_EQ(table, nullptr);
+  const std::string what = gkt_last_error();
+  EXPECT_EQ(what.rfind("tolerance: the interpolation error ", 0), 0u) << what;
+  EXPECT_NE(what.find("on x_1 in [0.96"), std::string::npos) << what;
+}
+
 // The last error belongs to the thread that failed: another thread's failure does not change it.
 TEST(CApi, LastErrorIsPerThread) {
   gkt_first_sonine v{};

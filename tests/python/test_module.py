@@ -319,6 +319,9 @@ def test_binary_table_at_a_node_equals_the_mixture_table():
     (docs/conventions.md, 3D)."""
     table = gkt.BinaryTransportTable((1, 3), (1, 1.5), 0.8, order=1, nodes=5)
     assert 0 < table.interpolation_error < 0.1  # measured between 5 nodes: coarse
+    assert table.validation_error <= table.interpolation_error
+    cost = table.build_cost
+    assert cost["intervals"] == 1 and cost["solves"] >= 5 + 4 and cost["seconds"] > 0
     n, temperature = np.array([1.0, 0.2]), np.array([1.0, 4.0])
     cells = table.evaluate(0.5, n, temperature)
     solved = gkt.table({"model": "mixture", "alpha": 0.8, "order": 1, "hcs": "maxwellian",
@@ -348,3 +351,17 @@ def test_binary_table_shapes_and_errors():
         gkt.BinaryTransportTable((1, 2), (1, 1), [[0.9, 0.8], [0.7, 0.9]])
     with pytest.raises(ValueError, match="nodes"):
         gkt.BinaryTransportTable((1, 2), (1, 1), 0.9, nodes=2)
+    with pytest.raises(ValueError, match=r"^tolerance: must be a number in \(0, 1\], got 0$"):
+        gkt.BinaryTransportTable((1, 2), (1, 1), 0.9, tolerance=0)
+
+
+def test_binary_table_refuses_a_pole_of_the_truncated_solution():
+    """Mass ratio 10 at order 1: the coefficients have a pole at x_1 ≈ 0.970 (theory.md §17.8); the
+    table is refused with the library's one-line message naming the x_1 interval, not built wrong."""
+    with pytest.raises(ValueError, match=r"^tolerance: the interpolation error .* on x_1 in \[0\.96"):
+        gkt.BinaryTransportTable((1, 10), (1, 1), 0.8, order=1, nodes=8)
+    # Below the pole the table builds and refuses compositions outside its range.
+    table = gkt.BinaryTransportTable((1, 10), (1, 1), 0.8, order=1, nodes=8, fraction_range=(0, 0.9))
+    assert table.interpolation_error <= 1e-3
+    with pytest.raises(ValueError, match=r"^fraction_1: must be a number in \[0, 0\.9\] \(the table's fraction_range\), got 0\.95$"):
+        table.evaluate(0.95, 1.0, 1.0)

@@ -1,6 +1,7 @@
 #include "gkt/transport/mixture/mixture_transport_table.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -17,10 +18,11 @@ namespace gkt {
 
 namespace {
 
-/// Returns x with 3 significant digits (measured errors, positions, echoed arguments).
-std::string short_number(double x) {
+/// Returns x with `digits` significant digits (3: measured errors, positions, echoed arguments;
+/// 6: the ends of an x_1 interval a few 1e-4 wide).
+std::string short_number(double x, int digits = 3) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", x);
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
   return buffer;
 }
 
@@ -33,6 +35,12 @@ std::string short_number(double x) {
     throw std::invalid_argument(std::string(name) + ": the coefficients at n = " + short_number(value) +
                                 ", T = " + short_number(temperature) + " over- or underflow a double");
   throw std::invalid_argument(std::string(name) + ": must be " + range + ", got " + short_number(value));
+}
+
+/// Throws "fraction_1: must be a number in [low, high] (the table's range), got x".
+[[noreturn, gnu::cold, gnu::noinline]] void refuse_fraction(double x, double low, double high) {
+  throw std::invalid_argument("fraction_1: must be a number in [" + short_number(low, 6) + ", " +
+                              short_number(high, 6) + "] (the table's fraction_range), got " + short_number(x));
 }
 
 }  // namespace
@@ -61,14 +69,21 @@ BinaryTransportTable::Reduced BinaryTransportTable::solve(const Mixture& mixture
           v.cooling_rate_first_order};
 }
 
-BinaryTransportTable::Axis::Axis(int count, double top) {
-  // Chebyshev–Lobatto points of [0, top] and their barycentric weights (−1)^k, halved at the ends
-  // ([berrut2004] eq. 5.2); a single node when the axis is degenerate (top = 0).
-  const int last = top > 0 ? count - 1 : 0;
+BinaryTransportTable::Axis::Axis(int count, double low, double high) {
+  // Chebyshev–Lobatto points of [low, high] and their barycentric weights (−1)^k, halved at the
+  // ends ([berrut2004] eq. 5.2); a single node when the axis is degenerate (high = low).
+  const int last = high > low ? count - 1 : 0;
   for (int k = 0; k <= last; ++k) {
-    nodes.push_back(last == 0 ? 0.0 : 0.5 * top * (1 - std::cos(std::numbers::pi * k / last)));
+    nodes.push_back(last == 0 ? low : low + 0.5 * (high - low) * (1 - std::cos(std::numbers::pi * k / last)));
     weights.push_back((k % 2 == 0 ? 1.0 : -1.0) * (k == 0 || k == last ? 0.5 : 1.0));
   }
+}
+
+double BinaryTransportTable::Axis::at_angle(double position) const {
+  const auto last = static_cast<double>(nodes.size() - 1);
+  if (last == 0) return nodes[0];
+  const double low = nodes.front(), high = nodes.back();
+  return low + 0.5 * (high - low) * (1 - std::cos(std::numbers::pi * position / last));
 }
 
 void BinaryTransportTable::Axis::factors(double t, std::array<double, kMaxNodes>& w) const {
@@ -89,12 +104,32 @@ void BinaryTransportTable::Axis::factors(double t, std::array<double, kMaxNodes>
   for (std::size_t k = 0; k < n; ++k) w[k] /= sum;
 }
 
+namespace {
+
+/// A piece of x_1 waiting to be solved and checked: its interval, node counts, and how its error
+/// went under bisection (the parent's error; successive bisections that did not halve it).
+struct Pending {
+  double low, high;
+  int nodes, packing_nodes;
+  bool split;
+  double parent_error;
+  int stalls;
+};
+
+/// Where and how large the worst error of a piece was.
+struct Worst {
+  double error = 0, fraction = 0, packing = 0;
+};
+
+constexpr int kMaxStalls = 6;             // bisections in a row that did not halve the error
+constexpr double kMinWidth = 1.0 / 4096;  // the narrowest piece the build splits to
+
+}  // namespace
+
 BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, int nodes, double max_packing_fraction,
-                                           int packing_nodes, double tolerance)
-    : dimension_(mixture.dimension),
-      max_packing_(max_packing_fraction),
-      fraction_axis_(std::clamp(nodes, 3, kMaxNodes), 1.0),
-      packing_axis_(std::clamp(packing_nodes, 3, kMaxNodes), max_packing_fraction) {
+                                           int packing_nodes, double tolerance, std::array<double, 2> fraction_range)
+    : dimension_(mixture.dimension), max_packing_(max_packing_fraction), fraction_range_(fraction_range) {
+  const auto started = std::chrono::steady_clock::now();
   if (mixture.size() != 2) throw std::invalid_argument("species: the transport table is for binaries (2 species)");
   if (nodes < 3 || nodes > kMaxNodes)
     throw std::invalid_argument("nodes: must be an integer in [3, 64], got " + std::to_string(nodes));
@@ -107,6 +142,9 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
                                 ") for dimension = " + std::to_string(mixture.dimension));
   if (!(tolerance > 0 && tolerance <= 1))
     throw std::invalid_argument("tolerance: must be a number in (0, 1], got " + short_number(tolerance));
+  if (!(fraction_range[0] >= 0 && fraction_range[0] < fraction_range[1] && fraction_range[1] <= 1))
+    throw std::invalid_argument("fraction_range: must be [x_low, x_high] with 0 <= x_low < x_high <= 1, got [" +
+                                short_number(fraction_range[0], 6) + ", " + short_number(fraction_range[1], 6) + "]");
   Mixture species = mixture;  // what the table keeps: dimension, masses, diameters, α
   species.species[0].fraction = species.species[1].fraction = 0.5;
   species.packing_fraction = 0;
@@ -118,7 +156,8 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   }
   // Solves by (x_1, φ): refining K → 2K − 1 Chebyshev–Lobatto nodes keeps the old nodes and turns
   // the angular midpoints into the new ones, bit for bit (the angles πk/(K − 1) and π(k + ½)/(K − 1)
-  // become π(2k)/(2K − 2) and π(2k + 1)/(2K − 2): doubling is exact), so no state is solved twice.
+  // become π(2k)/(2K − 2) and π(2k + 1)/(2K − 2): doubling is exact), so no state is solved twice;
+  // the halves of a bisected piece share its ends and midpoint.
   std::map<std::pair<double, double>, Reduced> solved;
   auto at = [&](double x1, double phi) -> const Reduced& {
     const auto key = std::make_pair(x1, phi);
@@ -129,78 +168,108 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
     m.packing_fraction = phi;
     return solved.emplace(key, solve(m, order)).first->second;
   };
-  // Midpoints in the angle (where the interpolant is least pinned): in x_1 at every φ midpoint (or
-  // at φ = 0 for a dilute table).
-  auto midpoints = [](const Axis& axis) {
-    std::vector<double> out;
-    const auto last = static_cast<double>(axis.nodes.size() - 1);
-    const double top = axis.nodes.back();
-    for (std::size_t k = 0; k + 1 < axis.nodes.size(); ++k)
-      out.push_back(0.5 * top * (1 - std::cos(std::numbers::pi * (static_cast<double>(k) + 0.5) / last)));
-    if (out.empty()) out.push_back(0.0);
-    return out;
-  };
-  for (;;) {
-    values_.clear();
-    for (double phi : packing_axis_.nodes)
-      for (double x1 : fraction_axis_.nodes) values_.push_back(at(x1, phi));
-    interpolation_error_ = 0;
-    double worst_fraction = 0, worst_packing = 0;
-    bool finite = true;
-    for (double phi : midpoints(packing_axis_))
-      for (double x1 : midpoints(fraction_axis_)) {
+  // The largest error of a piece's interpolant against direct solves at the grid of angular
+  // positions offset + k·step in x_1 and φ (offset ½, step 1: the midpoints; offset ⅓, step 2: the
+  // validation points, never nodes nor midpoints of any refinement of the piece).
+  auto measure = [&](const Piece& piece, double offset, int step) {
+    Worst worst;
+    const int nx = static_cast<int>(piece.fraction_axis.nodes.size()),
+              np = static_cast<int>(piece.packing_axis.nodes.size());
+    for (int a = 0; a<std::max(1, np - 1); a += np> 1 ? step : 1)
+      for (int b = 0; b + 1 < nx; b += step) {
+        const double x1 = piece.fraction_axis.at_angle(b + offset),
+                     phi = np > 1 ? piece.packing_axis.at_angle(a + offset) : piece.packing_axis.nodes[0];
         const Reduced& exact = at(x1, phi);
-        const Reduced interpolated = reduced_at(x1, phi);
+        const Reduced interpolated = piece.reduced_at(x1, phi);
         for (int c = 0; c < kReduced; ++c) {
-          const double e = std::abs(interpolated[c] - exact[c]) / std::max(1.0, std::abs(exact[c]));
-          if (!std::isfinite(e)) finite = false;
-          if (e > interpolation_error_) interpolation_error_ = e, worst_fraction = x1, worst_packing = phi;
+          double e = std::abs(interpolated[c] - exact[c]) / std::max(1.0, std::abs(exact[c]));
+          if (!std::isfinite(e)) e = INFINITY;
+          if (e > worst.error) worst = {e, x1, phi};
         }
       }
-    for (const Reduced& v : values_)
-      for (double c : v) finite = finite && std::isfinite(c);
-    if (finite && interpolation_error_ <= tolerance) {
-      // Interpolated values stay within the Lebesgue constant (< 3.7 per axis for ≤ 64
-      // Chebyshev–Lobatto nodes, [berrut2004]) times the largest node value: 16× bounds both axes.
-      for (const Reduced& v : values_)
-        for (double c : v) reduced_bound_ = std::max(reduced_bound_, 16 * std::abs(c));
-      return;
+    return worst;
+  };
+  std::vector<Pending> pending{
+      {fraction_range[0], fraction_range[1], nodes, max_packing_ > 0 ? packing_nodes : 1, false, INFINITY, 0}};
+  while (!pending.empty()) {
+    const Pending p = pending.back();
+    pending.pop_back();
+    Piece piece{Axis(p.nodes, p.low, p.high), Axis(p.packing_nodes, 0, max_packing_), {}};
+    for (double phi : piece.packing_axis.nodes)
+      for (double x1 : piece.fraction_axis.nodes) piece.values.push_back(at(x1, phi));
+    Worst worst = measure(piece, 0.5, 1);
+    if (worst.error <= tolerance) {
+      const Worst check = measure(piece, 1.0 / 3, 2);
+      if (check.error <= tolerance) {
+        interpolation_error_ = std::max({interpolation_error_, worst.error, check.error});
+        validation_error_ = std::max(validation_error_, check.error);
+        pieces_.push_back(std::move(piece));
+        continue;
+      }
+      worst = check;
     }
-    const int refined = 2 * fraction_nodes() - 1,
-              refined_packing = max_packing_ > 0 ? 2 * this->packing_nodes() - 1 : 1;
-    if (finite && refined <= kMaxNodes && refined_packing <= kMaxNodes) {
-      fraction_axis_ = Axis(refined, 1.0);
-      packing_axis_ = Axis(refined_packing, max_packing_);
+    // Refine: both axes K → 2K − 1 until 64 nodes (before any bisection), then bisect x_1.
+    const int refined = 2 * p.nodes - 1, refined_packing = max_packing_ > 0 ? 2 * p.packing_nodes - 1 : 1;
+    if (!p.split && refined <= kMaxNodes && refined_packing <= kMaxNodes) {
+      pending.push_back({p.low, p.high, refined, refined_packing, false, worst.error, 0});
       continue;
     }
-    if (!finite)
-      throw std::invalid_argument("mixture: the order-" + std::to_string(order) +
-                                  " coefficients are not finite at some x_1 in [0, 1] (a pole of the truncated "
-                                  "solution): no table at this order");
-    std::string grid = std::to_string(fraction_nodes()) + " nodes in x_1";
-    std::string where = "x_1 = " + short_number(worst_fraction);
-    if (max_packing_ > 0) {
-      grid += " x " + std::to_string(this->packing_nodes()) + " in phi";
-      where += ", phi = " + short_number(worst_packing);
+    const int stalls = worst.error > 0.5 * p.parent_error ? p.stalls + 1 : 0;
+    const double middle = 0.5 * (p.low + p.high);
+    if (p.high - p.low > kMinWidth && stalls < kMaxStalls) {
+      pending.push_back({middle, p.high, nodes, p.packing_nodes, true, worst.error, stalls});
+      pending.push_back({p.low, middle, nodes, p.packing_nodes, true, worst.error, stalls});
+      continue;
     }
-    throw std::invalid_argument("tolerance: the interpolation error " + short_number(interpolation_error_) + " at " +
-                                where + " with " + grid + " exceeds the tolerance " + short_number(tolerance) +
-                                " (the order-" + std::to_string(order) +
-                                " coefficients vary too fast there, e.g. near a pole of the truncated solution)");
+    std::string grid = std::to_string(p.nodes) + " nodes in x_1";
+    std::string where = "x_1 = " + short_number(worst.fraction);
+    if (max_packing_ > 0) {
+      grid += " x " + std::to_string(p.packing_nodes) + " in phi";
+      where += ", phi = " + short_number(worst.packing);
+    }
+    throw std::invalid_argument(
+        "tolerance: the interpolation error " + short_number(worst.error) + " at " + where + " exceeds the tolerance " +
+        short_number(tolerance) + " on x_1 in [" + short_number(p.low, 6) + ", " + short_number(p.high, 6) + "] with " +
+        grid + ", and bisecting no longer helps (the order-" + std::to_string(order) +
+        " coefficients vary too fast there, e.g. a pole of the truncated solution; a fraction_range that "
+        "leaves it out may build)");
   }
+  std::sort(pieces_.begin(), pieces_.end(), [](const Piece& l, const Piece& r) {
+    return l.fraction_axis.nodes.front() < r.fraction_axis.nodes.front();
+  });
+  for (std::size_t k = 0; k + 1 < pieces_.size(); ++k) breaks_.push_back(pieces_[k].fraction_axis.nodes.back());
+  // Interpolated values stay within the Lebesgue constant (< 3.7 per axis for ≤ 64
+  // Chebyshev–Lobatto nodes, [berrut2004]) times the largest node value: 16× bounds both axes.
+  for (const Piece& piece : pieces_)
+    for (const Reduced& v : piece.values)
+      for (double c : v) reduced_bound_ = std::max(reduced_bound_, 16 * std::abs(c));
+  build_solves_ = static_cast<int>(solved.size());
+  build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
-BinaryTransportTable::Reduced BinaryTransportTable::reduced_at(double x, double phi) const {
+int BinaryTransportTable::fraction_nodes() const {
+  int count = 1;  // x_1 = 0, then each piece's nodes above its lower end
+  for (const Piece& piece : pieces_) count += static_cast<int>(piece.fraction_axis.nodes.size()) - 1;
+  return count;
+}
+
+int BinaryTransportTable::packing_nodes() const {
+  int count = 1;
+  for (const Piece& piece : pieces_) count = std::max(count, static_cast<int>(piece.packing_axis.nodes.size()));
+  return count;
+}
+
+BinaryTransportTable::Reduced BinaryTransportTable::Piece::reduced_at(double x, double phi) const {
   std::array<double, kMaxNodes> wx{}, wp{};
-  fraction_axis_.factors(x, wx);
-  packing_axis_.factors(phi, wp);
-  const std::size_t nx = fraction_axis_.nodes.size(), np = packing_axis_.nodes.size();
+  fraction_axis.factors(x, wx);
+  packing_axis.factors(phi, wp);
+  const std::size_t nx = fraction_axis.nodes.size(), np = packing_axis.nodes.size();
   Reduced out{};
   for (std::size_t a = 0; a < np; ++a) {
     if (wp[a] == 0) continue;
     Reduced row{};
     for (std::size_t b = 0; b < nx; ++b) {
-      const Reduced& v = values_[a * nx + b];
+      const Reduced& v = values[a * nx + b];
       for (int c = 0; c < kReduced; ++c) row[c] += wx[b] * v[c];
     }
     for (int c = 0; c < kReduced; ++c) out[c] += wp[a] * row[c];
@@ -209,7 +278,11 @@ BinaryTransportTable::Reduced BinaryTransportTable::reduced_at(double x, double 
 }
 
 BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double temperature) const {
-  if (!(x1 >= 0 && x1 <= 1)) refuse_state("fraction_1", "a number in [0, 1]", x1, temperature);
+  if (!(x1 >= fraction_range_[0] && x1 <= fraction_range_[1])) {
+    if (fraction_range_[0] == 0 && fraction_range_[1] == 1)
+      refuse_state("fraction_1", "a number in [0, 1]", x1, temperature);
+    refuse_fraction(x1, fraction_range_[0], fraction_range_[1]);
+  }
   if (!(n > 0 && n < INFINITY)) refuse_state("number_density", "a finite number > 0", n, temperature);
   if (!(temperature > 0 && temperature < INFINITY))
     refuse_state("temperature", "a finite number > 0", temperature, temperature);
@@ -223,7 +296,9 @@ BinaryTransport BinaryTransportTable::evaluate(double x1, double n, double tempe
     out = {nan, {nan, nan}, nan, nan, {nan, nan, nan, nan}, {nan, nan}, {nan, nan}, {nan, nan}, nan, nan, nan};
     return out;
   }
-  const Reduced r = reduced_at(x[0], phi);
+  // The piece holding x_1 (the lower one at a shared end: both interpolate the same node value).
+  const auto piece = static_cast<std::size_t>(std::lower_bound(breaks_.begin(), breaks_.end(), x1) - breaks_.begin());
+  const Reduced r = pieces_[piece].reduced_at(x[0], phi);
   const double mbar = x[0] * mass_[0] + x[1] * mass_[1], sbar = x[0] * diameter_[0] + x[1] * diameter_[1];
   // Reference gas (m̄, σ̄) at n, T (docs/conventions.md).
   const ReferenceGas ref = reference_gas(d, mbar, sbar, n, temperature);

@@ -320,10 +320,21 @@ py::dict enskog_first_sonine(const py::object& alpha, const py::object& packing_
 class BinaryTable {
  public:
   BinaryTable(const std::array<double, 2>& mass, const std::array<double, 2>& diameter, const py::object& alpha,
-              int dimension, int order, int nodes, double max_packing_fraction, int packing_nodes)
-      : table_(build(mass, diameter, alpha, dimension, order, nodes, max_packing_fraction, packing_nodes)) {}
+              int dimension, int order, int nodes, double max_packing_fraction, int packing_nodes, double tolerance,
+              const std::array<double, 2>& fraction_range)
+      : table_(build(mass, diameter, alpha, dimension, order, nodes, max_packing_fraction, packing_nodes, tolerance,
+                     fraction_range)) {}
 
   [[nodiscard]] double interpolation_error() const { return table_->interpolation_error(); }
+  [[nodiscard]] double validation_error() const { return table_->validation_error(); }
+  /// Returns {intervals, solves, seconds}: what the build cost.
+  [[nodiscard]] py::dict build_cost() const {
+    py::dict out;
+    out["intervals"] = table_->intervals();
+    out["solves"] = table_->build_solves();
+    out["seconds"] = table_->build_seconds();
+    return out;
+  }
 
   /// Returns the Navier–Stokes set at every (x_1, n, T) (broadcast) in the caller's units.
   py::dict evaluate(const py::object& fraction_1, const py::object& number_density,
@@ -372,7 +383,8 @@ class BinaryTable {
                                                                 const std::array<double, 2>& diameter,
                                                                 const py::object& alpha, int dimension, int order,
                                                                 int nodes, double max_packing_fraction,
-                                                                int packing_nodes) {
+                                                                int packing_nodes, double tolerance,
+                                                                const std::array<double, 2>& fraction_range) {
     gkt::Mixture mixture =
         gkt::make_mixture(dimension, {{mass[0], diameter[0], 0.5, ""}, {mass[1], diameter[1], 0.5, ""}}, 1.0);
     const py::array_t<double, py::array::c_style | py::array::forcecast> a(alpha);
@@ -385,8 +397,8 @@ class BinaryTable {
     }
     mixture.validate();
     py::gil_scoped_release release;
-    return std::make_shared<const gkt::BinaryTransportTable>(mixture, order, nodes, max_packing_fraction,
-                                                             packing_nodes);
+    return std::make_shared<const gkt::BinaryTransportTable>(mixture, order, nodes, max_packing_fraction, packing_nodes,
+                                                             tolerance, fraction_range);
   }
 };
 
@@ -445,16 +457,27 @@ PYBIND11_MODULE(gkt, m) {
                           "The Navier-Stokes set of a granular binary, solved once on Chebyshev nodes of x_1 (and "
                           "phi) and interpolated per cell (docs/theory.md section 17.8, dense 18.10).")
       .def(py::init<const std::array<double, 2>&, const std::array<double, 2>&, const py::object&, int, int, int,
-                    double, int>(),
+                    double, int, double, const std::array<double, 2>&>(),
            py::arg("mass"), py::arg("diameter"), py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
            py::arg("order") = 1, py::arg("nodes") = 24, py::arg("max_packing_fraction") = 0.0,
-           py::arg("packing_nodes") = 12,
+           py::arg("packing_nodes") = 12, py::arg("tolerance") = 1e-3,
+           py::arg("fraction_range") = std::array<double, 2>{0.0, 1.0},
            "Solves the binary (masses and diameters of species 1, 2; alpha a number or a symmetric 2 x 2 "
            "matrix) at Sonine order `order` on `nodes` points of x_1 in [0, 1] and, if max_packing_fraction > 0, "
-           "`packing_nodes` points of phi in [0, max_packing_fraction]. The GIL is released while solving.")
+           "`packing_nodes` points of phi in [0, max_packing_fraction]; refines the nodes and splits x_1 into "
+           "intervals until the interpolation error is at most `tolerance` at every point checked, or raises "
+           "ValueError naming the error reached and the x_1 interval. fraction_range = (x_low, x_high) limits the "
+           "table to those compositions (e.g. below a pole of the truncated solution); evaluate then raises "
+           "ValueError outside it. The GIL is released while solving.")
       .def_property_readonly("interpolation_error", &BinaryTable::interpolation_error,
-                             "Returns the largest interpolation error of the reduced coefficients measured between "
-                             "the nodes at build time (relative to max(1, |value|)).")
+                             "Returns the largest interpolation error of the reduced coefficients measured at build "
+                             "time, between the nodes and at independent validation points (relative to "
+                             "max(1, |value|)).")
+      .def_property_readonly("validation_error", &BinaryTable::validation_error,
+                             "Returns the interpolation error at the independent validation points alone.")
+      .def_property_readonly("build_cost", &BinaryTable::build_cost,
+                             "Returns {intervals, solves, seconds}: the x_1 intervals, the mixture solves and the "
+                             "wall-clock seconds of the build.")
       .def("evaluate", &BinaryTable::evaluate, py::arg("fraction_1"), py::arg("number_density"), py::arg("temperature"),
            "Returns {cooling_rate, temperature_ratio_i, shear_viscosity, thermal_conductivity, "
            "mutual_diffusion_i_j, thermal_diffusion_i, pressure_diffusion_i, dufour_i, pressure, bulk_viscosity, "
