@@ -1,4 +1,6 @@
 // The C API's status names, version and thread-local last error (include/gkt/gkt.h).
+#include <new>
+#include <stdexcept>
 #include <string>
 
 #include "gkt/gkt.h"
@@ -17,6 +19,30 @@ gkt_status fail(gkt_status status, const std::string& message) noexcept {
     last_error.clear();  // no memory for the message: the status still says what happened
   }
   return status;
+}
+
+void refuse_null(const char* field) { throw Refusal{GKT_INVALID_ARGUMENT, std::string(field) + ": must not be NULL"}; }
+
+void refuse(const char* field, const char* range, double x) {
+  throw Refusal{GKT_INVALID_ARGUMENT, std::string(field) + ": must be " + range + ", got " + number(x)};
+}
+
+gkt_status current_exception_status() noexcept {
+  try {
+    throw;
+  } catch (const Refusal& r) {
+    return fail(r.status, r.message);
+  } catch (const std::invalid_argument& e) {
+    return fail(GKT_INVALID_ARGUMENT, e.what());
+  } catch (const std::domain_error& e) {
+    return fail(GKT_INVALID_ARGUMENT, e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(GKT_INTERNAL_ERROR, "out of memory");
+  } catch (const std::exception& e) {
+    return fail(GKT_INTERNAL_ERROR, std::string("internal error: ") + e.what());
+  } catch (...) {
+    return fail(GKT_INTERNAL_ERROR, "internal error: unknown exception");
+  }
 }
 
 }  // namespace gkt::c_api

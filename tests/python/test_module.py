@@ -125,6 +125,75 @@ def test_evolve_equals_cli_evolve(scene):
     assert np.all(np.diff(got["temperature"]) < 0)  # a cooling gas
 
 
+DSMC_SMALL = ["particles=1000", "runs=4", "collisions_per_particle=20"]
+
+
+@pytest.mark.parametrize(
+    "scene, extra",
+    [("dsmc_hcs.toml", []), ("dsmc_mixture.toml", []), ("dsmc_hcs.toml", ["output={haff=true}"])],
+)
+def test_dsmc_equals_cli_dsmc(scene, extra):
+    path = SCENES / scene
+    overrides = DSMC_SMALL + extra
+    cli = cli_columns("dsmc", path, *[a for o in overrides for a in ("--set", o)])
+    got = gkt.dsmc(path, overrides=overrides)
+    assert_same_table(got, cli)
+    if not extra:  # a summary: one row, every coefficient with a positive standard error
+        for name in got:
+            if not name.endswith("_error"):
+                assert got[name].shape == (1,) and got[name + "_error"][0] > 0, name
+
+
+def test_dsmc_does_not_depend_on_jobs_and_takes_a_dict():
+    scene = {"model": "smooth-inelastic", "dimension": 2, "alpha": 0.7, "particles": 500, "relaxation": 5,
+             "collisions_per_particle": 10, "batches": 5, "runs": 3, "seed": 7}
+    one = gkt.dsmc(scene)
+    two = gkt.dsmc(scene, jobs=2)
+    assert list(one) == list(two) == ["a2", "a2_error", "a3", "a3_error", "cooling_rate", "cooling_rate_error"]
+    for name in one:
+        np.testing.assert_array_equal(one[name], two[name], err_msg=name)
+    other_seed = gkt.dsmc(scene, overrides=["seed=8"])
+    assert other_seed["a2"][0] != one["a2"][0]
+
+
+def test_bad_dsmc_scene_raises_the_cli_message():
+    path = SCENES / "dsmc_hcs.toml"
+    for override in ["alpha=1.5", "particles=1", 'model="uniform-shear"', "runs=0"]:
+        message = cli_error("dsmc", path, "--set", override)
+        with pytest.raises(ValueError) as raised:
+            gkt.dsmc(path, overrides=[override])
+        assert str(raised.value) == message
+    with pytest.raises(ValueError, match=r"^jobs: must be an integer in \[1, 64\], got 0$"):
+        gkt.dsmc(path, jobs=0)
+
+
+@pytest.mark.parametrize("dimension", [2, 3])
+def test_uniform_shear_dsmc_near_grad(dimension):
+    grad = gkt.table({"model": "uniform-shear", "dimension": dimension, "alpha": 0.7, "order": 1})
+    run = gkt.uniform_shear_dsmc(0.7, 0.6, dimension=dimension, particles=1000, relaxation=20, batches=5,
+                                 collisions_per_batch=5, seed=3)
+    assert list(run) == ["reduced_shear_rate", "stress_xx", "stress_yy", "stress_zz", "stress_xy", "temperature"]
+    assert all(v.shape == (5,) for v in run.values())
+    trace = run["stress_xx"] + run["stress_yy"] + run["stress_zz"]  # P_ii/(2nT) = d/2
+    np.testing.assert_allclose(trace, dimension / 2, rtol=1e-12)
+    if dimension == 2:
+        assert np.all(run["stress_zz"] == 0)
+    for name in ("reduced_shear_rate", "stress_xx", "stress_yy", "stress_xy"):  # Grad is within a few %
+        np.testing.assert_allclose(run[name].mean(), grad[name][0], rtol=0.15, err_msg=name)
+    again = gkt.uniform_shear_dsmc(0.7, 0.6, dimension=dimension, particles=1000, relaxation=20, batches=5,
+                                   collisions_per_batch=5, seed=3)
+    np.testing.assert_array_equal(again["stress_xy"], run["stress_xy"])
+
+
+def test_uniform_shear_dsmc_errors_name_the_field():
+    with pytest.raises(ValueError, match="^alpha: "):
+        gkt.uniform_shear_dsmc(1.0, 0.3)
+    with pytest.raises(ValueError, match="^shear_rate: "):
+        gkt.uniform_shear_dsmc(0.9, 0.0)
+    with pytest.raises(ValueError, match="^dimension: "):
+        gkt.uniform_shear_dsmc(0.9, 0.3, dimension=4)
+
+
 def test_unreached_tolerance_warns_with_the_cli_line():
     path = SCENES / "tracer_diffusion.toml"
     overrides = ["alpha=0.7", "tolerance=1e-12", "species=[{mass=[0.5, 5], diameter=1.5, fraction=0}, {mass=1, diameter=1, fraction=1}]"]

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <span>
@@ -19,12 +20,14 @@
 
 #include <toml++/toml.h>
 
+#include "../dsmc_command.hpp"
 #include "../evolve_command.hpp"
 #include "../scene.hpp"
 #include "../table_command.hpp"
 #include "../table_writer.hpp"
 #include "gkt/cell.hpp"
 #include "gkt/models/transport_model.hpp"
+#include "gkt/simulation/uniform_shear_dsmc.hpp"
 #include "gkt/transport/common/pair_correlation.hpp"
 
 namespace py = pybind11;
@@ -187,6 +190,49 @@ py::dict evolve(const py::object& scene, const std::vector<std::string>& overrid
     result = gkt::cli::evolve(parsed, counters);
   }
   return to_columns(result);
+}
+
+py::dict dsmc(const py::object& scene, const std::vector<std::string>& overrides, int jobs) {
+  if (jobs < 1 || jobs > 64)
+    throw std::invalid_argument("jobs: must be an integer in [1, 64], got " + std::to_string(jobs));
+  toml::table parsed = scene_table(scene, overrides);
+  gkt::cli::DsmcRunOptions options;
+  options.jobs = jobs;
+  bool interrupted = false;
+  Table result;
+  {
+    py::gil_scoped_release release;
+    result = gkt::cli::dsmc(std::move(parsed), options, interrupted);
+  }
+  return to_columns(result);
+}
+
+/// One run of the uniform-shear DSMC (gkt/simulation/uniform_shear_dsmc.hpp, theory.md §22.5):
+/// per batch the reduced shear rate, the stresses P_ij/(2nT) and T/T_initial.
+py::dict uniform_shear_dsmc(double alpha, double shear_rate, int dimension, int particles, double relaxation,
+                            int batches, double collisions_per_batch, std::uint64_t seed) {
+  gkt::DsmcSchedule schedule;
+  schedule.particles = particles;
+  schedule.relaxation = relaxation;
+  schedule.batches = batches;
+  schedule.per_batch = collisions_per_batch;
+  schedule.seed = seed;
+  gkt::UniformShearDsmcRun run;
+  {
+    py::gil_scoped_release release;
+    run = gkt::run_uniform_shear_dsmc(dimension, {alpha, shear_rate}, schedule);
+  }
+  py::dict out;
+  const auto put = [&out](const char* name, const std::vector<double>& values) {
+    out[name] = py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+  };
+  put("reduced_shear_rate", run.reduced_shear_rate);
+  put("stress_xx", run.stress_xx);
+  put("stress_yy", run.stress_yy);
+  put("stress_zz", run.stress_zz);
+  put("stress_xy", run.stress_xy);
+  put("temperature", run.temperature);
+  return out;
 }
 
 py::dict models() {
@@ -438,6 +484,24 @@ PYBIND11_MODULE(gkt, m) {
   m.def("evolve", &evolve, py::arg("scene"), py::kw_only(), py::arg("overrides") = std::vector<std::string>{},
         "Returns the time series of `gkt evolve` (time, collisions, temperature, a2, …, cooling_rate, and "
         "any requested coefficients) as {column: array}; scene and overrides as in table().");
+  m.def("dsmc", &dsmc, py::arg("scene"), py::kw_only(), py::arg("overrides") = std::vector<std::string>{},
+        py::arg("jobs") = 1,
+        "Returns the table of `gkt dsmc` (the direct simulation Monte Carlo of docs/theory.md section 21) as "
+        "{column: array}: one row of coefficients (a2, a3, cooling_rate, temperature_ratio_i, ...) each with its "
+        "<name>_error (standard error over the independent runs), or with [output] distribution = true the speed "
+        "histogram, or with haff = true T(t)/T0 against Haff's law. scene and overrides as in table(); jobs: "
+        "runs simulated in parallel (1 to 64; the result does not depend on it). The GIL is released while "
+        "simulating.");
+  m.def("uniform_shear_dsmc", &uniform_shear_dsmc, py::arg("alpha"), py::arg("shear_rate"), py::kw_only(),
+        py::arg("dimension") = 2, py::arg("particles") = 2000, py::arg("relaxation") = 50.0, py::arg("batches") = 10,
+        py::arg("collisions_per_batch") = 10.0, py::arg("seed") = 1,
+        "Returns one run of the uniform-shear-flow DSMC (docs/theory.md section 22.5; "
+        "gkt::run_uniform_shear_dsmc) as {column: array over the batches}: reduced_shear_rate "
+        "(a l/sqrt(2T/m)), stress_xx, stress_yy, stress_zz (0 in 2D), stress_xy (P_ij/(2nT)) and temperature "
+        "(T/T_initial), each sampled at the end of a batch. shear_rate is a/nu0(T_initial) (start at Grad's "
+        "value, `gkt.table` with model \"uniform-shear\"); relaxation and collisions_per_batch are collisions "
+        "per particle. Average independent runs (different seeds) for error bars. Bad input raises ValueError "
+        "naming the field. The GIL is released while simulating.");
   m.def("first_sonine", &first_sonine, py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
         "Returns the dilute first-Sonine set {a2, cooling_rate, shear_viscosity, thermal_conductivity, "
         "density_heat_coefficient} (reduced as in docs/conventions.md: zeta* = zeta/nu0, eta* = eta/eta0, "
