@@ -1,0 +1,221 @@
+// The steady dilute granular column in gravity (docs/theory.md §23; seed 001 §3.3.2, eq. (17)).
+#include "gkt/evolution/gravity_column.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_roots.h>
+#include <gsl/gsl_vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace gkt {
+
+namespace {
+
+/// The constants of theory.md (23.3)–(23.5) in reduced units (m = σ = g = 1, T in mgσ).
+struct ColumnConstants {
+  double viscosity_factor;     ///< E: η0 = E √T, E = (d+2)/(8 c_d)
+  double conductivity_factor;  ///< K: κ0 = K √T, K = d(d+2)/(2(d−1)) E
+  double a;                    ///< 2(κ* − μ*)
+  double mu;                   ///< μ*
+  double b;                    ///< d ζ*/(2 E K), the sink of (23.5)
+  double cross_section;        ///< π (d = 3), 2 (d = 2): the collision cross-section / σ^{d−1}
+};
+
+ColumnConstants constants(const GravityColumnProblem& p) {
+  const int d = p.dimension;
+  const double c_d = std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
+  const double e = (d + 2) / (8 * c_d);
+  const double k = d * (d + 2) / (2.0 * (d - 1)) * e;
+  const auto& t = p.transport;
+  return {e,
+          k,
+          2 * (t.thermal_conductivity - t.density_heat_coefficient),
+          t.density_heat_coefficient,
+          d * t.cooling_rate / (2 * e * k),
+          d == 3 ? std::numbers::pi : 2.0};
+}
+
+/// s = √T on the grid u_i = ln P + i h, i = 0 (lid) … M (floor), normalised to s_M = 1:
+/// a s'' + μ* s' − b e^{2u} s = 0 with the elastic lid a s' + μ* s = 0 at u_0 (theory.md (23.5)).
+struct Shape {
+  double lower = 0, step = 0;  ///< u_0 = ln P, h
+  std::vector<double> s;
+};
+
+void gsl_check(int status, const char* what) {
+  if (status != GSL_SUCCESS)
+    throw std::runtime_error(std::string("gravity column: ") + what + ": " + gsl_strerror(status));
+}
+
+using VectorPtr = std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)>;
+VectorPtr make_vector(std::size_t n) { return {gsl_vector_alloc(n), &gsl_vector_free}; }
+
+Shape solve_shape(const ColumnConstants& c, double lid_pressure, double particles, int intervals) {
+  const int m = intervals;
+  Shape shape;
+  shape.lower = std::log(lid_pressure);
+  shape.step = (std::log(lid_pressure + particles) - shape.lower) / m;
+  const double h = shape.step, a = c.a, mu = c.mu;
+  auto diag = make_vector(m), sup = make_vector(m - 1), sub = make_vector(m - 1), rhs = make_vector(m),
+       x = make_vector(m);
+  const double off_minus = a / (h * h) - mu / (2 * h), off_plus = a / (h * h) + mu / (2 * h);
+  for (int i = 0; i < m; ++i) {
+    const double sink = c.b * std::exp(2 * (shape.lower + i * h));
+    gsl_vector_set(rhs.get(), i, 0);
+    if (i == 0) {  // ghost point s_{−1} = s_1 + 2h (μ*/a) s_0 from the lid condition
+      gsl_vector_set(diag.get(), 0, -2 * a / (h * h) + 2 * mu / h - mu * mu / a - sink);
+      if (m > 1) gsl_vector_set(sup.get(), 0, 2 * a / (h * h));
+      continue;
+    }
+    gsl_vector_set(diag.get(), i, -2 * a / (h * h) - sink);
+    gsl_vector_set(sub.get(), i - 1, off_minus);
+    if (i + 1 < m) gsl_vector_set(sup.get(), i, off_plus);
+  }
+  gsl_vector_set(rhs.get(), m - 1, -off_plus);  // s_M = 1 at the floor
+  gsl_check(gsl_linalg_solve_tridiag(diag.get(), sup.get(), sub.get(), rhs.get(), x.get()), "tridiagonal solve");
+  shape.s.resize(m + 1);
+  for (int i = 0; i < m; ++i) shape.s[i] = gsl_vector_get(x.get(), i);
+  shape.s[m] = 1;
+  return shape;
+}
+
+/// ds/du at node i: the lid condition at i = 0, central inside, second-order one-sided at the floor.
+double slope(const ColumnConstants& c, const Shape& f, std::size_t i) {
+  const auto& s = f.s;
+  if (i == 0) return -c.mu * s[0] / c.a;
+  if (i + 1 == s.size()) return (3 * s[i] - 4 * s[i - 1] + s[i - 2]) / (2 * f.step);
+  return (s[i + 1] - s[i - 1]) / (2 * f.step);
+}
+
+/// The factor C with s = C f fixed by the floor condition (q is linear in s: q = K(a s' + μ* s)).
+double floor_scale(const ColumnConstants& c, const GravityColumnProblem& p, const Shape& f) {
+  if (p.floor == FloorCondition::temperature) return std::sqrt(p.floor_value);
+  const double q = c.conductivity_factor * (c.a * slope(c, f, f.s.size() - 1) + c.mu * f.s.back());
+  return p.floor_value / q;
+}
+
+/// H = C² ∫ f² du (theory.md (23.6), trapezoid).
+double height(const ColumnConstants& c, const GravityColumnProblem& p, const Shape& f) {
+  double sum = 0;
+  for (std::size_t i = 0; i + 1 < f.s.size(); ++i) sum += (f.s[i] * f.s[i] + f.s[i + 1] * f.s[i + 1]) / 2;
+  const double scale = floor_scale(c, p, f);
+  return scale * scale * sum * f.step;
+}
+
+struct RootData {
+  const ColumnConstants* c;
+  const GravityColumnProblem* p;
+};
+
+double height_mismatch(double log_pressure, void* data) {
+  const auto* r = static_cast<const RootData*>(data);
+  const Shape f = solve_shape(*r->c, std::exp(log_pressure), r->p->particles_per_area, r->p->intervals);
+  return std::log(height(*r->c, *r->p, f) / r->p->lid_height);
+}
+
+void check_positive(double v, const char* name) {
+  if (!std::isfinite(v) || v <= 0)
+    throw std::invalid_argument(std::string(name) + ": must be a finite number > 0, got " + std::to_string(v));
+}
+
+}  // namespace
+
+GravityColumnProfile solve_gravity_column(const GravityColumnProblem& p) {
+  if (p.dimension != 2 && p.dimension != 3)
+    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(p.dimension));
+  check_positive(p.particles_per_area, "particles_per_area");
+  check_positive(p.floor_value, "floor_value");
+  check_positive(p.lid_height, "lid_height");
+  if (p.intervals < 16)
+    throw std::invalid_argument("intervals: must be an integer >= 16, got " + std::to_string(p.intervals));
+  const auto& t = p.transport;
+  if (!(t.thermal_conductivity > t.density_heat_coefficient) || !std::isfinite(t.thermal_conductivity))
+    throw std::invalid_argument(
+        "thermal_conductivity: the column needs kappa* > mu* (theory.md (23.5)), got kappa* = " +
+        std::to_string(t.thermal_conductivity) + ", mu* = " + std::to_string(t.density_heat_coefficient));
+  if (!(t.cooling_rate >= 0) || !std::isfinite(t.cooling_rate) || !std::isfinite(t.density_heat_coefficient))
+    throw std::invalid_argument("cooling_rate: must be a finite number >= 0, got " + std::to_string(t.cooling_rate));
+  if (p.floor == FloorCondition::heat_flux && t.cooling_rate == 0)
+    throw std::invalid_argument("floor_value: a heat-flux floor needs alpha < 1 (an elastic column conducts no heat)");
+  const ColumnConstants c = constants(p);
+
+  // Bracket ln P: the height falls as the lid pushes harder (theory.md §23.2).
+  RootData data{&c, &p};
+  const double centre = std::log(p.particles_per_area);
+  double lo = centre - 4, hi = centre + 4;
+  while (height_mismatch(lo, &data) < 0) {
+    lo -= 2 * (centre - lo);
+    if (lo < centre - 600)
+      throw std::invalid_argument(
+          "lid_height: no lid pressure above e^-600 N gives this height; the gas would be "
+          "emptier than a double can hold up there: lower lid_height");
+  }
+  while (height_mismatch(hi, &data) > 0) {
+    hi += 2 * (hi - centre);
+    if (hi > centre + 600)
+      throw std::invalid_argument("lid_height: no lid pressure below e^600 N gives this height: raise lid_height");
+  }
+  gsl_function fn{&height_mismatch, &data};
+  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  gsl_check(gsl_root_fsolver_set(solver.get(), &fn, lo, hi), "Brent bracket");
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    gsl_check(gsl_root_fsolver_iterate(solver.get()), "Brent iteration");
+    lo = gsl_root_fsolver_x_lower(solver.get());
+    hi = gsl_root_fsolver_x_upper(solver.get());
+    if (gsl_root_test_interval(lo, hi, 1e-14, 1e-13) == GSL_SUCCESS) break;
+  }
+  const double log_pressure = gsl_root_fsolver_root(solver.get());
+
+  const Shape f = solve_shape(c, std::exp(log_pressure), p.particles_per_area, p.intervals);
+  const double scale = floor_scale(c, p, f);
+  const std::size_t m = f.s.size() - 1;
+  GravityColumnProfile out;
+  out.lid_pressure = std::exp(log_pressure);
+  for (auto* v : {&out.z, &out.number_density, &out.temperature, &out.heat_flux, &out.knudsen_number}) v->resize(m + 1);
+  double z = 0;
+  for (std::size_t j = 0; j <= m; ++j) {  // j from the floor; grid node i = m − j
+    const std::size_t i = m - j;
+    const double s = scale * f.s[i], su = scale * slope(c, f, i);
+    if (j > 0) z += f.step * (s * s + std::pow(scale * f.s[i + 1], 2)) / 2;
+    const double n = std::exp(f.lower + i * f.step) / (s * s);
+    out.z[j] = z;
+    out.number_density[j] = n;
+    out.temperature[j] = s * s;
+    out.heat_flux[j] = c.conductivity_factor * (c.a * su + c.mu * s);
+    const double free_path = 1 / (std::numbers::sqrt2 * c.cross_section * n);
+    const double grad_log_t = 2 * su / (s * s * s), grad_log_n = (1 - 2 * su / s) / (s * s);
+    out.knudsen_number[j] = free_path * std::max(std::abs(grad_log_t), std::abs(grad_log_n));
+    if (out.knudsen_height < 0 && out.knudsen_number[j] > 0.1) out.knudsen_height = z;
+  }
+  out.floor_heat_flux = out.heat_flux[0];
+  const double d = p.dimension, sink = d / 2 * t.cooling_rate / c.viscosity_factor;
+  for (std::size_t j = 0; j < m; ++j) {
+    const double dz = out.z[j + 1] - out.z[j];
+    out.particles += dz * (out.number_density[j] + out.number_density[j + 1]) / 2;
+    auto local = [&](std::size_t k) {
+      return sink * std::pow(out.number_density[k], 2) * std::pow(out.temperature[k], 1.5);  // (d/2) ζ n T
+    };
+    out.dissipation += dz * (local(j) + local(j + 1)) / 2;
+  }
+  return out;
+}
+
+GravityColumnPoint column_at(const GravityColumnProfile& profile, double z) {
+  const auto& zs = profile.z;
+  if (zs.empty() || !(z >= 0) || !(z <= zs.back() * (1 + 1e-12)))
+    throw std::invalid_argument("height: must be in [0, lid_height], got " + std::to_string(z));
+  std::size_t k = std::upper_bound(zs.begin(), zs.end(), z) - zs.begin();
+  k = std::clamp<std::size_t>(k, 1, zs.size() - 1);
+  const double w = (z - zs[k - 1]) / (zs[k] - zs[k - 1]);
+  auto at = [&](const std::vector<double>& v) { return v[k - 1] + w * (v[k] - v[k - 1]); };
+  return {at(profile.number_density), at(profile.temperature), at(profile.heat_flux), at(profile.knudsen_number)};
+}
+
+}  // namespace gkt
