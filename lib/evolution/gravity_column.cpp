@@ -41,11 +41,20 @@ ColumnConstants constants(const GravityColumnProblem& p) {
           d == 3 ? std::numbers::pi : 2.0};
 }
 
-/// s = √T on the grid u_i = ln P + i h, i = 0 (lid) … M (floor), normalised to s_M = 1:
-/// a s'' + μ* s' − b e^{2u} s = 0 with the elastic lid a s' + μ* s = 0 at u_0 (theory.md (23.5)).
+/// s = √T normalised to s = 1 at the floor, on the nodes u_i = U(y_i), y uniform with step k,
+/// i = 0 (lid, u = ln P) … M (floor, u = ln(P + N)): a s_uu + μ* s_u − b e^{2u} s = 0 with the
+/// elastic lid a s_u + μ* s = 0 (theory.md (23.5)). The map equidistributes the monitor
+/// w(u) = μ*/a + 1/100 + √(b/a) e^u (theory.md §23.3): the slow power law of the dilute top and the
+/// floor's boundary layer of width √(a/b)/x in u get comparable shares of the nodes.
 struct Shape {
-  double lower = 0, step = 0;  ///< u_0 = ln P, h
-  std::vector<double> s;
+  double step = 0;                ///< k, the step in y
+  std::vector<double> u, map, s;  ///< u_i, U'(y_i) = du/dy = 1/w(u_i), s_i
+};
+
+struct Monitor {
+  double base, lambda;
+  [[nodiscard]] double weight(double u) const { return base + lambda * std::exp(u); }
+  [[nodiscard]] double primitive(double u) const { return base * u + lambda * std::exp(u); }
 };
 
 void gsl_check(int status, const char* what) {
@@ -58,26 +67,48 @@ VectorPtr make_vector(std::size_t n) { return {gsl_vector_alloc(n), &gsl_vector_
 
 Shape solve_shape(const ColumnConstants& c, double lid_pressure, double particles, int intervals) {
   const int m = intervals;
+  const double a = c.a, mu = c.mu;
+  const Monitor w{mu / a + 0.01, std::sqrt(c.b / a)};
+  const double u0 = std::log(lid_pressure), u1 = std::log(lid_pressure + particles);
+  const double y0 = w.primitive(u0), y1 = w.primitive(u1);
   Shape shape;
-  shape.lower = std::log(lid_pressure);
-  shape.step = (std::log(lid_pressure + particles) - shape.lower) / m;
-  const double h = shape.step, a = c.a, mu = c.mu;
+  shape.step = (y1 - y0) / m;
+  const double k = shape.step;
+  shape.u.resize(m + 1);
+  shape.map.resize(m + 1);
+  shape.u[m] = u1;
+  for (int i = m - 1; i >= 0; --i) {  // Newton from the right: y(u) is increasing and convex
+    const double target = y0 + i * k;
+    double u = shape.u[i + 1];
+    for (int it = 0; it < 100; ++it) {
+      const double du = (w.primitive(u) - target) / w.weight(u);
+      u -= du;
+      if (std::abs(du) <= 1e-15 * (1 + std::abs(u))) break;
+    }
+    shape.u[i] = i == 0 ? u0 : u;
+  }
+  for (int i = 0; i <= m; ++i) shape.map[i] = 1 / w.weight(shape.u[i]);
   auto diag = make_vector(m), sup = make_vector(m - 1), sub = make_vector(m - 1), rhs = make_vector(m),
        x = make_vector(m);
-  const double off_minus = a / (h * h) - mu / (2 * h), off_plus = a / (h * h) + mu / (2 * h);
   for (int i = 0; i < m; ++i) {
-    const double sink = c.b * std::exp(2 * (shape.lower + i * h));
+    // a s_yy + (μ* U' − a U''/U') s_y − b e^{2u} U'² s = 0, U'' = −w'(u) U'³
+    const double map = shape.map[i], second = -w.lambda * std::exp(shape.u[i]) * map * map * map;
+    const double drift = mu * map - a * second / map, sink = c.b * std::exp(2 * shape.u[i]) * map * map;
+    const double minus = a / (k * k) - drift / (2 * k), plus = a / (k * k) + drift / (2 * k);
     gsl_vector_set(rhs.get(), i, 0);
-    if (i == 0) {  // ghost point s_{−1} = s_1 + 2h (μ*/a) s_0 from the lid condition
-      gsl_vector_set(diag.get(), 0, -2 * a / (h * h) + 2 * mu / h - mu * mu / a - sink);
-      if (m > 1) gsl_vector_set(sup.get(), 0, 2 * a / (h * h));
+    if (i == 0) {  // ghost point s_{−1} = s_1 + 2k U' (μ*/a) s_0 from the lid condition
+      gsl_vector_set(diag.get(), 0, -2 * a / (k * k) - sink + minus * 2 * k * map * mu / a);
+      gsl_vector_set(sup.get(), 0, 2 * a / (k * k));
       continue;
     }
-    gsl_vector_set(diag.get(), i, -2 * a / (h * h) - sink);
-    gsl_vector_set(sub.get(), i - 1, off_minus);
-    if (i + 1 < m) gsl_vector_set(sup.get(), i, off_plus);
+    gsl_vector_set(diag.get(), i, -2 * a / (k * k) - sink);
+    gsl_vector_set(sub.get(), i - 1, minus);
+    if (i + 1 < m) {
+      gsl_vector_set(sup.get(), i, plus);
+    } else {
+      gsl_vector_set(rhs.get(), i, -plus);  // s_M = 1 at the floor
+    }
   }
-  gsl_vector_set(rhs.get(), m - 1, -off_plus);  // s_M = 1 at the floor
   gsl_check(gsl_linalg_solve_tridiag(diag.get(), sup.get(), sub.get(), rhs.get(), x.get()), "tridiagonal solve");
   shape.s.resize(m + 1);
   for (int i = 0; i < m; ++i) shape.s[i] = gsl_vector_get(x.get(), i);
@@ -89,8 +120,8 @@ Shape solve_shape(const ColumnConstants& c, double lid_pressure, double particle
 double slope(const ColumnConstants& c, const Shape& f, std::size_t i) {
   const auto& s = f.s;
   if (i == 0) return -c.mu * s[0] / c.a;
-  if (i + 1 == s.size()) return (3 * s[i] - 4 * s[i - 1] + s[i - 2]) / (2 * f.step);
-  return (s[i + 1] - s[i - 1]) / (2 * f.step);
+  if (i + 1 == s.size()) return (3 * s[i] - 4 * s[i - 1] + s[i - 2]) / (2 * f.step) / f.map[i];
+  return (s[i + 1] - s[i - 1]) / (2 * f.step) / f.map[i];
 }
 
 /// The factor C with s = C f fixed by the floor condition (q is linear in s: q = K(a s' + μ* s)).
@@ -103,7 +134,8 @@ double floor_scale(const ColumnConstants& c, const GravityColumnProblem& p, cons
 /// H = C² ∫ f² du (theory.md (23.6), trapezoid).
 double height(const ColumnConstants& c, const GravityColumnProblem& p, const Shape& f) {
   double sum = 0;
-  for (std::size_t i = 0; i + 1 < f.s.size(); ++i) sum += (f.s[i] * f.s[i] + f.s[i + 1] * f.s[i + 1]) / 2;
+  for (std::size_t i = 0; i + 1 < f.s.size(); ++i)
+    sum += (f.s[i] * f.s[i] * f.map[i] + f.s[i + 1] * f.s[i + 1] * f.map[i + 1]) / 2;
   const double scale = floor_scale(c, p, f);
   return scale * scale * sum * f.step;
 }
@@ -150,10 +182,10 @@ GravityColumnProfile solve_gravity_column(const GravityColumnProblem& p) {
   const double centre = std::log(p.particles_per_area);
   double lo = centre - 4, hi = centre + 4;
   while (height_mismatch(lo, &data) < 0) {
-    lo -= 2 * (centre - lo);
-    if (lo < centre - 600)
+    lo = std::max(lo - 2 * (centre - lo), centre - 690);
+    if (height_mismatch(lo, &data) < 0 && lo <= centre - 690)
       throw std::invalid_argument(
-          "lid_height: no lid pressure above e^-600 N gives this height; the gas would be "
+          "lid_height: no lid pressure above e^-690 N gives this height; the gas would be "
           "emptier than a double can hold up there: lower lid_height");
   }
   while (height_mismatch(hi, &data) > 0) {
@@ -183,8 +215,8 @@ GravityColumnProfile solve_gravity_column(const GravityColumnProblem& p) {
   for (std::size_t j = 0; j <= m; ++j) {  // j from the floor; grid node i = m − j
     const std::size_t i = m - j;
     const double s = scale * f.s[i], su = scale * slope(c, f, i);
-    if (j > 0) z += f.step * (s * s + std::pow(scale * f.s[i + 1], 2)) / 2;
-    const double n = std::exp(f.lower + i * f.step) / (s * s);
+    if (j > 0) z += f.step * (s * s * f.map[i] + std::pow(scale * f.s[i + 1], 2) * f.map[i + 1]) / 2;
+    const double n = std::exp(f.u[i]) / (s * s);
     out.z[j] = z;
     out.number_density[j] = n;
     out.temperature[j] = s * s;
@@ -209,13 +241,16 @@ GravityColumnProfile solve_gravity_column(const GravityColumnProblem& p) {
 
 GravityColumnPoint column_at(const GravityColumnProfile& profile, double z) {
   const auto& zs = profile.z;
-  if (zs.empty() || !(z >= 0) || !(z <= zs.back() * (1 + 1e-12)))
+  if (zs.empty() || !(z >= 0) || !(z <= zs.back() * (1 + 1e-8)))  // z.back() = H to the root tolerance
     throw std::invalid_argument("height: must be in [0, lid_height], got " + std::to_string(z));
   std::size_t k = std::upper_bound(zs.begin(), zs.end(), z) - zs.begin();
   k = std::clamp<std::size_t>(k, 1, zs.size() - 1);
   const double w = (z - zs[k - 1]) / (zs[k] - zs[k - 1]);
   auto at = [&](const std::vector<double>& v) { return v[k - 1] + w * (v[k] - v[k - 1]); };
-  return {at(profile.number_density), at(profile.temperature), at(profile.heat_flux), at(profile.knudsen_number)};
+  // n and T (> 0) linear in their logarithm: exact for the barometric exponential.
+  auto log_at = [&](const std::vector<double>& v) { return v[k - 1] * std::pow(v[k] / v[k - 1], w); };
+  return {log_at(profile.number_density), log_at(profile.temperature), at(profile.heat_flux),
+          at(profile.knudsen_number)};
 }
 
 }  // namespace gkt

@@ -49,7 +49,7 @@ struct GravityColumnProfile {
 /// Returns the steady column of `problem` (theory.md (23.1)–(23.7)). Throws
 /// std::invalid_argument naming the field for d ∉ {2, 3}, N, floor_value or H not finite and > 0,
 /// intervals < 16, κ* ≤ μ* or ζ* < 0, or a heat-flux floor with ζ* = 0 (an elastic column
-/// conducts no heat), or a height H no lid pressure in [e^−600 N, e^600 N] gives.
+/// conducts no heat), or a height H no lid pressure in [e^−690 N, e^600 N] gives.
 GravityColumnProfile solve_gravity_column(const GravityColumnProblem& problem);
 
 /// n, T, q and the local Knudsen number at one height.
@@ -57,7 +57,8 @@ struct GravityColumnPoint {
   double number_density = 0, temperature = 0, heat_flux = 0, knudsen_number = 0;
 };
 
-/// Returns the profile at height z (linear interpolation between grid heights). Throws
+/// Returns the profile at height z (between grid heights: n, T linear in their logarithm, q and the
+/// Knudsen number linear). Throws
 /// std::invalid_argument naming `height` unless 0 ≤ z ≤ H.
 GravityColumnPoint column_at(const GravityColumnProfile& profile, double z);
 
