@@ -769,7 +769,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"order_and_tolerance", kGood + "tolerance = 1e-6\n", "", "order: give exactly one"},
         BadInput{"neither_order_nor_tolerance", "model = \"hard-spheres\"\n", "", "order: give exactly one"},
         BadInput{"unknown_model", "model = \"soft-spheres\"\norder = 1\n", "",
-                 "model: unknown model \"soft-spheres\"; valid models: \"aggregation\", \"hard-spheres\""},
+                 "model: unknown model \"soft-spheres\"; valid models: \"aggregation\", \"gravity-column\", "
+                 "\"hard-spheres\""},
         BadInput{"missing_model", "order = 1\n", "", "model: required"},
         BadInput{"unknown_coefficient", kGood + "coefficients = [\"bulk_viscosity\"]\n", "",
                  "coefficients: unknown coefficient"},
