@@ -220,12 +220,17 @@ GravityColumnProfile solve_gravity_column(const GravityColumnProblem& p) {
     out.z[j] = z;
     out.number_density[j] = n;
     out.temperature[j] = s * s;
-    out.heat_flux[j] = c.conductivity_factor * (c.a * su + c.mu * s);
+    // (23.4); at the lid the condition a s' + μ* s = 0 makes it zero exactly, not to roundoff
+    out.heat_flux[j] = i == 0 ? 0.0 : c.conductivity_factor * (c.a * su + c.mu * s);
     const double free_path = 1 / (std::numbers::sqrt2 * c.cross_section * n);
     const double grad_log_t = 2 * su / (s * s * s), grad_log_n = (1 - 2 * su / s) / (s * s);
     out.knudsen_number[j] = free_path * std::max(std::abs(grad_log_t), std::abs(grad_log_n));
     if (out.knudsen_height < 0 && out.knudsen_number[j] > 0.1) out.knudsen_height = z;
   }
+  // z(lid) equals H to Brent's tolerance; pin it (a relative change far below the grid error) so
+  // that a row at z = H reads the lid's node.
+  const double stretch = p.lid_height / out.z.back();
+  for (auto& height : out.z) height *= stretch;
   out.floor_heat_flux = out.heat_flux[0];
   const double d = p.dimension, sink = d / 2 * t.cooling_rate / c.viscosity_factor;
   for (std::size_t j = 0; j < m; ++j) {
@@ -243,6 +248,10 @@ GravityColumnPoint column_at(const GravityColumnProfile& profile, double z) {
   const auto& zs = profile.z;
   if (zs.empty() || !(z >= 0) || !(z <= zs.back() * (1 + 1e-8)))  // z.back() = H to the root tolerance
     throw std::invalid_argument("height: must be in [0, lid_height], got " + std::to_string(z));
+  if (z >= zs.back()) {  // at the lid (H to the root tolerance): its node, q = 0 exactly
+    const std::size_t l = zs.size() - 1;
+    return {profile.number_density[l], profile.temperature[l], profile.heat_flux[l], profile.knudsen_number[l]};
+  }
   std::size_t k = std::upper_bound(zs.begin(), zs.end(), z) - zs.begin();
   k = std::clamp<std::size_t>(k, 1, zs.size() - 1);
   const double w = (z - zs[k - 1]) / (zs[k] - zs[k - 1]);
