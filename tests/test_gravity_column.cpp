@@ -117,6 +117,9 @@ TEST(GravityColumn, RejectsBadInput) {
   p = inelastic_problem(100);
   p.dimension = 4;
   EXPECT_THROW(solve_gravity_column(p), std::invalid_argument);
+  p = inelastic_problem(100);
+  p.transport = {0.386, -0.93, 0.41};  // the engine's order-2 numbers at α = 0.05 (3D): no positive √T
+  EXPECT_THROW(solve_gravity_column(p), std::invalid_argument);
   const auto c = solve_gravity_column(inelastic_problem(100));
   EXPECT_THROW(static_cast<void>(gkt::column_at(c, 61)), std::invalid_argument);
   EXPECT_THROW(static_cast<void>(gkt::column_at(c, -0.1)), std::invalid_argument);

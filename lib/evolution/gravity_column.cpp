@@ -2,12 +2,11 @@
 #include "gkt/evolution/gravity_column.hpp"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_linalg.h>
 #include <gsl/gsl_roots.h>
-#include <gsl/gsl_vector.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -49,6 +48,7 @@ ColumnConstants constants(const GravityColumnProblem& p) {
 struct Shape {
   double step = 0;                ///< k, the step in y
   std::vector<double> u, map, s;  ///< u_i, U'(y_i) = du/dy = 1/w(u_i), s_i
+  bool failed = false;            ///< no positive finite √T on this grid (no regular column)
 };
 
 struct Monitor {
@@ -61,9 +61,6 @@ void gsl_check(int status, const char* what) {
   if (status != GSL_SUCCESS)
     throw std::runtime_error(std::string("gravity column: ") + what + ": " + gsl_strerror(status));
 }
-
-using VectorPtr = std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)>;
-VectorPtr make_vector(std::size_t n) { return {gsl_vector_alloc(n), &gsl_vector_free}; }
 
 Shape solve_shape(const ColumnConstants& c, double lid_pressure, double particles, int intervals) {
   const int m = intervals;
@@ -88,31 +85,37 @@ Shape solve_shape(const ColumnConstants& c, double lid_pressure, double particle
     shape.u[i] = i == 0 ? u0 : u;
   }
   for (int i = 0; i <= m; ++i) shape.map[i] = 1 / w.weight(shape.u[i]);
-  auto diag = make_vector(m), sup = make_vector(m - 1), sub = make_vector(m - 1), rhs = make_vector(m),
-       x = make_vector(m);
+  // The tridiagonal rows (sub, diag, sup) = 0 except the floor's; Thomas elimination without
+  // pivoting (the rows are diagonally dominant for b ≥ 0 and small k). A zero or non-finite pivot
+  // marks the shape failed: this runs inside GSL's root finder, which must not see an exception.
+  std::vector<double> diag(m), sup(m, 0), sub(m, 0), rhs(m, 0);
   for (int i = 0; i < m; ++i) {
     // a s_yy + (μ* U' − a U''/U') s_y − b e^{2u} U'² s = 0, U'' = −w'(u) U'³
     const double map = shape.map[i], second = -w.lambda * std::exp(shape.u[i]) * map * map * map;
     const double drift = mu * map - a * second / map, sink = c.b * std::exp(2 * shape.u[i]) * map * map;
     const double minus = a / (k * k) - drift / (2 * k), plus = a / (k * k) + drift / (2 * k);
-    gsl_vector_set(rhs.get(), i, 0);
     if (i == 0) {  // ghost point s_{−1} = s_1 + 2k U' (μ*/a) s_0 from the lid condition
-      gsl_vector_set(diag.get(), 0, -2 * a / (k * k) - sink + minus * 2 * k * map * mu / a);
-      gsl_vector_set(sup.get(), 0, 2 * a / (k * k));
+      diag[0] = -2 * a / (k * k) - sink + minus * 2 * k * map * mu / a;
+      sup[0] = 2 * a / (k * k);
       continue;
     }
-    gsl_vector_set(diag.get(), i, -2 * a / (k * k) - sink);
-    gsl_vector_set(sub.get(), i - 1, minus);
+    diag[i] = -2 * a / (k * k) - sink;
+    sub[i] = minus;
     if (i + 1 < m) {
-      gsl_vector_set(sup.get(), i, plus);
+      sup[i] = plus;
     } else {
-      gsl_vector_set(rhs.get(), i, -plus);  // s_M = 1 at the floor
+      rhs[i] = -plus;  // s_M = 1 at the floor
     }
   }
-  gsl_check(gsl_linalg_solve_tridiag(diag.get(), sup.get(), sub.get(), rhs.get(), x.get()), "tridiagonal solve");
-  shape.s.resize(m + 1);
-  for (int i = 0; i < m; ++i) shape.s[i] = gsl_vector_get(x.get(), i);
-  shape.s[m] = 1;
+  for (int i = 1; i < m; ++i) {
+    const double factor = sub[i] / diag[i - 1];
+    diag[i] -= factor * sup[i - 1];
+    rhs[i] -= factor * rhs[i - 1];
+  }
+  shape.s.assign(m + 1, 1.0);  // s_M = 1
+  for (int i = m - 1; i >= 0; --i) shape.s[i] = (rhs[i] - (i + 1 < m ? sup[i] * shape.s[i + 1] : 0)) / diag[i];
+  for (int i = 0; i < m; ++i)
+    if (!std::isfinite(shape.s[i]) || !(shape.s[i] > 0)) shape.failed = true;
   return shape;
 }
 
@@ -128,7 +131,7 @@ double slope(const ColumnConstants& c, const Shape& f, std::size_t i) {
 double floor_scale(const ColumnConstants& c, const GravityColumnProblem& p, const Shape& f) {
   if (p.floor == FloorCondition::temperature) return std::sqrt(p.floor_value);
   const double q = c.conductivity_factor * (c.a * slope(c, f, f.s.size() - 1) + c.mu * f.s.back());
-  return p.floor_value / q;
+  return q > 0 ? p.floor_value / q : std::numeric_limits<double>::quiet_NaN();
 }
 
 /// H = C² ∫ f² du (theory.md (23.6), trapezoid).
@@ -143,12 +146,25 @@ double height(const ColumnConstants& c, const GravityColumnProblem& p, const Sha
 struct RootData {
   const ColumnConstants* c;
   const GravityColumnProblem* p;
+  bool failed = false;  ///< some lid pressure gave no regular column (set inside GSL: no exceptions there)
 };
 
 double height_mismatch(double log_pressure, void* data) {
-  const auto* r = static_cast<const RootData*>(data);
+  auto* r = static_cast<RootData*>(data);
   const Shape f = solve_shape(*r->c, std::exp(log_pressure), r->p->particles_per_area, r->p->intervals);
-  return std::log(height(*r->c, *r->p, f) / r->p->lid_height);
+  const double h = f.failed ? std::numeric_limits<double>::quiet_NaN() : height(*r->c, *r->p, f);
+  if (!std::isfinite(h) || !(h > 0)) {
+    r->failed = true;
+    return 0;  // finite, so that GSL's error handler (abort) is never reached
+  }
+  return std::log(h / r->p->lid_height);
+}
+
+void check_regular(const RootData& data) {
+  if (data.failed)
+    throw std::invalid_argument(
+        "alpha: no column with a positive temperature at these kappa*, mu*, zeta* and floor condition (the "
+        "Navier-Stokes column needs alpha near 1, theory.md §23.3)");
 }
 
 void check_positive(double v, const char* name) {
@@ -181,18 +197,20 @@ GravityColumnProfile solve_gravity_column(const GravityColumnProblem& p) {
   RootData data{&c, &p};
   const double centre = std::log(p.particles_per_area);
   double lo = centre - 4, hi = centre + 4;
-  while (height_mismatch(lo, &data) < 0) {
+  while (height_mismatch(lo, &data) < 0 && !data.failed) {
     lo = std::max(lo - 2 * (centre - lo), centre - 690);
     if (height_mismatch(lo, &data) < 0 && lo <= centre - 690)
       throw std::invalid_argument(
           "lid_height: no lid pressure above e^-690 N gives this height; the gas would be "
           "emptier than a double can hold up there: lower lid_height");
   }
-  while (height_mismatch(hi, &data) > 0) {
+  check_regular(data);
+  while (height_mismatch(hi, &data) > 0 && !data.failed) {
     hi += 2 * (hi - centre);
     if (hi > centre + 600)
       throw std::invalid_argument("lid_height: no lid pressure below e^600 N gives this height: raise lid_height");
   }
+  check_regular(data);
   gsl_function fn{&height_mismatch, &data};
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
@@ -203,6 +221,7 @@ GravityColumnProfile solve_gravity_column(const GravityColumnProblem& p) {
     hi = gsl_root_fsolver_x_upper(solver.get());
     if (gsl_root_test_interval(lo, hi, 1e-14, 1e-13) == GSL_SUCCESS) break;
   }
+  check_regular(data);
   const double log_pressure = gsl_root_fsolver_root(solver.get());
 
   const Shape f = solve_shape(c, std::exp(log_pressure), p.particles_per_area, p.intervals);

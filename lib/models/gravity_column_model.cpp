@@ -92,6 +92,10 @@ class GravityColumnModel final : public TransportModel {
     engine_point.numbers["alpha"] = alpha;
     const auto ns =
         engine_->evaluate(engine_point, {"thermal_conductivity", "density_heat_coefficient", "cooling_rate"}, order);
+    for (std::size_t k = 0; k < ns.size(); ++k)
+      if (!ns[k].defined || !std::isfinite(ns[k].value.to_double()))
+        throw std::invalid_argument(
+            "alpha: the engine gives no kappa*, mu*, zeta* at this alpha and order (smooth-inelastic), so no column");
     GravityColumnProblem problem;
     problem.dimension = d;
     problem.transport = {ns[0].value.to_double(), ns[1].value.to_double(), ns[2].value.to_double()};

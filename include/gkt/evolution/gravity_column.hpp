@@ -5,8 +5,9 @@
 //
 // Reduced units (docs/conventions.md "gravity-column"): m = σ = g = 1, temperature in units of
 // mgσ, so z in σ, n in σ^{−d}, T in mgσ, q in m g^{3/2} σ^{5/2−d}. In the pressure coordinate
-// x = p = nT the problem is linear in s = √T (theory.md (23.4)); it is solved by second-order
-// finite differences on a grid uniform in u = ln x, and the lid pressure by a GSL Brent root.
+// x = p = nT the problem is linear in s = √T (theory.md (23.5)); it is solved by second-order
+// finite differences in u = ln x on nodes that equidistribute the floor's boundary layer and the
+// dilute top (theory.md §23.2), and the lid pressure by GSL's Brent root finder.
 #pragma once
 
 #include <vector>
@@ -49,7 +50,8 @@ struct GravityColumnProfile {
 /// Returns the steady column of `problem` (theory.md (23.1)–(23.7)). Throws
 /// std::invalid_argument naming the field for d ∉ {2, 3}, N, floor_value or H not finite and > 0,
 /// intervals < 16, κ* ≤ μ* or ζ* < 0, or a heat-flux floor with ζ* = 0 (an elastic column
-/// conducts no heat), or a height H no lid pressure in [e^−690 N, e^600 N] gives.
+/// conducts no heat), a height H no lid pressure in [e^−690 N, e^600 N] gives, or coefficients with
+/// no column of positive temperature (α far from 1: name `alpha`).
 GravityColumnProfile solve_gravity_column(const GravityColumnProblem& problem);
 
 /// n, T, q and the local Knudsen number at one height.
