@@ -380,7 +380,8 @@ TEST(CliEvolve, StatisticsAndBadInput) {
            {" --set 'times=[2, 1]'", "times: must be a non-empty list of increasing times > 0"},
            {" --set delta=0.1", "delta: unknown key for gkt evolve"},
            {" --set 'model=\"hard-spheres\"'",
-            "model: gkt evolve supports \"aggregation\", \"mixture\", \"rough\", \"rough-walton\", \"smooth-inelastic\""}}) {
+            "model: gkt evolve supports \"aggregation\", \"mixture\", \"rough\", \"rough-walton\", "
+            "\"smooth-inelastic\""}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("cooling_constant_alpha.toml") + " --output " + out + args);
     EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
@@ -857,7 +858,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"order_and_tolerance", kGood + "tolerance = 1e-6\n", "", "order: give exactly one"},
         BadInput{"neither_order_nor_tolerance", "model = \"hard-spheres\"\n", "", "order: give exactly one"},
         BadInput{"unknown_model", "model = \"soft-spheres\"\norder = 1\n", "",
-                 "model: unknown model \"soft-spheres\"; valid models: \"aggregation\", \"hard-spheres\""},
+                 "model: unknown model \"soft-spheres\"; valid models: \"aggregation\", \"gravity-column\", "
+                 "\"hard-spheres\""},
         BadInput{"missing_model", "order = 1\n", "", "model: required"},
         BadInput{"unknown_coefficient", kGood + "coefficients = [\"bulk_viscosity\"]\n", "",
                  "coefficients: unknown coefficient"},

@@ -16,6 +16,7 @@ using Factory = std::function<std::unique_ptr<TransportModel>()>;
 const std::map<std::string, Factory>& registry() {
   static const std::map<std::string, Factory> models{
       {"aggregation", detail::make_aggregation_model},
+      {"gravity-column", detail::make_gravity_column_model},
       {"hard-spheres", detail::make_hard_sphere_model},
       {"mixture", detail::make_mixture_model},
       {"rough", detail::make_rough_model},

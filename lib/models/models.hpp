@@ -48,6 +48,7 @@ Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, con
 /// linear scheme has no root (theory.md §19.6) instead of returning a state without one.
 RoughCoolingState linear_rough_state(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa);
 std::unique_ptr<TransportModel> make_uniform_shear_model();
+std::unique_ptr<TransportModel> make_gravity_column_model();
 
 /// Returns the spec of `dimension`: an integer in [2, 3], default 3, described as `description`.
 ParameterSpec dimension_spec(std::string description = "spatial dimension");

@@ -1,0 +1,42 @@
+// Direct simulation Monte Carlo of the granular column in gravity (docs/theory.md §23.3): smooth
+// inelastic disks (d = 2) or spheres (d = 3) at constant α, gravity g along −z, a thermal floor at
+// z = 0 (diffuse re-emission at the wall temperature) and a specular (elastic) lid at z = H; NTC
+// pair selection in cells of equal height, the collision rule of the homogeneous DSMC. The referee
+// of the hydrodynamic column (gravity_column.hpp): it reports the energy the floor gives the gas,
+// the flux condition under which the two are compared. Units m = σ = g = 1, T in mgσ.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace gkt {
+
+/// One column: α in (0, 1], N = ∫ n dz (σ^{1−d}), wall temperature (mgσ), lid height (σ), and the
+/// simulation's particles, cell height, time step and times (in √(σ/g)).
+struct GravityColumnDsmcParameters {
+  int dimension = 3;
+  double alpha = 1;
+  double particles_per_area = 5;
+  double floor_temperature = 50;
+  double lid_height = 150;
+  int particles = 20000;
+  double cell_height = 1;
+  double time_step = 0.02;
+  double settle_time = 300;  ///< run before sampling starts
+  double sample_time = 600;  ///< sampled (every 5th step)
+  std::uint64_t seed = 1;
+};
+
+/// The sampled column: cell centres z, n σ^d, T = m⟨V²⟩/d, T_z = m⟨V_z²⟩ (mgσ), the upward energy
+/// flux q (m g^{3/2} σ^{5/2−d}), and the energy per unit time and area the floor gave the gas.
+struct GravityColumnDsmcProfile {
+  std::vector<double> z, number_density, temperature, vertical_temperature, heat_flux;
+  double floor_heat_flux = 0;
+};
+
+/// Runs the column DSMC; throws std::invalid_argument naming the field on a bad dimension, α,
+/// N, wall temperature, lid height, particle number (< 100), cell height (not dividing into at
+/// least 2 cells), time step or times.
+GravityColumnDsmcProfile run_gravity_column_dsmc(const GravityColumnDsmcParameters& parameters);
+
+}  // namespace gkt
