@@ -183,14 +183,8 @@ AggregationResult evolve_aggregation(const AggregationGas& gas, const std::vecto
   check(CVodeSetLinearSolver(cvode.get(), solver.get(), matrix.get()), "CVodeSetLinearSolver");
 
   for (double target : times) {
-    sunrealtype reached = 0;
-    const int flag = CVode(cvode.get(), target, y.get(), &reached, CV_NORMAL);
-    if (flag < 0) {
-      const std::string what =
-          "CVODE: " + (cvode_message.empty() ? "CVode failed (flag " + std::to_string(flag) + ")" : cvode_message);
-      if (flag == CV_TOO_MUCH_ACC) throw EvolutionFailure("rtol: " + what + "; use rtol >= 1e-14", flag, reached);
-      throw EvolutionFailure("times: " + what + "; integrate to an earlier time or use a smaller atol", flag, reached);
-    }
+    const double reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message,
+                                              "integrate to an earlier time or use a smaller atol");
     AggregationSample s;
     s.time = reached;
     double number = 0, mass = 0;
@@ -208,17 +202,7 @@ AggregationResult evolve_aggregation(const AggregationGas& gas, const std::vecto
     if (keep_distribution) s.distribution.assign(yv, yv + sizes);
     result.samples.push_back(std::move(s));
   }
-  long v = 0;
-  CVodeGetNumSteps(cvode.get(), &v);
-  result.counters.steps = v;
-  CVodeGetNumRhsEvals(cvode.get(), &v);
-  result.counters.rhs_evaluations = v;
-  CVodeGetNumJacEvals(cvode.get(), &v);
-  result.counters.jacobian_evaluations = v;
-  CVodeGetNumErrTestFails(cvode.get(), &v);
-  result.counters.error_test_failures = v;
-  CVodeGetNumNonlinSolvIters(cvode.get(), &v);
-  result.counters.nonlinear_iterations = v;
+  result.counters = detail::read_counters(cvode.get());
   return result;
 }
 

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
+
 namespace gkt::detail {
 
 struct ContextDeleter {
@@ -43,6 +45,40 @@ inline void keep_message(int error_code, const char*, const char*, char* message
   for (char& c : kept)
     if (c == '\n' || c == '\r') c = ' ';
   while (!kept.empty() && (kept.back() == ' ' || kept.back() == '.')) kept.pop_back();
+}
+
+/// Returns the τ CVODE reached on its way to `target` (CV_NORMAL); throws EvolutionFailure
+/// "rtol: …" (too much accuracy asked) or "times: …" with CVODE's kept `message`, adding
+/// `times_hint` to the latter (docs/conventions.md, gkt evolve).
+inline double advance_to(void* cvode, double target, N_Vector y, const std::string& message,
+                         const std::string& times_hint) {
+  sunrealtype reached = 0;
+  const int flag = CVode(cvode, target, y, &reached, CV_NORMAL);
+  if (flag < 0) {
+    const std::string what =
+        "CVODE: " + (message.empty() ? "CVode failed (flag " + std::to_string(flag) + ")" : message);
+    if (flag == CV_TOO_MUCH_ACC) throw EvolutionFailure("rtol: " + what + "; use rtol >= 1e-14", flag, reached);
+    throw EvolutionFailure("times: " + what + "; " + times_hint, flag, reached);
+  }
+  return reached;
+}
+
+/// Returns CVODE's work counters for `cvode` (steps, right-hand sides, Jacobians, error-test
+/// failures, nonlinear iterations).
+inline EvolutionCounters read_counters(void* cvode) {
+  EvolutionCounters counters;
+  long v = 0;
+  CVodeGetNumSteps(cvode, &v);
+  counters.steps = v;
+  CVodeGetNumRhsEvals(cvode, &v);
+  counters.rhs_evaluations = v;
+  CVodeGetNumJacEvals(cvode, &v);
+  counters.jacobian_evaluations = v;
+  CVodeGetNumErrTestFails(cvode, &v);
+  counters.error_test_failures = v;
+  CVodeGetNumNonlinSolvIters(cvode, &v);
+  counters.nonlinear_iterations = v;
+  return counters;
 }
 
 }  // namespace gkt::detail

@@ -132,14 +132,8 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
 
   EvolutionResult result;
   for (double target : times) {
-    sunrealtype reached = 0;
-    const int flag = CVode(cvode.get(), target, y.get(), &reached, CV_NORMAL);
-    if (flag < 0) {
-      const std::string what =
-          "CVODE: " + (cvode_message.empty() ? "CVode failed (flag " + std::to_string(flag) + ")" : cvode_message);
-      if (flag == CV_TOO_MUCH_ACC) throw EvolutionFailure("rtol: " + what + "; use rtol >= 1e-14", flag, reached);
-      throw EvolutionFailure("times: " + what + "; integrate to an earlier time or use a smaller atol", flag, reached);
-    }
+    const double reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message,
+                                              "integrate to an earlier time or use a smaller atol");
     EvolutionSample s;
     s.time = reached;
     s.temperature = yv[0];
@@ -150,17 +144,7 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
         -problem.chi * (dimension + 2) * problem.at(yv[0] / temperature0).energy_moment(s.a) / (2.0 * dimension);
     result.samples.push_back(std::move(s));
   }
-  long v = 0;
-  CVodeGetNumSteps(cvode.get(), &v);
-  result.counters.steps = v;
-  CVodeGetNumRhsEvals(cvode.get(), &v);
-  result.counters.rhs_evaluations = v;
-  CVodeGetNumJacEvals(cvode.get(), &v);
-  result.counters.jacobian_evaluations = v;
-  CVodeGetNumErrTestFails(cvode.get(), &v);
-  result.counters.error_test_failures = v;
-  CVodeGetNumNonlinSolvIters(cvode.get(), &v);
-  result.counters.nonlinear_iterations = v;
+  result.counters = detail::read_counters(cvode.get());
   return result;
 }
 

@@ -171,14 +171,8 @@ MixtureEvolutionResult evolve_mixture_cooling(const Mixture& mixture, MixtureHcs
 
   MixtureEvolutionResult result;
   for (double target : times) {
-    sunrealtype reached = 0;
-    const int flag = CVode(cvode.get(), target, y.get(), &reached, CV_NORMAL);
-    if (flag < 0) {
-      const std::string what =
-          "CVODE: " + (cvode_message.empty() ? "CVode failed (flag " + std::to_string(flag) + ")" : cvode_message);
-      if (flag == CV_TOO_MUCH_ACC) throw EvolutionFailure("rtol: " + what + "; use rtol >= 1e-14", flag, reached);
-      throw EvolutionFailure("times: " + what + "; integrate to an earlier time or use a smaller atol", flag, reached);
-    }
+    const double reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message,
+                                              "integrate to an earlier time or use a smaller atol");
     if (!problem.unpack(yv)) throw EvolutionFailure("times: the temperature left the range of a double", -1, reached);
     MixtureEvolutionSample sample;
     sample.time = reached;
@@ -188,17 +182,7 @@ MixtureEvolutionResult evolve_mixture_cooling(const Mixture& mixture, MixtureHcs
     sample.cooling_rate = dynamics.rates(problem.gamma, problem.cumulants).mixture_cooling_rate;
     result.samples.push_back(std::move(sample));
   }
-  long v = 0;
-  CVodeGetNumSteps(cvode.get(), &v);
-  result.counters.steps = v;
-  CVodeGetNumRhsEvals(cvode.get(), &v);
-  result.counters.rhs_evaluations = v;
-  CVodeGetNumJacEvals(cvode.get(), &v);
-  result.counters.jacobian_evaluations = v;
-  CVodeGetNumErrTestFails(cvode.get(), &v);
-  result.counters.error_test_failures = v;
-  CVodeGetNumNonlinSolvIters(cvode.get(), &v);
-  result.counters.nonlinear_iterations = v;
+  result.counters = detail::read_counters(cvode.get());
   return result;
 }
 

@@ -106,14 +106,8 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   const double d = dimension;
   RoughEvolutionResult result;
   for (double target : times) {
-    sunrealtype reached = 0;
-    const int flag = CVode(cvode.get(), target, y.get(), &reached, CV_NORMAL);
-    if (flag < 0) {
-      const std::string what =
-          "CVODE: " + (cvode_message.empty() ? "CVode failed (flag " + std::to_string(flag) + ")" : cvode_message);
-      if (flag == CV_TOO_MUCH_ACC) throw EvolutionFailure("rtol: " + what + "; use rtol >= 1e-14", flag, reached);
-      throw EvolutionFailure("times: " + what + "; integrate to an earlier time", flag, reached);
-    }
+    const double reached =
+        detail::advance_to(cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time");
     RoughEvolutionSample s;
     s.time = reached;
     s.translational_temperature = std::exp(yv[0]);
@@ -130,17 +124,7 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
                                        : problem.rates->at(theta / problem.rates->kappa(), a).translational_rate);
     result.samples.push_back(s);
   }
-  long v = 0;
-  CVodeGetNumSteps(cvode.get(), &v);
-  result.counters.steps = v;
-  CVodeGetNumRhsEvals(cvode.get(), &v);
-  result.counters.rhs_evaluations = v;
-  CVodeGetNumJacEvals(cvode.get(), &v);
-  result.counters.jacobian_evaluations = v;
-  CVodeGetNumErrTestFails(cvode.get(), &v);
-  result.counters.error_test_failures = v;
-  CVodeGetNumNonlinSolvIters(cvode.get(), &v);
-  result.counters.nonlinear_iterations = v;
+  result.counters = detail::read_counters(cvode.get());
   return result;
 }
 
