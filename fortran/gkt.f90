@@ -68,6 +68,7 @@ module gkt
   public :: gkt_last_error, gkt_version
   public :: gkt_first_sonine_values, gkt_first_sonine_physical, gkt_enskog_state_at
   public :: gkt_enskog_first_sonine_values, gkt_enskog_first_sonine_values_at, gkt_enskog_first_sonine_physical
+  public :: gkt_first_sonine_values_cells, gkt_enskog_first_sonine_values_cells
   public :: gkt_model_create, gkt_model_destroy, gkt_model_set_number, gkt_model_set_choice, gkt_model_evaluate
   public :: gkt_binary_table_create, gkt_binary_table_destroy, gkt_binary_table_interpolation_error
   public :: gkt_binary_table_create_to_tolerance, gkt_binary_table_build_cost
@@ -113,6 +114,24 @@ module gkt
       real(c_double), value :: alpha
       type(gkt_enskog_state), intent(in) :: state
       type(gkt_enskog_first_sonine), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_first_sonine_values_cells(dimension, cells, alpha, out) bind(C, name="gkt_first_sonine_values_cells") &
+        result(status)
+      import :: c_int, c_size_t, c_double, gkt_first_sonine
+      integer(c_int), value :: dimension
+      integer(c_size_t), value :: cells
+      real(c_double), intent(in) :: alpha(*)
+      type(gkt_first_sonine), intent(inout) :: out(*)
+      integer(c_int) :: status
+    end function
+    function c_enskog_first_sonine_values_cells(dimension, cells, alpha, packing_fraction, out) &
+        bind(C, name="gkt_enskog_first_sonine_values_cells") result(status)
+      import :: c_int, c_size_t, c_double, gkt_enskog_first_sonine
+      integer(c_int), value :: dimension
+      integer(c_size_t), value :: cells
+      real(c_double), intent(in) :: alpha(*), packing_fraction(*)
+      type(gkt_enskog_first_sonine), intent(inout) :: out(*)
       integer(c_int) :: status
     end function
     function c_binary_table_evaluate_cells(table, cells, fraction_1, number_density, temperature, out) &
@@ -401,6 +420,28 @@ contains
     integer(c_int) :: status
     status = c_binary_table_evaluate_cells(table%handle, int(size(fraction_1), c_size_t), fraction_1, number_density, &
                                            temperature, out)
+  end function
+
+  !> Computes the dilute first-Sonine set in reduced units at the size(alpha) restitutions alpha(i)
+  !> into out(i), equal to gkt_first_sonine_values cell by cell; every alpha is checked first (the
+  !> message of a bad one names its index, from 0) and on a refusal out is left as it was.
+  function gkt_first_sonine_values_cells(dimension, alpha, out) result(status)
+    integer(c_int), intent(in) :: dimension
+    real(c_double), intent(in) :: alpha(:)
+    type(gkt_first_sonine), intent(inout) :: out(size(alpha))
+    integer(c_int) :: status
+    status = c_first_sonine_values_cells(dimension, int(size(alpha), c_size_t), alpha, out)
+  end function
+
+  !> Computes the dense first-Sonine set in reduced units at the size(alpha) states (alpha(i),
+  !> packing_fraction(i)) into out(i), equal to gkt_enskog_first_sonine_values cell by cell; every
+  !> cell is checked first (the message names its index, from 0), out left as it was on a refusal.
+  function gkt_enskog_first_sonine_values_cells(dimension, alpha, packing_fraction, out) result(status)
+    integer(c_int), intent(in) :: dimension
+    real(c_double), intent(in) :: alpha(:), packing_fraction(size(alpha))
+    type(gkt_enskog_first_sonine), intent(inout) :: out(size(alpha))
+    integer(c_int) :: status
+    status = c_enskog_first_sonine_values_cells(dimension, int(size(alpha), c_size_t), alpha, packing_fraction, out)
   end function
 
   !> Evaluates the table at mole fraction x_1 and packing fraction phi in reduced units.

@@ -68,6 +68,13 @@ typedef struct gkt_first_sonine {
  *  α in (0, 1]. Thread-safe. */
 gkt_status gkt_first_sonine_values(int dimension, double alpha, gkt_first_sonine* out);
 
+/** Computes the dilute first-Sonine set in reduced units at the `cells` restitutions of the
+ *  caller's array: out[i] as gkt_first_sonine_values(dimension, alpha[i], &out[i]), equal bit for
+ *  bit. Every α is checked before any cell is evaluated: on a bad one nothing is written and the
+ *  message names its index from 0 ("alpha[3]: must be a number in (0, 1], got 1.5"). alpha and out
+ *  must not be NULL (also when cells = 0). Thread-safe, no allocation. */
+gkt_status gkt_first_sonine_values_cells(int dimension, size_t cells, const double* alpha, gkt_first_sonine* out);
+
 /** The state of a one-component gas in physical units. */
 typedef struct gkt_gas {
   double mass;           /**< particle mass m > 0 */
@@ -115,6 +122,14 @@ gkt_status gkt_enskog_first_sonine_values(int dimension, double alpha, double pa
  *  chi > 0, all finite. Thread-safe. */
 gkt_status gkt_enskog_first_sonine_values_at(int dimension, double alpha, const gkt_enskog_state* state,
                                              gkt_enskog_first_sonine* out);
+
+/** Computes the dense first-Sonine set in reduced units at the `cells` states (alpha[i],
+ *  packing_fraction[i]) of the caller's arrays: out[i] as gkt_enskog_first_sonine_values, equal
+ *  bit for bit. Every cell is checked before any is evaluated: on a bad one nothing is written and
+ *  the message names its index from 0 ("packing_fraction[3]: …"). No pointer may be NULL (also
+ *  when cells = 0). Thread-safe, no allocation. */
+gkt_status gkt_enskog_first_sonine_values_cells(int dimension, size_t cells, const double* alpha,
+                                                const double* packing_fraction, gkt_enskog_first_sonine* out);
 
 /** Computes the dense first-Sonine set for the gas in physical units: φ = n v_d σ^d (must lie in
  *  the range of gkt_enskog_state_at), then η = η*η0, κ_b = κ_b*η0, κ = κ*κ0, μ = μ*Tκ0/n,

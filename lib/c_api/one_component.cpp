@@ -1,8 +1,9 @@
 // The C API of the one-component gas (include/gkt/gkt.h): the dilute and dense first-Sonine sets,
-// reduced and in physical units, and the double contact value χ(φ). Each call is the C++ call of
-// gkt/cell.hpp behind the exception barrier; physical units through the reference gas
-// (docs/conventions.md "Reference values").
+// reduced and in physical units, per cell and for the caller's arrays of cells, and the double
+// contact value χ(φ). Each call is the C++ call of gkt/cell.hpp behind the exception barrier (one
+// per batch); physical units through the reference gas (docs/conventions.md "Reference values").
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +45,36 @@ gkt_enskog_first_sonine to_c(const EnskogFirstSonineValues& v) {
           v.cooling_rate_first_order};
 }
 
+/// True if every cell's inputs lie in the ranges the single-cell calls accept (α ∈ (0, 1], and φ in
+/// [0, 0.5] (3D) or [0, 0.7] (2D) when phi is given; NaN fails): a few compares per cell, no message.
+bool cell_in_range(int dimension, double alpha, const double* phi) {
+  if (!(alpha > 0 && alpha <= 1)) return false;
+  return phi == nullptr || (*phi >= 0 && *phi <= (dimension == 3 ? 0.5 : 0.7));
+}
+
+/// Throws the Refusal of cell i: the single-cell call's own message with the field named by its
+/// index ("alpha[3]: must be a number in (0, 1], got 1.5"). Runs the single-cell call (enskog_state
+/// when phi is given) only to obtain that message; out of line and cold.
+[[noreturn, gnu::cold, gnu::noinline]] void refuse_cell(int dimension, std::size_t i, double alpha, const double* phi) {
+  std::string message;
+  try {
+    if (phi != nullptr) static_cast<void>(gkt::enskog_state(dimension, *phi));
+    static_cast<void>(gkt::first_sonine_values(dimension, alpha));
+    message = "alpha: out of range, got " + number(alpha);  // cell_in_range and the library disagree (a bug)
+  } catch (const std::invalid_argument& e) {
+    message = e.what();
+  }
+  const std::size_t colon = message.find(':');
+  message.insert(colon == std::string::npos ? 0 : colon, "[" + std::to_string(i) + "]");
+  throw Refusal{GKT_INVALID_ARGUMENT, message};
+}
+
+/// Throws a Refusal unless dimension is 2 or 3.
+void require_dimension(int dimension) {
+  if (dimension != 2 && dimension != 3)
+    throw Refusal{GKT_INVALID_ARGUMENT, "dimension: must be 2 or 3, got " + std::to_string(dimension)};
+}
+
 }  // namespace
 }  // namespace gkt::c_api
 
@@ -56,6 +87,19 @@ gkt_status gkt_first_sonine_values(int dimension, double alpha, gkt_first_sonine
   return guarded([&] {
     require_pointer(out, "out");
     *out = gkt::c_api::to_c(gkt::first_sonine_values(dimension, alpha));
+    return GKT_OK;
+  });
+}
+
+gkt_status gkt_first_sonine_values_cells(int dimension, size_t cells, const double* alpha, gkt_first_sonine* out) {
+  return guarded([&] {
+    require_pointer(alpha, "alpha");
+    require_pointer(out, "out");
+    gkt::c_api::require_dimension(dimension);
+    for (std::size_t i = 0; i < cells; ++i)  // every cell checked before any is written
+      if (!gkt::c_api::cell_in_range(dimension, alpha[i], nullptr)) [[unlikely]]
+        gkt::c_api::refuse_cell(dimension, i, alpha[i], nullptr);
+    for (std::size_t i = 0; i < cells; ++i) out[i] = gkt::c_api::to_c(gkt::first_sonine_values(dimension, alpha[i]));
     return GKT_OK;
   });
 }
@@ -88,6 +132,24 @@ gkt_status gkt_enskog_first_sonine_values(int dimension, double alpha, double pa
     require_pointer(out, "out");
     const gkt::EnskogState state = gkt::enskog_state(dimension, packing_fraction);
     *out = gkt::c_api::to_c(gkt::enskog_first_sonine_values(dimension, alpha, state));
+    return GKT_OK;
+  });
+}
+
+gkt_status gkt_enskog_first_sonine_values_cells(int dimension, size_t cells, const double* alpha,
+                                                const double* packing_fraction, gkt_enskog_first_sonine* out) {
+  return guarded([&] {
+    require_pointer(alpha, "alpha");
+    require_pointer(packing_fraction, "packing_fraction");
+    require_pointer(out, "out");
+    gkt::c_api::require_dimension(dimension);
+    for (std::size_t i = 0; i < cells; ++i)  // every cell checked before any is written
+      if (!gkt::c_api::cell_in_range(dimension, alpha[i], &packing_fraction[i])) [[unlikely]]
+        gkt::c_api::refuse_cell(dimension, i, alpha[i], &packing_fraction[i]);
+    for (std::size_t i = 0; i < cells; ++i) {
+      const gkt::EnskogState state = gkt::enskog_state(dimension, packing_fraction[i]);
+      out[i] = gkt::c_api::to_c(gkt::enskog_first_sonine_values(dimension, alpha[i], state));
+    }
     return GKT_OK;
   });
 }

@@ -144,6 +144,65 @@ static void one_component(void) {
   CHECK(strncmp(gkt_last_error(), "packing_fraction:", 17) == 0);
 }
 
+/* The batched calls over 101 cells equal the single-cell calls bit for bit, in 2D and 3D; a bad
+ * cell anywhere (here in the middle) is refused naming its index, and no cell of out is written. */
+#define CELLS 101
+static void one_component_cells(void) {
+  static double alpha[CELLS], phi[CELLS];
+  static gkt_first_sonine v[CELLS], one;
+  static gkt_enskog_first_sonine e[CELLS], e_one, e_sentinel[CELLS];
+  static gkt_first_sonine sentinel[CELLS];
+  int dimension;
+  size_t i;
+  for (i = 0; i < CELLS; ++i) {
+    alpha[i] = 0.05 + 0.95 * (double)i / (CELLS - 1); /* 0.05 … 1 */
+    phi[i] = 0.49 * (double)((i * 37) % CELLS) / (CELLS - 1); /* 0 … 0.49, scrambled */
+  }
+  for (dimension = 2; dimension <= 3; ++dimension) {
+    CHECK(gkt_first_sonine_values_cells(dimension, CELLS, alpha, v) == GKT_OK);
+    CHECK(gkt_enskog_first_sonine_values_cells(dimension, CELLS, alpha, phi, e) == GKT_OK);
+    for (i = 0; i < CELLS; ++i) {
+      CHECK(gkt_first_sonine_values(dimension, alpha[i], &one) == GKT_OK);
+      CHECK(memcmp(&one, &v[i], sizeof one) == 0);
+      CHECK(gkt_enskog_first_sonine_values(dimension, alpha[i], phi[i], &e_one) == GKT_OK);
+      CHECK(memcmp(&e_one, &e[i], sizeof e_one) == 0);
+    }
+  }
+  CHECK(gkt_first_sonine_values_cells(3, 0, alpha, v) == GKT_OK); /* no cells: nothing to do */
+
+  /* A bad cell in the middle: the status, its index in the message, out untouched. */
+  memset(sentinel, 0x5a, sizeof sentinel);
+  memset(e_sentinel, 0x5a, sizeof e_sentinel);
+  memcpy(v, sentinel, sizeof v);
+  memcpy(e, e_sentinel, sizeof e);
+  alpha[57] = 1.5;
+  EXPECT_ERROR(gkt_first_sonine_values_cells(3, CELLS, alpha, v), GKT_INVALID_ARGUMENT,
+               "alpha[57]: must be a number in (0, 1], got 1.5");
+  EXPECT_ERROR(gkt_enskog_first_sonine_values_cells(2, CELLS, alpha, phi, e), GKT_INVALID_ARGUMENT,
+               "alpha[57]: must be a number in (0, 1]");
+  alpha[57] = nan("");
+  EXPECT_ERROR(gkt_first_sonine_values_cells(2, CELLS, alpha, v), GKT_INVALID_ARGUMENT, "alpha[57]:");
+  alpha[57] = 0.9;
+  phi[50] = 0.55; /* above 0.5 in 3D, allowed in 2D */
+  EXPECT_ERROR(gkt_enskog_first_sonine_values_cells(3, CELLS, alpha, phi, e), GKT_INVALID_ARGUMENT,
+               "packing_fraction[50]: must be a number in [0, 0.5] for dimension = 3, got 0.55");
+  phi[50] = -0.01;
+  EXPECT_ERROR(gkt_enskog_first_sonine_values_cells(2, CELLS, alpha, phi, e), GKT_INVALID_ARGUMENT,
+               "packing_fraction[50]: must be a number in [0, 0.7]");
+  phi[50] = 0.3;
+  EXPECT_ERROR(gkt_first_sonine_values_cells(4, CELLS, alpha, v), GKT_INVALID_ARGUMENT, "dimension: must be 2 or 3");
+  EXPECT_ERROR(gkt_enskog_first_sonine_values_cells(1, CELLS, alpha, phi, e), GKT_INVALID_ARGUMENT, "dimension:");
+  EXPECT_ERROR(gkt_first_sonine_values_cells(3, CELLS, NULL, v), GKT_INVALID_ARGUMENT, "alpha: must not be NULL");
+  EXPECT_ERROR(gkt_first_sonine_values_cells(3, CELLS, alpha, NULL), GKT_INVALID_ARGUMENT, "out: must not be NULL");
+  EXPECT_ERROR(gkt_enskog_first_sonine_values_cells(3, CELLS, alpha, NULL, e), GKT_INVALID_ARGUMENT,
+               "packing_fraction: must not be NULL");
+  CHECK(memcmp(v, sentinel, sizeof v) == 0);
+  CHECK(memcmp(e, e_sentinel, sizeof e) == 0);
+  /* The repaired arrays are accepted again. */
+  CHECK(gkt_enskog_first_sonine_values_cells(3, CELLS, alpha, phi, e) == GKT_OK);
+  CHECK(memcmp(e, e_sentinel, sizeof e) != 0);
+}
+
 static void models(void) {
   gkt_model* model = NULL;
   gkt_coefficient c[2];
@@ -344,6 +403,7 @@ int main(void) {
   CHECK(strlen(gkt_version()) > 0);
   CHECK(strcmp(gkt_status_name(GKT_OUT_OF_RANGE), "GKT_OUT_OF_RANGE") == 0);
   one_component();
+  one_component_cells();
   models();
   binary_table();
   if (failures > 0) {

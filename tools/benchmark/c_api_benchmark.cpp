@@ -1,10 +1,14 @@
 // The per-cell cost through the C API (include/gkt/gkt.h) against the direct C++ call, in pairs
 // (docs/performance.md "C API"): the same inputs, the same work, the C call adding its argument
-// checks and the exception barrier. Also χ(φ) exact (rationals) against double.
+// checks and the exception barrier. Also χ(φ) exact (rationals) against double, and the batched
+// calls (gkt_*_cells) against single calls on the same array of cells.
 //
 //   build/bin/gkt_benchmark --benchmark_filter='Cell' --benchmark_min_time=0.5
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <numbers>
 
 #include "gkt/cell.hpp"
@@ -58,6 +62,79 @@ void CellEnskogC(benchmark::State& state) {
   }
 }
 BENCHMARK(CellEnskogC)->Unit(benchmark::kNanosecond);
+
+/// The batch against single calls on the same 256 cells per iteration (items = cells, so the
+/// reported time per item is the per-cell cost): C++ loop, C single calls, one C batch call.
+/// Arg 0 dilute, 1 dense (χ in double).
+constexpr std::size_t batch_cells = 256;
+
+struct BatchInputs {
+  std::array<double, batch_cells> alpha{}, phi{};
+  BatchInputs() {
+    for (std::size_t i = 0; i < batch_cells; ++i) {
+      alpha[i] = 0.5 + 0.49 * static_cast<double>(i) / (batch_cells - 1);
+      phi[i] = 0.3 * static_cast<double>((i * 37) % batch_cells) / (batch_cells - 1);
+    }
+  }
+};
+
+void CellBatchCpp(benchmark::State& state) {
+  const BatchInputs in;
+  std::array<gkt::FirstSonineValues, batch_cells> dilute;
+  std::array<gkt::EnskogFirstSonineValues, batch_cells> dense;
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      for (std::size_t i = 0; i < batch_cells; ++i) dilute[i] = gkt::first_sonine_values(3, in.alpha[i]);
+      benchmark::DoNotOptimize(dilute.data());
+    } else {
+      for (std::size_t i = 0; i < batch_cells; ++i)
+        dense[i] = gkt::enskog_first_sonine_values(3, in.alpha[i], gkt::enskog_state(3, in.phi[i]));
+      benchmark::DoNotOptimize(dense.data());
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * batch_cells));
+}
+BENCHMARK(CellBatchCpp)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+void CellBatchSingleC(benchmark::State& state) {
+  const BatchInputs in;
+  std::array<gkt_first_sonine, batch_cells> dilute;
+  std::array<gkt_enskog_first_sonine, batch_cells> dense;
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      for (std::size_t i = 0; i < batch_cells; ++i)
+        benchmark::DoNotOptimize(gkt_first_sonine_values(3, in.alpha[i], &dilute[i]));
+      benchmark::DoNotOptimize(dilute.data());
+    } else {
+      for (std::size_t i = 0; i < batch_cells; ++i)
+        benchmark::DoNotOptimize(gkt_enskog_first_sonine_values(3, in.alpha[i], in.phi[i], &dense[i]));
+      benchmark::DoNotOptimize(dense.data());
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * batch_cells));
+}
+BENCHMARK(CellBatchSingleC)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+void CellBatchC(benchmark::State& state) {
+  const BatchInputs in;
+  std::array<gkt_first_sonine, batch_cells> dilute;
+  std::array<gkt_enskog_first_sonine, batch_cells> dense;
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      benchmark::DoNotOptimize(gkt_first_sonine_values_cells(3, batch_cells, in.alpha.data(), dilute.data()));
+      benchmark::DoNotOptimize(dilute.data());
+    } else {
+      benchmark::DoNotOptimize(
+          gkt_enskog_first_sonine_values_cells(3, batch_cells, in.alpha.data(), in.phi.data(), dense.data()));
+      benchmark::DoNotOptimize(dense.data());
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * batch_cells));
+}
+BENCHMARK(CellBatchC)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 /// χ(φ) and φ dχ/dφ: arg 0 exact (rationals from the double φ, rounded), 1 double.
 void CellContactValue(benchmark::State& state) {
