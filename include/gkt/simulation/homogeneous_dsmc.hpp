@@ -93,7 +93,10 @@ struct DsmcSpecies {
 /// One run of a mixture: per species and batch T_i/T and a2,i = ⟨c⁴⟩_i/(d(d+2)/4) − 1
 /// (c² = m_i v²/(2T_i)); per batch ζ* (ν0 of the one-component gas of mass m̄ and diameter σ̄).
 struct MixtureDsmcRun {
+  /// Per species and batch ([species][batch]): T_i/T and a2,i.
+  /// @{
   std::vector<std::vector<double>> temperature_ratio, a2;  ///< [species][batch]
+  /// @}
   /// Per batch: the reduced cooling rate ζ*.
   std::vector<double> cooling_rate;
   /// The clock of the run.

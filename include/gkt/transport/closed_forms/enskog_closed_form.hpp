@@ -74,8 +74,8 @@ struct EnskogFirstSonineValues {
   /// dimensionless first-order cooling rate ζ_U.
   /// @{
   double a2, cooling_rate, pressure, shear_viscosity, bulk_viscosity, thermal_conductivity, density_heat_coefficient,
-      /// @}
       cooling_rate_first_order;
+  /// @}
 };
 
 /// Returns the dense first-Sonine set at α and the state (φ, χ, φ dχ/dφ) from the generated
