@@ -12,13 +12,18 @@ template <class T>
 class DenseMatrix {
  public:
   DenseMatrix() = default;
+  /// A rows × cols matrix of value-initialised T (zero for Rational / RationalPolynomial).
   DenseMatrix(int rows, int cols) : rows_(rows), cols_(cols), data_(static_cast<std::size_t>(rows) * cols) {}
+  /// Returns the number of rows.
   [[nodiscard]] int rows() const { return rows_; }
+  /// Returns the number of columns.
   [[nodiscard]] int cols() const { return cols_; }
+  /// Returns entry (r, c), zero-based, writable (bounds asserted in debug builds).
   T& operator()(int r, int c) {
     assert(r >= 0 && r < rows_ && c >= 0 && c < cols_);
     return data_[static_cast<std::size_t>(r) * cols_ + c];
   }
+  /// Returns entry (r, c), zero-based, read-only (bounds asserted in debug builds).
   const T& operator()(int r, int c) const {
     assert(r >= 0 && r < rows_ && c >= 0 && c < cols_);
     return data_[static_cast<std::size_t>(r) * cols_ + c];

@@ -9,7 +9,9 @@ namespace gkt {
 
 /// numerator(α)/denominator(α), exact, with a common content removed (denominator monic).
 struct RationalFunction {
+  /// The numerator polynomial in α.
   RationalPolynomial numerator;
+  /// The denominator polynomial in α (1 by default; monic once reduced()).
   RationalPolynomial denominator{1L};
 
   /// Returns the value at α (exact); throws std::domain_error at a pole.
@@ -19,14 +21,17 @@ struct RationalFunction {
   /// True if a/b == c/d as rational functions (a·d == b·c).
   [[nodiscard]] bool equals(const RationalFunction& other) const;
 
+  /// Returns a + b, reduced.
   friend RationalFunction operator+(const RationalFunction& a, const RationalFunction& b) {
     return RationalFunction{a.numerator * b.denominator + b.numerator * a.denominator, a.denominator * b.denominator}
         .reduced();
   }
+  /// Returns a - b, reduced.
   friend RationalFunction operator-(const RationalFunction& a, const RationalFunction& b) {
     return RationalFunction{a.numerator * b.denominator - b.numerator * a.denominator, a.denominator * b.denominator}
         .reduced();
   }
+  /// Returns a·b, reduced.
   friend RationalFunction operator*(const RationalFunction& a, const RationalFunction& b) {
     return RationalFunction{a.numerator * b.numerator, a.denominator * b.denominator}.reduced();
   }

@@ -30,8 +30,10 @@ DenseMatrix<Ring> sonine_collision_moments(const CollisionPair& pair, const Ring
 /// b ≤ K, c ≤ K; the loss moments ⟨X1^{a+c} X2^b⟩/J0 are the entries with c = 0.
 template <class Ring>
 struct ScalarMomentTable {
+  /// The truncation K: a ≤ 2K, b ≤ K, c ≤ K.
   int k_max = 0;
   std::vector<Ring> values;  ///< index (a·(K+1) + b)·(K+1) + c
+  /// Returns E(a, b, c) (exact).
   [[nodiscard]] const Ring& operator()(int a, int b, int c) const {
     return values[(static_cast<std::size_t>(a) * (k_max + 1) + b) * (k_max + 1) + c];
   }
@@ -67,14 +69,18 @@ class CollisionMomentTable {
 /// (velocity units of the pair's θ; double precision).
 double reference_collision_integral(const CollisionPair& pair);
 
+/// Explicit instantiation for a numeric α (compiled once in the library).
 extern template ScalarMomentTable<Rational> scalar_collision_moments<Rational>(const CollisionPair&, const Rational&,
                                                                                int);
+/// Explicit instantiation for a symbolic α (compiled once in the library).
 extern template ScalarMomentTable<RationalPolynomial> scalar_collision_moments<RationalPolynomial>(
     const CollisionPair&, const RationalPolynomial&, int);
 extern template class CollisionMomentTable<Rational>;
 extern template class CollisionMomentTable<RationalPolynomial>;
+/// Explicit instantiation for a numeric α (compiled once in the library).
 extern template DenseMatrix<Rational> sonine_collision_moments<Rational>(const CollisionPair&, const Rational&, Slot,
                                                                          Slot, int, int);
+/// Explicit instantiation for a symbolic α (compiled once in the library).
 extern template DenseMatrix<RationalPolynomial> sonine_collision_moments<RationalPolynomial>(const CollisionPair&,
                                                                                              const RationalPolynomial&,
                                                                                              Slot, Slot, int, int);

@@ -24,12 +24,16 @@ constexpr int slot_species(Slot s) { return static_cast<int>(s) % 2; }
 
 /// Masses and Maxwellian widths of a colliding pair; all exact.
 struct CollisionPair {
+  /// Spatial dimension d (2 or 3).
   int dimension = 3;
+  /// Mass of particle i (exact).
   Rational mass_i{1};
+  /// Mass of particle j (exact).
   Rational mass_j{1};
   /// Gaussian widths θ = m/(2T) of the reference Maxwellians at v1 and v2, in the
   /// velocity unit of the caller (θ = 1 means velocities in units of √(2T/m)).
   Rational theta_i{1};
+  /// Gaussian width θ_j = m_j/(2T_j) of the Maxwellian at v2 (see theta_i).
   Rational theta_j{1};
 
   /// Throws std::invalid_argument naming the offending field if the pair is unphysical.

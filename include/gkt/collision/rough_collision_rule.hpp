@@ -36,11 +36,17 @@ constexpr bool is_spin_slot(RoughSlot s) { return (static_cast<int>(s) % 4) >= 2
 /// λ = √(θ/κ), spin_width = 1 (θ symbolic through λ, see rough_parameters_symbolic_temperature).
 template <class Ring>
 struct RoughCollisionParameters {
+  /// Spatial dimension d (2 or 3).
   int dimension = 3;
+  /// Normal restitution α.
   Ring alpha{1L};
+  /// Tangential restitution β.
   Ring beta{-1L};
+  /// Reduced moment of inertia κ = 4I/(mσ²).
   Rational kappa{2, 5};
+  /// Spin scale λ: w = λ ŵ.
   Ring spin_scale{1L};
+  /// Gaussian width of ŵ: ŵ ~ exp(−spin_width ŵ²).
   Rational spin_width{5, 2};
 
   /// Returns η_n = (1+α)/2.

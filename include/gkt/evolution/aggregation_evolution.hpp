@@ -24,8 +24,11 @@ struct AggregationSample {
 
 /// The trajectory and what CVODE did; linear_solver is "dense" (K ≤ 64) or "spgmr" (Krylov).
 struct AggregationResult {
+  /// One sample per requested time, in order.
   std::vector<AggregationSample> samples;
+  /// CVODE's counters for the whole integration.
   EvolutionCounters counters;
+  /// The linear solver CVODE used: "dense" (K ≤ 64) or "spgmr" (Krylov).
   std::string linear_solver;
 };
 

@@ -28,18 +28,29 @@ enum class FloorCondition { temperature, heat_flux };
 /// One column: dimension, transport, N = ∫ n dz (in σ^{1−d}), floor condition and value (T(0) in
 /// mgσ or q(0) in m g^{3/2} σ^{5/2−d}), lid height H (in σ) and the number of grid intervals.
 struct GravityColumnProblem {
+  /// Spatial dimension d: 2 or 3.
   int dimension = 3;
+  /// The reduced transport coefficients κ*, μ*, ζ* at the column's α.
   ColumnTransport transport;
+  /// N = ∫ n dz, particles per unit area (σ^{1−d}).
   double particles_per_area = 1;
+  /// Whether the floor fixes T(0) or q(0).
   FloorCondition floor = FloorCondition::temperature;
+  /// T(0) in mgσ or q(0) in m g^{3/2} σ^{5/2−d}, as `floor` says; finite and > 0.
   double floor_value = 1;
+  /// Height H of the lid (σ); finite and > 0.
   double lid_height = 10;
+  /// Number of grid intervals, at least 16.
   int intervals = 4000;
 };
 
 /// The solved column on its grid, floor (index 0) to lid (last index), reduced as the problem.
 struct GravityColumnProfile {
+  /// Per grid point: height z (σ), n σ^d, T (mgσ), upward heat flux q (m g^{3/2} σ^{5/2−d}) and the local Knudsen
+  /// number ℓ max(|∂_z ln T|, |∂_z ln n|) (ℓ the dilute mean free path).
+  /// @{
   std::vector<double> z, number_density, temperature, heat_flux, knudsen_number;
+  /// @}
   double lid_pressure = 0;     ///< p(H), the lid's push per area (m g σ^{1−d})
   double floor_heat_flux = 0;  ///< q(0)
   double dissipation = 0;      ///< ∫ (d/2) ζ n T dz (trapezoid on the grid; equals q(0) − q(H))
@@ -56,7 +67,10 @@ GravityColumnProfile solve_gravity_column(const GravityColumnProblem& problem);
 
 /// n, T, q and the local Knudsen number at one height.
 struct GravityColumnPoint {
+  /// n σ^d, T (mgσ), q (m g^{3/2} σ^{5/2−d}) and the local Knudsen number at the height asked for.
+  /// @{
   double number_density = 0, temperature = 0, heat_flux = 0, knudsen_number = 0;
+  /// @}
 };
 
 /// Returns the profile at height z (between grid heights: n, T linear in their logarithm, q and the

@@ -56,6 +56,7 @@ std::array<std::array<std::complex<double>, 3>, 3> longitudinal_matrix(int dimen
 /// What the longitudinal modes of a mixture need (reduced as in docs/conventions.md "Mixtures";
 /// theory.md §17.7, dense §18.8).
 struct MixtureStabilityInput {
+  /// Spatial dimension d (2 or 3).
   int dimension = 3;
   std::vector<double> fraction;            ///< x_i
   double cooling_rate = 0;                 ///< ζ*

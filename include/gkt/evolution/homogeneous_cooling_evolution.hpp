@@ -25,7 +25,11 @@ struct EvolutionSample {
 
 /// CVODE's integration counters.
 struct EvolutionCounters {
+  /// CVODE's counts: internal steps, right-hand-side evaluations, Jacobian evaluations, local error test failures and
+  /// nonlinear solver iterations.
+  /// @{
   long steps = 0, rhs_evaluations = 0, jacobian_evaluations = 0, error_test_failures = 0, nonlinear_iterations = 0;
+  /// @}
 };
 
 /// CVODE stopped before a requested time: the times or tolerances asked for are beyond what it
@@ -35,6 +39,7 @@ struct EvolutionCounters {
 /// fell below what atol resolves) with CVODE's own message; CVODE itself prints nothing.
 class EvolutionFailure : public std::invalid_argument {
  public:
+  /// The failure with one-line `message`, CVODE's return code `flag` and the τ where it stopped.
   EvolutionFailure(const std::string& message, int flag, double time)
       : std::invalid_argument(message), flag_(flag), time_(time) {}
   /// Returns CVODE's return code (negative).
@@ -51,7 +56,9 @@ class EvolutionFailure : public std::invalid_argument {
 
 /// The samples at the requested times and the counters.
 struct EvolutionResult {
+  /// One sample per requested time, in order.
   std::vector<EvolutionSample> samples;
+  /// CVODE's counters for the whole integration.
   EvolutionCounters counters;
 };
 

@@ -27,7 +27,9 @@ struct MixtureEvolutionSample {
 
 /// The samples at the requested times and CVODE's counters.
 struct MixtureEvolutionResult {
+  /// One sample per requested time, in order.
   std::vector<MixtureEvolutionSample> samples;
+  /// CVODE's counters for the whole integration.
   EvolutionCounters counters;
 };
 

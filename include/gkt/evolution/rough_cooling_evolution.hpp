@@ -25,12 +25,17 @@ struct RoughEvolutionSample {
   double translational_temperature = 1;  ///< T_t/T_ref
   double rotational_temperature = 1;     ///< T_r/T_ref
   double cooling_rate = 0;               ///< ζ* = ζ_t/ν0(T_t) = ((d+2)/4) z_t (the table's `cooling_rate`)
-  double a20 = 0, a02 = 0, a11 = 0;      ///< 0 in the Maxwellian scheme
+  /// The cumulants a20, a02, a11 (docs/theory.md §19.6); 0 in the Maxwellian scheme.
+  /// @{
+  double a20 = 0, a02 = 0, a11 = 0;  ///< 0 in the Maxwellian scheme
+  /// @}
 };
 
 /// The samples at the requested times and CVODE's counters.
 struct RoughEvolutionResult {
+  /// One sample per requested time, in order.
   std::vector<RoughEvolutionSample> samples;
+  /// CVODE's counters for the whole integration.
   EvolutionCounters counters;
 };
 

@@ -14,7 +14,9 @@ namespace gkt {
 /// when the model has no α, e.g. the exact elastic Sonine approximants), or for the dense gas
 /// Σ R_m(α) m with φ, χ(φ) and φ dχ/dφ symbolic (theory.md §15.7).
 struct ClosedForm {
+  /// The form: a rational function of α, or the dense-gas sum over Enskog monomials.
   std::variant<RationalFunction, EnskogClosedForm> form;
+  /// Spatial dimension d the form was derived for.
   int dimension = 3;
   SonineScheme scheme = SonineScheme::standard;  ///< trial-function weight the form was derived with
 };

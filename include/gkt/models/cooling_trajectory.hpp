@@ -14,6 +14,7 @@ namespace gkt {
 /// evolution_parameters()), the output times and the coefficients wanted along the way. A model
 /// whose evolution parameters declare `t_end` sets its own output times: `times` stays empty.
 struct TrajectoryRequest {
+  /// The model's evolution parameters (TransportModel::evolution_parameters()).
   ParameterPoint parameters;
   std::vector<double> times;              ///< increasing, > 0 (τ = ω_M(0) t); empty if the model sets them
   std::vector<std::string> coefficients;  ///< from TransportModel::trajectory_coefficients()
@@ -23,7 +24,9 @@ struct TrajectoryRequest {
 /// `temperature`, `a2` … `aK`, `cooling_rate`, then the requested coefficients (the aggregation
 /// model: its own columns, docs/conventions.md).
 struct Trajectory {
+  /// Column names, in order.
   std::vector<std::string> columns;
+  /// One row per output time, one value per column.
   std::vector<std::vector<double>> rows;
   EvolutionCounters counters;  ///< CVODE's work
   /// The linear solver CVODE used, if the model chooses one (e.g. "dense", "spgmr"); empty

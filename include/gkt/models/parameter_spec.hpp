@@ -15,13 +15,23 @@ namespace gkt {
 /// A model parameter: its key, kind and allowed closed/open range or choices (used to validate
 /// input). A real parameter whose upper bound is at least ParameterSpec::unbounded() has none.
 struct ParameterSpec {
+  /// What values the parameter takes: an integer, a real number or one of named choices.
   enum class Kind { integer, real, choice };
+  /// The key, as typed on the command line (e.g. "alpha").
   std::string name;
+  /// Integer, real or choice.
   Kind kind = Kind::real;
+  /// Lower and upper bound of an integer or real parameter (exact).
+  /// @{
   Rational min, max;
+  /// @}
+  /// True if `min` itself is allowed (closed lower end).
   bool min_inclusive = true;
+  /// True if `max` itself is allowed (closed upper end).
   bool max_inclusive = true;
+  /// Value used when the key is not given.
   Rational default_value;
+  /// One-line meaning of the parameter.
   std::string description;
   std::vector<std::string> choices;  ///< allowed strings of a `choice` parameter (first = default)
   /// Returns the one-line description of the allowed values, e.g. "an integer in [2, 3]" or "a number > 0".
@@ -36,7 +46,9 @@ struct ParameterSpec {
 
 /// The parameters of one evaluation: numbers (exact) and named choices.
 struct ParameterPoint {
+  /// The numeric parameters by key (exact).
   std::map<std::string, Rational> numbers;
+  /// The choice parameters by key.
   std::map<std::string, std::string> choices;
   /// Returns the number `key`, or `fallback` if absent.
   [[nodiscard]] Rational number(const std::string& key, const Rational& fallback) const;
@@ -47,7 +59,9 @@ struct ParameterPoint {
 /// Sonine order to use: a fixed order, or the smallest order whose estimated truncation
 /// error is below a tolerance.
 struct OrderRequest {
+  /// The Sonine order used when no tolerance is given.
   int order = 1;
+  /// When set, the smallest order whose estimated truncation error is below this tolerance is used instead of `order`.
   std::optional<Rational> tolerance;
   /// Set with `order` when that order was chosen by a tolerance scan (the second pass of a `gkt table`
   /// row): values whose accuracy the Sonine order does not govern — a mixture's HCS cumulant order

@@ -43,7 +43,9 @@ const std::vector<std::string>& stability_coefficient_names();
 class TransportModel {
  public:
   virtual ~TransportModel() = default;
+  /// Returns the model's name.
   [[nodiscard]] virtual std::string name() const = 0;
+  /// Returns a one-line description of the model.
   [[nodiscard]] virtual std::string description() const = 0;
   /// Returns the canonical coefficient names this model computes.
   [[nodiscard]] virtual std::vector<std::string> coefficient_names() const = 0;

@@ -23,9 +23,11 @@ namespace gkt {
 /// normalised by ⟨(σ̂·g)^s⟩.
 template <class Ring>
 struct CollisionalTransferMoments {
+  /// Spatial dimension d (2 or 3).
   int dimension = 3;
   int n_max = 0;   ///< largest basis index of the flux tables
   int n_test = 0;  ///< largest test index of the source tables (≤ n_max)
+  /// HCS weight index K: k, l = 0..K in the tables.
   int k_max = 0;
   /// [p][k][l]: ⟨S_k(X1) D_l(X2) [Y(c1'):(H c2) S_p(X1') − Y(c1):(H c2) S_p(X1)]⟩_{−1}, Y = Y_2, n_H = 1.
   std::vector<Ring> shear_source;
@@ -51,9 +53,11 @@ struct CollisionalTransferMoments {
   /// [q][k]: ⟨S_k(X1) S_q(X2)⟩_{+2} (scalar S_q): the f0 f^(1) part of the cooling rate.
   std::vector<Ring> cooling_scalar;
 
+  /// Returns the offset of [p][k][l] in a three-index table: (p·(K+1) + k)·(K+1) + l.
   [[nodiscard]] std::size_t index(int p, int k, int l) const {
     return (static_cast<std::size_t>(p) * (k_max + 1) + k) * (k_max + 1) + l;
   }
+  /// Returns the offset of [k][l] in a two-index table: k·(K+1) + l.
   [[nodiscard]] std::size_t index(int k, int l) const { return static_cast<std::size_t>(k) * (k_max + 1) + l; }
 };
 
@@ -73,8 +77,10 @@ double collisional_transfer_factor(int dimension);
 /// (f0 ∂f0) terms of η*, bulk viscosity, κ*, μ* (theory.md (15.8), (15.11)).
 double collisional_gradient_factor(int dimension);
 
+/// Explicit instantiation for a numeric α (compiled once in the library).
 extern template CollisionalTransferMoments<Rational> collisional_transfer_moments<Rational>(int, const Rational&, int,
                                                                                             int, int);
+/// Explicit instantiation for a symbolic α (compiled once in the library).
 extern template CollisionalTransferMoments<RationalPolynomial> collisional_transfer_moments<RationalPolynomial>(
     int, const RationalPolynomial&, int, int, int);
 

@@ -18,7 +18,9 @@ class CumulantHierarchy {
   /// derivative weights w[p][k] = ⟨x S_p' S_k⟩ and the norms N_p (theory.md (9.2)–(9.3)).
   CumulantHierarchy(int dimension, int k_max, std::vector<double> t, std::vector<double> e, std::vector<double> c,
                     std::vector<std::vector<double>> w, std::vector<double> norms);
+  /// Returns the spatial dimension d.
   [[nodiscard]] int dimension() const { return dimension_; }
+  /// Returns the largest Sonine index K.
   [[nodiscard]] int k_max() const { return k_max_; }
   /// Returns R_1(a) = Σ a_k a_l E(k, l); ζ* = −((d+2)/(2d)) R_1 (9.4).
   [[nodiscard]] double energy_moment(const std::vector<double>& a) const;

@@ -41,13 +41,17 @@ std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, c
 /// Returns ν = √(2π) π^{d/2−1}/Γ(d/2), the factor between L and ⟨ψ_p, 𝓛ψ_q⟩/(nσ^{d−1}v0).
 double linearized_operator_prefactor(int dimension);
 
+/// Explicit instantiation for a numeric α (compiled once in the library).
 extern template std::vector<DenseMatrix<Rational>> hcs_linearized_operator_matrices<Rational>(int, const Rational&, int,
                                                                                               int, int,
                                                                                               const Rational&);
+/// Explicit instantiation for a symbolic α (compiled once in the library).
 extern template std::vector<DenseMatrix<RationalPolynomial>> hcs_linearized_operator_matrices<RationalPolynomial>(
     int, const RationalPolynomial&, int, int, int, const Rational&);
+/// Explicit instantiation for a numeric α (compiled once in the library).
 extern template DenseMatrix<Rational> linearized_operator_matrix<Rational>(int, const Rational&, OperatorPart, int,
                                                                            int);
+/// Explicit instantiation for a symbolic α (compiled once in the library).
 extern template DenseMatrix<RationalPolynomial> linearized_operator_matrix<RationalPolynomial>(
     int, const RationalPolynomial&, OperatorPart, int, int);
 

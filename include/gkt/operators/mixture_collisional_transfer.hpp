@@ -20,6 +20,7 @@ namespace gkt {
 /// The averages of one ordered pair; Sonine indices p, q = 0 … n_max (vector: S^(d/2), tensor:
 /// S^(d/2+1), scalar: S^(d/2−1)), velocities and ΔE_1 = ½m_i(v1'² − v1²) in the caller's units.
 struct PairTransferMoments {
+  /// The largest Sonine index: p, q = 0 … n_max.
   int n_max = 0;
   std::vector<double> source_density;      ///< [p] ⟨⟨σ̂·[c1' S_p(X1') − c1 S_p(X1)]⟩⟩
   std::vector<double> source_temperature;  ///< [p] the same times (X2 − d/2)

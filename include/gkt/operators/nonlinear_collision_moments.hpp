@@ -18,14 +18,18 @@ namespace gkt {
 /// The tensors T(p; k, l), p, k, l = 0..K, and E(k, l), exact in Ring.
 template <class Ring>
 struct BilinearCollisionMoments {
+  /// Spatial dimension d (2 or 3).
   int dimension = 3;
+  /// The largest Sonine index K.
   int k_max = 0;
   std::vector<Ring> sonine;     ///< T(p; k, l) at (p·(K+1) + k)·(K+1) + l
   std::vector<Ring> energy;     ///< E(k, l) at k·(K+1) + l
   std::vector<Ring> frequency;  ///< C(k, l) = ⟨S_k(X1) S_l(X2)⟩/J0 (collision rate) at k·(K+1) + l
+  /// Returns T(p; k, l) (exact).
   [[nodiscard]] const Ring& t(int p, int k, int l) const {
     return sonine[(static_cast<std::size_t>(p) * (k_max + 1) + k) * (k_max + 1) + l];
   }
+  /// Returns E(k, l) (exact).
   [[nodiscard]] const Ring& e(int k, int l) const { return energy[static_cast<std::size_t>(k) * (k_max + 1) + l]; }
 };
 
@@ -34,7 +38,9 @@ struct BilinearCollisionMoments {
 template <class Ring>
 BilinearCollisionMoments<Ring> bilinear_collision_moments(int dimension, const Ring& alpha, int k_max);
 
+/// Explicit instantiation for a numeric α (compiled once in the library).
 extern template BilinearCollisionMoments<Rational> bilinear_collision_moments<Rational>(int, const Rational&, int);
+/// Explicit instantiation for a symbolic α (compiled once in the library).
 extern template BilinearCollisionMoments<RationalPolynomial> bilinear_collision_moments<RationalPolynomial>(
     int, const RationalPolynomial&, int);
 

@@ -49,6 +49,7 @@ class ViscoelasticHierarchy {
   [[nodiscard]] double transfer(int order, int p, int k, int l) const;
   /// Returns the test-x² moment M^(J)(k, l) = ⟨S_k S_l Δ(X1²)⟩/J0 (BP's μ4 up to the factor −ν).
   [[nodiscard]] double fourth(int order, int k, int l) const;
+  /// Returns the largest Sonine index K of the tables.
   [[nodiscard]] int k_max() const { return k_max_; }
   /// Returns the number of restitution coefficients (the order of the δ'-series built on it).
   [[nodiscard]] int orders() const { return orders_; }

@@ -14,23 +14,36 @@ namespace gkt {
 /// One column: α in (0, 1], N = ∫ n dz (σ^{1−d}), wall temperature (mgσ), lid height (σ), and the
 /// simulation's particles, cell height, time step and times (in √(σ/g)).
 struct GravityColumnDsmcParameters {
+  /// Spatial dimension d: 2 (disks) or 3 (spheres).
   int dimension = 3;
+  /// Normal restitution α, in (0, 1].
   double alpha = 1;
+  /// N = ∫ n dz, particles per unit area (σ^{1−d}).
   double particles_per_area = 5;
+  /// Wall temperature of the thermal floor (mgσ).
   double floor_temperature = 50;
+  /// Height H of the specular lid (σ).
   double lid_height = 150;
+  /// Number of simulated particles (at least 100).
   int particles = 20000;
+  /// Height of a collision cell (σ).
   double cell_height = 1;
+  /// Time step (√(σ/g)).
   double time_step = 0.02;
   double settle_time = 300;  ///< run before sampling starts
   double sample_time = 600;  ///< sampled (every 5th step)
+  /// Seed of the run's random stream.
   std::uint64_t seed = 1;
 };
 
 /// The sampled column: cell centres z, n σ^d, T = m⟨V²⟩/d, T_z = m⟨V_z²⟩ (mgσ), the upward energy
 /// flux q (m g^{3/2} σ^{5/2−d}), and the energy per unit time and area the floor gave the gas.
 struct GravityColumnDsmcProfile {
+  /// Per cell: centre z (σ), n σ^d, T = m⟨V²⟩/d and T_z = m⟨V_z²⟩ (mgσ), upward energy flux q (m g^{3/2} σ^{5/2−d}).
+  /// @{
   std::vector<double> z, number_density, temperature, vertical_temperature, heat_flux;
+  /// @}
+  /// Energy per unit time and area the floor gave the gas (m g^{3/2} σ^{5/2−d}).
   double floor_heat_flux = 0;
 };
 

@@ -30,7 +30,10 @@ struct DsmcSchedule {
 
 /// A sample mean and its standard error.
 struct DsmcEstimate {
+  /// The sample mean and its standard error.
+  /// @{
   double mean = 0, error = 0;
+  /// @}
 };
 
 /// Returns the mean of `values` and its standard error √(s²/n), the values taken as independent
@@ -41,7 +44,10 @@ DsmcEstimate mean_and_error(std::span<const double> values);
 /// temperature at the end of the relaxation and ν0(T) = nT/η0(T) (docs/conventions.md). With a
 /// constant α the trace follows Haff's law T/T0 = (1 + ζ* t ν0(T0)/2)^{−2} once a2 has relaxed.
 struct DsmcTrace {
+  /// Per batch: the time t ν0(T0) and the temperature ratio T(t)/T0.
+  /// @{
   std::vector<double> time, temperature;
+  /// @}
 };
 
 /// The restitution of smooth grains: α constant (series empty), or the viscoelastic series
@@ -59,8 +65,13 @@ struct SmoothRestitution {
 /// rate ζ* = −Δln T/Δ(ν0 t) over the batch; the clock; the speed histogram (fraction of the
 /// sampled particles per bin, all batches together).
 struct SmoothDsmcRun {
+  /// Per batch: ⟨c⁴⟩, ⟨c⁶⟩ (c = v/√(2T/m)) and the reduced cooling rate ζ*.
+  /// @{
   std::vector<double> c4, c6, cooling_rate;
+  /// @}
+  /// The clock of the run.
   DsmcTrace trace;
+  /// Fraction of the sampled particles per speed bin, all batches together (empty without bins).
   std::vector<double> speed_histogram;
 };
 
@@ -71,15 +82,24 @@ SmoothDsmcRun run_smooth_hcs_dsmc(int d, const SmoothRestitution& restitution, c
 /// One species of a mixture: its number of particles, mass and diameter (units m̄, σ̄ of the
 /// mixture are fixed by the caller: the clock uses m̄ = Σ x_i m_i and σ̄ = Σ x_i σ_i).
 struct DsmcSpecies {
+  /// Number of particles of this species.
   int count = 0;
+  /// Mass and diameter of this species.
+  /// @{
   double mass = 1, diameter = 1;
+  /// @}
 };
 
 /// One run of a mixture: per species and batch T_i/T and a2,i = ⟨c⁴⟩_i/(d(d+2)/4) − 1
 /// (c² = m_i v²/(2T_i)); per batch ζ* (ν0 of the one-component gas of mass m̄ and diameter σ̄).
 struct MixtureDsmcRun {
+  /// Per species and batch ([species][batch]): T_i/T and a2,i.
+  /// @{
   std::vector<std::vector<double>> temperature_ratio, a2;  ///< [species][batch]
+  /// @}
+  /// Per batch: the reduced cooling rate ζ*.
   std::vector<double> cooling_rate;
+  /// The clock of the run.
   DsmcTrace trace;
 };
 
@@ -92,7 +112,10 @@ MixtureDsmcRun run_mixture_hcs_dsmc(int d, const std::vector<DsmcSpecies>& speci
 /// (constant, or Walton's β(γ) = min{β, −1 + ((1+κ)/κ)(1+α) μ_f cot γ} for a finite friction μ_f,
 /// docs/theory.md §19.10), reduced moment of inertia κ = 4I/(mσ²).
 struct RoughDsmcParameters {
+  /// Normal restitution α, tangential restitution β and reduced moment of inertia κ = 4I/(mσ²).
+  /// @{
   double alpha = 1, beta = -1, kappa = 0.4;
+  /// @}
   double friction = std::numeric_limits<double>::infinity();  ///< μ_f ≥ 0; +∞: constant β
   double initial_temperature_ratio = 1;                       ///< θ = T_r/T_t of the initial Maxwellians
   /// Uniform dilatation ∇·u = ε ν0(T_t) (ε = dilatation): peculiar velocities shrink as
@@ -104,8 +127,13 @@ struct RoughDsmcParameters {
 /// §19.6), the orientation correlation C = ⟨(v·w)²/(v²w²)⟩ (§19.8) and ζ* (ν0 of T_t, so the
 /// translational cooling rate); the clock of T_t; the histogram of the translational speed.
 struct RoughDsmcRun {
+  /// Per batch: θ = T_r/T_t, the cumulants a20, a02, a11, the orientation correlation C and ζ*.
+  /// @{
   std::vector<double> temperature_ratio, a20, a02, a11, orientation, cooling_rate;
+  /// @}
+  /// The clock of the translational temperature T_t.
   DsmcTrace trace;
+  /// Fraction of the sampled particles per translational speed bin, all batches together.
   std::vector<double> speed_histogram;
 };
 
@@ -115,9 +143,12 @@ RoughDsmcRun run_rough_hcs_dsmc(int d, const RoughDsmcParameters& parameters, co
 /// The state of a gas of sticking grains at one sample time, and the events of the window since the
 /// previous sample.
 struct AggregationDsmcSample {
-  double number = 0;                  ///< N(t)/N(0)
-  double temperature = 0;             ///< θ = Σ k v²/(d N) (total momentum zero; monomer mass 1)
+  double number = 0;       ///< N(t)/N(0)
+  double temperature = 0;  ///< θ = Σ k v²/(d N) (total momentum zero; monomer mass 1)
+  /// Events since the previous sample: sticking collisions and all collisions.
+  /// @{
   double sticks = 0, collisions = 0;  ///< events since the previous sample
+  /// @}
 };
 
 /// Runs one replica of `particles` monomers (mass 1, diameter 1) at θ = 1, number density 1, to

@@ -25,6 +25,7 @@ constexpr std::uint64_t dsmc_run_seed(std::uint64_t seed, std::uint64_t run) {
 /// A deterministic stream of uniforms, indices and standard Gaussians.
 class RandomStream {
  public:
+  /// A stream seeded with `seed` (same seed, same sequence).
   explicit RandomStream(std::uint64_t seed) : engine_(seed) {}
 
   /// Returns a uniform number in [0, 1) with 53 random bits.

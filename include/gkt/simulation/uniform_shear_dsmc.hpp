@@ -22,7 +22,10 @@ struct UniformShearDsmcParameters {
 /// One run: per batch (sampled at its end) the reduced shear rate γ = a ℓ/√(2T/m) (ℓ = 1/(2nσ)
 /// in 2D, 1/(πnσ²) in 3D), the stresses P_ij/(2nT) (stress_zz zero in 2D) and T/T_initial.
 struct UniformShearDsmcRun {
+  /// Per batch: γ = a ℓ/√(2T/m), the stresses P_ij/(2nT) (stress_zz zero in 2D) and T/T_initial.
+  /// @{
   std::vector<double> reduced_shear_rate, stress_xx, stress_yy, stress_zz, stress_xy, temperature;
+  /// @}
 };
 
 /// Runs the USF DSMC (`schedule.histogram_bins` is ignored); throws std::invalid_argument naming

@@ -17,10 +17,13 @@ enum class AggregationKernel {
 
 /// A granular gas of sticking grains, all at one granular temperature θ (Maxwellian, equipartition).
 struct AggregationGas {
+  /// Spatial dimension d (2 or 3).
   int dimension = 3;
   double alpha = 1;            ///< normal restitution of the rebounding collisions, (0, 1]
   double critical_energy = 0;  ///< θ*_11/θ0 of two monomers; θ*_ij = θ*_11 μ_ij/μ_11 (one critical speed)
+  /// Which collisions stick (StickingCriterion: which energy is compared with the critical one).
   StickingCriterion criterion = StickingCriterion::relative_speed;
+  /// The kernel β_ij that drives the size distribution.
   AggregationKernel kernel = AggregationKernel::kinetic;
   double pair_correlation = 1;  ///< χ, one contact value for every pair (dilute: 1)
   double kernel_constant = 1;   ///< β0 of the constant and sum kernels (reduced units)

@@ -16,7 +16,11 @@ namespace gkt {
 
 /// Exponents of the monomial φ^phi χ^chi (φ dχ/dφ)^phi_dchi π^{−inv_pi} (chi may be negative).
 struct EnskogMonomial {
+  /// Exponents of φ, χ, φ dχ/dφ and 1/π.
+  /// @{
   int phi = 0, chi = 0, phi_dchi = 0, inv_pi = 0;
+  /// @}
+  /// Lexicographic order (phi, chi, phi_dchi, inv_pi): the key order of EnskogClosedForm::terms().
   auto operator<=>(const EnskogMonomial&) const = default;
 };
 
@@ -37,8 +41,11 @@ class EnskogClosedForm {
   /// True if both have the same monomials with equal coefficients (as rational functions).
   [[nodiscard]] bool equals(const EnskogClosedForm& other) const;
 
+  /// Returns a + b, term by term (exact).
   friend EnskogClosedForm operator+(const EnskogClosedForm& a, const EnskogClosedForm& b);
+  /// Returns a − b, term by term (exact).
   friend EnskogClosedForm operator-(const EnskogClosedForm& a, const EnskogClosedForm& b);
+  /// Returns the product a·b (monomial exponents add; exact).
   friend EnskogClosedForm operator*(const EnskogClosedForm& a, const EnskogClosedForm& b);
   /// Returns a/b for a single-term b; throws std::domain_error if b has several terms or none.
   friend EnskogClosedForm operator/(const EnskogClosedForm& a, const EnskogClosedForm& b);
@@ -63,8 +70,12 @@ EnskogClosedForm enskog_first_sonine_closed_form(int dimension, const std::strin
 
 /// The dense first-Sonine coefficient set at one state, reduced as in conventions.md.
 struct EnskogFirstSonineValues {
+  /// a2 (HCS cumulant), ζ* = ζ/ν0, p* = p/(nT), η* = η/η0, bulk viscosity per η0, κ* = κ/κ0, μ* = nμ/(Tκ0) and the
+  /// dimensionless first-order cooling rate ζ_U.
+  /// @{
   double a2, cooling_rate, pressure, shear_viscosity, bulk_viscosity, thermal_conductivity, density_heat_coefficient,
       cooling_rate_first_order;
+  /// @}
 };
 
 /// Returns the dense first-Sonine set at α and the state (φ, χ, φ dχ/dφ) from the generated

@@ -25,7 +25,10 @@ RationalFunction first_sonine_closed_form(int dimension, const std::string& coef
 
 /// The five first-Sonine coefficients at one α, in double.
 struct FirstSonineValues {
+  /// a2, ζ* = ζ/ν0, η* = η/η0, κ* = κ/κ0 and μ* = nμ/(Tκ0) at that α.
+  /// @{
   double a2, cooling_rate, shear_viscosity, thermal_conductivity, density_heat_coefficient;
+  /// @}
 };
 
 /// Returns a2, ζ*, η*, κ*, μ* at α from the generated closed forms (lib/transport/generated/,

@@ -21,7 +21,10 @@ struct EpsilonSeries {
 
 /// The series of η*, κ*, μ* and ζ* (in this order).
 struct InelasticityExpansion {
+  /// The series of η*, κ*, μ* and ζ*.
+  /// @{
   EpsilonSeries shear_viscosity, thermal_conductivity, density_heat_coefficient, cooling_rate;
+  /// @}
 };
 
 /// Returns the coefficients at Sonine order `order` (≥ 3): polynomial fit of degree 5 in ε to

@@ -16,9 +16,12 @@ struct UniformShearFlow {
   double shear_collision_frequency = 0;  ///< ν_η/ν0 at f_M (1 at α = 1)
   double shear_rate = 0;                 ///< a/ν0(T), ν0 = nT/η0 (docs/conventions.md)
   double reduced_shear_rate = 0;         ///< γ = a ℓ/√(2T/m) (GNB's units)
-  double stress_xx = 0, stress_yy = 0;   ///< P_xx/(2nT), P_yy/(2nT)
-  double stress_zz = 0;                  ///< P_zz/(2nT) (d = 3; equals stress_yy; 0 in d = 2)
-  double stress_xy = 0;                  ///< P_xy/(2nT) (< 0 for a > 0)
+  /// P_xx/(2nT) and P_yy/(2nT).
+  /// @{
+  double stress_xx = 0, stress_yy = 0;  ///< P_xx/(2nT), P_yy/(2nT)
+  /// @}
+  double stress_zz = 0;  ///< P_zz/(2nT) (d = 3; equals stress_yy; 0 in d = 2)
+  double stress_xy = 0;  ///< P_xy/(2nT) (< 0 for a > 0)
 };
 
 /// Returns the steady USF of Grad's approximation at restitution α for d = 2 or 3 (theory.md

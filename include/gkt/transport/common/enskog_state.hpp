@@ -13,8 +13,11 @@ T reduced_pressure(int dimension, const T& alpha, const T& phi_chi) {
 /// The dense (Enskog) gas at one density: packing fraction φ, contact value χ of the pair
 /// correlation and φ dχ/dφ (theory.md §15). The default is the dilute (Boltzmann) gas.
 struct EnskogState {
+  /// Packing fraction φ.
   double packing_fraction = 0;
+  /// Contact value χ of the pair correlation at φ.
   double chi = 1;
+  /// φ dχ/dφ at φ.
   double phi_dchi = 0;
   /// Returns p* = p/(nT) (reduced_pressure).
   [[nodiscard]] double pressure(int dimension, double alpha) const {

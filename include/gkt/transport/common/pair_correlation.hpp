@@ -12,7 +12,9 @@ namespace gkt {
 
 /// One closure for the contact value of the pair correlation.
 struct PairCorrelation {
+  /// The closure's key (the `pair_correlation` parameter value).
   std::string name;
+  /// One-line description of the closure.
   std::string description;
   /// Returns χ(φ) exactly (rational φ gives a rational χ).
   Rational (*contact_value)(int dimension, const Rational& packing_fraction);

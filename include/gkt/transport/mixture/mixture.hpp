@@ -15,7 +15,9 @@ namespace gkt {
 /// the engine exactly (its ratios m_i/m_j are exact rationals there): give it as a Rational (the
 /// scene's decimal) or as a double, which ExactValue converts once (0.1 → 1/10; docs/architecture.md §4).
 struct Species {
+  /// Mass m_i (exact; only ratios enter).
   ExactValue mass = 1.0;
+  /// Diameter σ_i (only ratios enter).
   double diameter = 1;
   double fraction = 1;  ///< mole fraction x_i = n_i/n; 0 is a tracer (the limit x_i → 0)
   std::string name;     ///< optional label
@@ -23,12 +25,17 @@ struct Species {
 
 /// The composition and the state of a mixture; α is stored as a full symmetric s × s matrix.
 struct Mixture {
+  /// Spatial dimension d (2 or 3).
   int dimension = 3;
+  /// The components, at least 2.
   std::vector<Species> species;
   std::vector<double> alpha;  ///< α_ij at i·s + j
+  /// Total packing fraction φ (0: dilute).
   double packing_fraction = 0;
 
+  /// Returns the number of species s.
   [[nodiscard]] std::size_t size() const { return species.size(); }
+  /// Returns α_ij, the restitution of an i–j collision.
   [[nodiscard]] double restitution(std::size_t i, std::size_t j) const { return alpha[i * size() + j]; }
   /// Throws std::invalid_argument with a one-line message naming the field and its allowed range:
   /// d ∉ {2, 3}, fewer than 2 species, mass or diameter ≤ 0, fractions outside [0, 1] or not

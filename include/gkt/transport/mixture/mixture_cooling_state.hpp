@@ -69,6 +69,9 @@ MixtureCoolingRates mixture_cooling_rates(const Mixture& mixture, std::span<cons
 /// log_ratio_high[i·s + j], with a margin; outside it the exact moments are computed (theory.md §16.7).
 class MixtureCoolingDynamics {
  public:
+  /// Prepares the interpolated pair moments of `mixture` in `scheme` carrying a_2 … a_K (K = hcs_order) for ln(γ_i/γ_j)
+  /// between log_ratio_low[i·s + j] and log_ratio_high[i·s + j]; throws std::invalid_argument naming the field on bad
+  /// input.
   MixtureCoolingDynamics(const Mixture& mixture, MixtureHcsScheme scheme, int hcs_order,
                          std::span<const double> log_ratio_low, std::span<const double> log_ratio_high);
   /// Returns mixture_cooling_rates(mixture, temperature_ratio, cumulants, scheme) (a_0 … a_K per species).

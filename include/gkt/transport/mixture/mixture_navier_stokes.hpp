@@ -33,11 +33,15 @@ struct MixtureTransportValues {
   std::vector<double> dufour;              ///< D''_j*: q = −λ∇T − T² Σ_j D''_j ∇ln n_j
   /// Per-particle drift of species i relative to u, w_i = j_i/(m_i n_i) = D0 Σ_j drift[i·s + j] ∇ln n_j +
   /// D0 thermal_drift[i] ∇ln T, finite also for a tracer i (theory.md (17.13)).
+  /// @{
   std::vector<double> drift, thermal_drift;
+  /// @}
   /// Λ_i = segregation[i] + g* segregation_gravity[i] (binaries only, else empty): the thermal
   /// diffusion factor of species i, ∂ln(n_i/n) = −Λ_i ∂ln T in a steady state with j_i = 0 and
   /// ∂p = −ρg, g* = ρg/(n ∂T) (theory.md (17.13)); nan if the other species is absent.
+  /// @{
   std::vector<double> segregation, segregation_gravity;
+  /// @}
   double shear_viscosity = 0;  ///< η*
   /// η_i^k* of [garzo2007mixture]: species i's kinetic part of η* (their sum is η* of the dilute gas)
   std::vector<double> shear_viscosity_kinetic;
@@ -62,14 +66,19 @@ class MixtureNavierStokes {
   MixtureNavierStokes(const Mixture& mixture, int max_order);
   /// Copies carry the built operator (deep copy); a moved-from solver may only be assigned to or destroyed.
   ~MixtureNavierStokes();
+  /// Deep copy, including the built operator.
   MixtureNavierStokes(const MixtureNavierStokes& other);
+  /// Deep copy, including the built operator.
   MixtureNavierStokes& operator=(const MixtureNavierStokes& other);
+  /// Takes the operator; the moved-from solver may only be assigned to or destroyed.
   MixtureNavierStokes(MixtureNavierStokes&&) noexcept;
+  /// Takes the operator; the moved-from solver may only be assigned to or destroyed.
   MixtureNavierStokes& operator=(MixtureNavierStokes&&) noexcept;
 
   /// Returns the coefficients at Sonine order N (vector modes c S_0 … c S_N, shear Y_2 S_0 …
   /// Y_2 S_{N−1}, scalar S_1 … S_{N+1}), 1 ≤ N ≤ max_order.
   [[nodiscard]] MixtureTransportValues coefficients(int order) const;
+  /// Returns the largest Sonine order N the operator was built for (the constructor's max_order).
   [[nodiscard]] int max_order() const;
   /// Returns the Maxwellian HCS the coefficients are built about.
   [[nodiscard]] const MixtureCoolingState& cooling_state() const;

@@ -12,6 +12,7 @@ namespace gkt {
 
 /// A tracer species 0 in a one-component host gas (mass m, diameter σ, restitution α_hh).
 struct Tracer {
+  /// Spatial dimension d (2 or 3).
   int dimension = 3;
   ExactValue mass_ratio = 1.0;  ///< m0/m, exact in the engine (a double is converted once: ExactValue)
   double diameter_ratio = 1;    ///< σ0/σ
@@ -35,6 +36,7 @@ class TracerDiffusion {
   [[nodiscard]] TruncationEstimate estimate(int order) const;
   /// Returns γ0 = T0/T of the tracer in the host's HCS (both Maxwellian; ζ0 = ζ_host, (16.4) with x0 = 0).
   [[nodiscard]] double temperature_ratio() const { return gamma_; }
+  /// Returns the largest Sonine order the operator was built for (the constructor's max_order).
   [[nodiscard]] int max_order() const { return max_order_; }
 
  private:

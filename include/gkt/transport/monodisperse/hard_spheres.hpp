@@ -32,6 +32,7 @@ class HardSphereSonineSystem {
   /// Returns the value at `order` with its estimated truncation error (uses orders +1, +2).
   TruncationEstimate estimate(HardSphereCoefficient c, int order);
 
+  /// Returns the spatial dimension d.
   [[nodiscard]] int dimension() const { return dimension_; }
 
  private:

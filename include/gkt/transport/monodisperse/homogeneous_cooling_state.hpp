@@ -36,10 +36,13 @@ FirstSonineHcs first_sonine_hcs(int dimension);
 
 /// The HCS at one restitution and truncation.
 struct HcsState {
-  std::vector<double> a;                                 ///< a[0] = 1, a[1] = 0, a[2..K]
-  double cooling_rate = 0;                               ///< ζ* = ζ/ν0
-  bool solved = true;                                    ///< false if Newton's method did not converge
+  std::vector<double> a;    ///< a[0] = 1, a[1] = 0, a[2..K]
+  double cooling_rate = 0;  ///< ζ* = ζ/ν0
+  bool solved = true;       ///< false if Newton's method did not converge
+  /// Exact a2 and ζ* (linear scheme only; empty otherwise).
+  /// @{
   std::optional<Rational> exact_a2, exact_cooling_rate;  ///< linear scheme only
+  /// @}
 };
 
 /// HCS solver for one dimension. The collision moments are built once, exactly, as polynomials
@@ -51,9 +54,13 @@ class HomogeneousCoolingState {
   explicit HomogeneousCoolingState(int dimension);
   /// Copies carry the tables built so far (deep copy); a moved-from solver may only be assigned to or destroyed.
   ~HomogeneousCoolingState();
+  /// Deep copy, including the tables built so far.
   HomogeneousCoolingState(const HomogeneousCoolingState& other);
+  /// Deep copy, including the tables built so far.
   HomogeneousCoolingState& operator=(const HomogeneousCoolingState& other);
+  /// Takes the tables; the moved-from solver may only be assigned to or destroyed.
   HomogeneousCoolingState(HomogeneousCoolingState&&) noexcept;
+  /// Takes the tables; the moved-from solver may only be assigned to or destroyed.
   HomogeneousCoolingState& operator=(HomogeneousCoolingState&&) noexcept;
 
   /// Returns the HCS at restitution alpha ∈ (0, 1] keeping a_2..a_K (K ≥ 2; linear: K = 2).
@@ -62,6 +69,7 @@ class HomogeneousCoolingState {
   /// Returns the cumulant hierarchy at alpha ∈ (0, 1] truncated at a_K (K ≥ 2).
   CumulantHierarchy hierarchy(const Rational& alpha, int k_max);
 
+  /// Returns the spatial dimension d.
   [[nodiscard]] int dimension() const { return dimension_; }
 
  private:

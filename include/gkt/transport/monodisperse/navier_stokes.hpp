@@ -21,11 +21,23 @@ namespace gkt {
 /// ν = ν0(α) + a2 ν2(α) for the collision frequencies of the shear and heat modes
 /// (normalised so that both equal 1 … (d−1)/d at α = 1 as in [garzo2019]).
 struct FirstSonineNavierStokes {
-  RationalPolynomial nu_eta_0, nu_eta_a2;      ///< ν_η* = nu_eta_0 + a2 nu_eta_a2
+  /// Shear-mode collision frequency ν_η*: the a2-free part and the coefficient of a2 (polynomials in α).
+  /// @{
+  RationalPolynomial nu_eta_0, nu_eta_a2;  ///< ν_η* = nu_eta_0 + a2 nu_eta_a2
+  /// @}
+  /// Heat-mode collision frequency ν_κ*: the a2-free part and the coefficient of a2 (polynomials in α).
+  /// @{
   RationalPolynomial nu_kappa_0, nu_kappa_a2;  ///< ν_κ* = nu_kappa_0 + a2 nu_kappa_a2
-  RationalPolynomial zeta_0, zeta_a2;          ///< ζ* = zeta_0 + a2 zeta_a2
+  /// @}
+  /// Reduced cooling rate ζ* = ζ/ν0: the a2-free part and the coefficient of a2 (polynomials in α).
+  /// @{
+  RationalPolynomial zeta_0, zeta_a2;  ///< ζ* = zeta_0 + a2 zeta_a2
+  /// @}
   /// Modified scheme ([garzo2007modified]): ν = nu_0 + a2 modified_nu_a2 (theory.md (10.10)).
+  /// The a2 coefficients of ν_η* and ν_κ* in the modified scheme.
+  /// @{
   RationalPolynomial modified_nu_eta_a2, modified_nu_kappa_a2;
+  /// @}
   /// Returns η*, κ*, μ* at exact α and a2 (first-Sonine formulas, theory.md (10.8), with the
   /// scheme's collision frequencies).
   [[nodiscard]] std::vector<Rational> evaluate(const Rational& alpha, const Rational& a2,
@@ -37,8 +49,11 @@ FirstSonineNavierStokes first_sonine_navier_stokes(int dimension);
 
 /// η*, κ*, μ* of one Sonine order.
 struct NavierStokesValues {
+  /// η* = η/η0.
   double shear_viscosity = 0;
+  /// κ* = κ/κ0.
   double thermal_conductivity = 0;
+  /// μ* = nμ/(Tκ0).
   double density_heat_coefficient = 0;
   double bulk_viscosity = 0;  ///< /η0; zero in the dilute gas (theory.md (15.9))
   /// ζ_U of ζ = ζ0 + ζ_U ∇·u (dimensionless; theory.md (15.13)); zero in the dilute gas.
@@ -54,9 +69,13 @@ class NavierStokesSolver {
   explicit NavierStokesSolver(int dimension);
   /// Copies carry the operators built so far (deep copy); a moved-from solver may only be assigned to or destroyed.
   ~NavierStokesSolver();
+  /// Deep copy, including the operators built so far.
   NavierStokesSolver(const NavierStokesSolver& other);
+  /// Deep copy, including the operators built so far.
   NavierStokesSolver& operator=(const NavierStokesSolver& other);
+  /// Takes the operators; the moved-from solver may only be assigned to or destroyed.
   NavierStokesSolver(NavierStokesSolver&&) noexcept;
+  /// Takes the operators; the moved-from solver may only be assigned to or destroyed.
   NavierStokesSolver& operator=(NavierStokesSolver&&) noexcept;
 
   /// Returns η*, κ*, μ* at Sonine order `order` (N polynomials per mode) about the HCS with
@@ -65,6 +84,7 @@ class NavierStokesSolver {
   NavierStokesValues solve(const Rational& alpha, int order, const std::vector<double>& hcs_a,
                            SonineScheme scheme = SonineScheme::standard, const EnskogState& dense = {});
 
+  /// Returns the spatial dimension d.
   [[nodiscard]] int dimension() const { return dimension_; }
 
  private:

@@ -31,7 +31,9 @@ class RoughCoolingRates {
   /// Builds the exact tables (~40–60 ms); throws std::invalid_argument naming the field on bad input.
   RoughCoolingRates(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa);
   ~RoughCoolingRates();
+  /// Takes the tables (copying is deleted).
   RoughCoolingRates(RoughCoolingRates&&) noexcept;
+  /// Takes the tables (copying is deleted).
   RoughCoolingRates& operator=(RoughCoolingRates&&) noexcept;
   RoughCoolingRates(const RoughCoolingRates&) = delete;
   RoughCoolingRates& operator=(const RoughCoolingRates&) = delete;
@@ -49,6 +51,7 @@ class RoughCoolingRates {
   [[nodiscard]] double production(std::size_t weight, std::size_t test, double tau) const;
   /// Returns (c0, c1, c2) of τ·G_0(τ, 0) = c0 + c1 τ + c2 τ², exact (the Maxwellian θ equation).
   [[nodiscard]] std::array<Rational, 3> maxwellian_temperature_equation() const;
+  /// Returns the spatial dimension d.
   [[nodiscard]] int dimension() const;
   /// Returns κ as a double.
   [[nodiscard]] double kappa() const;

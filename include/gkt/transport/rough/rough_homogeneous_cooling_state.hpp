@@ -24,7 +24,11 @@ enum class RoughHcsScheme { maxwellian, linear };
 struct RoughCoolingState {
   double temperature_ratio = 1;  ///< θ = T_r/T_t
   double cooling_rate = 0;       ///< ζ* = ζ/ν0, ν0 = n T_t/η0(T_t) (the smooth gas's reduction, conventions.md)
+  /// The cumulants a20, a02, a11 (docs/theory.md §19.6); a02 = a11 = NaN when spin_decoupled.
+  /// @{
   double a20 = 0, a02 = 0, a11 = 0;
+  /// @}
+  /// True at β = −1: the spin is not changed by collisions (temperature_ratio = +inf, a02 = a11 = NaN).
   bool spin_decoupled = false;
   /// False when the linear scheme has no real solution near the Maxwellian θ with realizable
   /// cumulants (rough_cumulants_realizable; every field NaN):

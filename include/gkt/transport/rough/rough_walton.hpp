@@ -13,7 +13,9 @@ namespace gkt {
 
 /// The Maxwellian energy rates ζ_t/ν0(T_t), ζ_r/ν0(T_t) (ν0 = nT_t/η0(T_t)).
 struct RoughWaltonRates {
+  /// ζ_t/ν0(T_t).
   double translational = 0;
+  /// ζ_r/ν0(T_t).
   double rotational = 0;
 };
 

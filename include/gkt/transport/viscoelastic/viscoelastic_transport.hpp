@@ -31,7 +31,10 @@ ViscoelasticTransportSeries viscoelastic_transport_series(int sonine_order,
 
 /// a2, ζ*, η*, κ*, μ* and λ_T of the state at one δ', summed from the series.
 struct ViscoelasticState {
+  /// a2, ζ* = ζ/ν0, η* = η/η0, κ* = κ/κ0 and μ* = nμ/(Tκ0) at the given δ'.
+  /// @{
   double a2, cooling_rate, shear_viscosity, thermal_conductivity, density_heat_coefficient;
+  /// @}
   double cooling_temperature_exponent;  ///< λ_T, always without its unknown δ'^J term
 };
 
@@ -43,11 +46,26 @@ ViscoelasticState viscoelastic_state(const ViscoelasticTransportSeries& series, 
 /// time scale), and the first Sonine series (N = 1, HCS a2 only): a2 = a21 δ' + a22 δ'²,
 /// η* = 1 + η̃1 δ' + η̃2 δ'², κ* = 1 + κ̃1 δ' + κ̃2 δ'², μ* = μ̃1 δ' + μ̃2 δ'².
 struct ViscoelasticConstants {
+  /// ω0 = −ν E^(1)(0,0), ω1 = ν E^(2)(0,0) and q0 = ω0 2^{1/10}/(16√(2π)).
+  /// @{
   double omega0, omega1, q0;
+  /// @}
+  /// a21, a22: the first-Sonine HCS a2 = a21 δ' + a22 δ'².
+  /// @{
   double a2_1, a2_2;
+  /// @}
+  /// η̃1, η̃2: η* = 1 + η̃1 δ' + η̃2 δ'².
+  /// @{
   double shear_viscosity_1, shear_viscosity_2;  ///< η̃1 equals BP's printed rational; η̃2 does not (theory.md §13.2)
+  /// @}
+  /// κ̃1, κ̃2: κ* = 1 + κ̃1 δ' + κ̃2 δ'².
+  /// @{
   double thermal_conductivity_1, thermal_conductivity_2;  ///< neither equals BP's printed value (theory.md §13.2)
+  /// @}
+  /// μ̃1, μ̃2: μ* = μ̃1 δ' + μ̃2 δ'².
+  /// @{
   double density_heat_coefficient_1, density_heat_coefficient_2;  ///< μ̃1 equals BP's rational; μ̃2 does not
+  /// @}
 };
 
 /// Returns the constants for the given restitution series (h_1, h_2 at least).
