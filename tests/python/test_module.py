@@ -158,7 +158,7 @@ def test_dsmc_does_not_depend_on_jobs_and_takes_a_dict():
 
 def test_bad_dsmc_scene_raises_the_cli_message():
     path = SCENES / "dsmc_hcs.toml"
-    for override in ["alpha=1.5", "particles=1", 'model="uniform-shear"', "runs=0"]:
+    for override in ["alpha=1.5", "particles=1", 'model="gravity-column"', "runs=0"]:
         message = cli_error("dsmc", path, "--set", override)
         with pytest.raises(ValueError) as raised:
             gkt.dsmc(path, overrides=[override])
