@@ -27,24 +27,9 @@ class UniformShearModel final : public TransportModel {
     return {"reduced_shear_rate", "stress_xx", "stress_yy", "stress_xy"};
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
-    return {{"dimension",
-             ParameterSpec::Kind::integer,
-             Rational(2),
-             Rational(3),
-             true,
-             true,
-             Rational(3),
-             "spatial dimension",
-             {}},
-            {"alpha",
-             ParameterSpec::Kind::real,
-             Rational(0),
-             Rational(1),
-             false,
-             true,
-             Rational(1),
-             "coefficient of normal restitution (alpha = 1: no shear in the steady state)",
-             {}}};
+    return {detail::dimension_spec(),
+            detail::restitution_spec("alpha",
+                                     "coefficient of normal restitution (alpha = 1: no shear in the steady state)")};
   }
   [[nodiscard]] int max_order() const override { return 1; }
 
