@@ -747,6 +747,7 @@ TEST(CliRoughEvolve, InitialCumulants) {
            {"a20=-0.6", "a20: must be a number >= -0.5, got -0.6"},
            {"a02=-0.5", "a02: must be >= -2/(d_r+2) = -0.400000 for dimension = 3"},
            {"a11=0.7", "a11: must be in [-0.666667, 0.666667] at these a20, a02"},
+           {"a11=-1e301", "a11: must be in [-0.666667, 0.666667] at these a20, a02"},  // no schema bound below
            {"a20=0.1 --set 'hcs=\"maxwellian\"'", "a20, a02, a11: initial cumulants need the linear scheme"}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
