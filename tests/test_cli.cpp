@@ -720,6 +720,80 @@ TEST(CliRoughEvolve, RelaxesToTheTableAndRefusesBadInput) {
       << bad_friction.err;
 }
 
+// Initial cumulants of the rough linear scheme (keys a20, a02, a11, like the smooth model's a2):
+// explicit zeros print the same bytes as the default (the golden rough_evolve.csv), nonzero values
+// still end on `gkt table`'s HCS, unrealizable ones and cumulants without the linear scheme are refused
+// with one line naming the field (exit 2).
+TEST(CliRoughEvolve, InitialCumulants) {
+  const std::string quick = " --set t_end=100000 --set points=3";
+  const CliRun plain = run_gkt("evolve " + scene_path("rough_evolve.toml"));
+  const CliRun zeros = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set a20=0 --set a02=0 --set a11=0");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  ASSERT_EQ(zeros.status, 0) << zeros.err;
+  EXPECT_EQ(plain.out, zeros.out);
+  const CliRun moved =
+      run_gkt("evolve " + scene_path("rough_evolve.toml") + quick + " --set a20=0.1 --set a02=-0.2 --set a11=0.05");
+  ASSERT_EQ(moved.status, 0) << moved.err;
+  const CliRun table = run_gkt("table " + scene_path("rough_hcs.toml") +
+                               " --set 'alpha=[0.9]' --set 'coefficients=[\"rotational_temperature_ratio\", "
+                               "\"cooling_rate\", \"a20\", \"a02\", \"a11\"]'");
+  ASSERT_EQ(table.status, 0) << table.err;
+  const auto mt = parse_csv(moved.out), tt = parse_csv(table.out);
+  ASSERT_EQ(mt.size(), 4u);
+  for (std::size_t k = 0; k < 5; ++k)
+    EXPECT_NEAR(std::stod(mt.back()[4 + k]), std::stod(tt[1][1 + k]), 1e-8) << mt[0][4 + k];
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"a20=-0.45", "a20: must be >= -2/(d+2) = -0.400000 for dimension = 3"},
+           {"a20=-0.6", "a20: must be a number >= -0.5, got -0.6"},
+           {"a02=-0.5", "a02: must be >= -2/(d_r+2) = -0.400000 for dimension = 3"},
+           {"a11=0.7", "a11: must be in [-0.666667, 0.666667] at these a20, a02"},
+           {"a11=-1e301", "a11: must be in [-0.666667, 0.666667] at these a20, a02"},  // no schema bound below
+           {"a20=0.1 --set 'hcs=\"maxwellian\"'", "a20, a02, a11: initial cumulants need the linear scheme"}}) {
+    const CliRun bad = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set " + set);
+    EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+  // Disks: −2/(d+2) = −1/2, and a02 down to −2/3 (one rotational degree of freedom).
+  const CliRun disks = run_gkt("evolve " + scene_path("rough_evolve.toml") + quick +
+                               " --set dimension=2 --set moment_of_inertia=0.5 --set a20=-0.45 --set a02=-0.6");
+  EXPECT_EQ(disks.status, 0) << disks.err;
+  // Walton: Maxwellian only, no cumulant keys.
+  const CliRun walton = run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + " --set a20=0.1");
+  EXPECT_EQ(walton.status, 2);
+  EXPECT_NE(walton.err.find("a20: unknown key for gkt evolve"), std::string::npos) << walton.err;
+}
+
+// `gkt stability` for rough spheres (theory.md §19.14): the three stability columns by default; β = −1
+// (spin decoupled) equals the smooth gas's first-Sonine stability at the Maxwellian (checked against
+// the library in test_rough_hcs_stability.cpp); α = β = 1 is stable (0, 0, inf); the stability values
+// do not need the linear scheme's root (hcs = "linear", its no-root region, still answers); rough-walton
+// answers too.
+TEST(CliRoughStability, ColumnsLimitsAndNoRootRegion) {
+  const CliRun r =
+      run_gkt("stability " + scene_path("rough_stability.toml") + " --set 'alpha=[1, 0.5]' --set 'beta=[1, 0]'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto t = parse_csv(r.out);
+  ASSERT_EQ(t.size(), 5u);
+  EXPECT_EQ(t[0][2], "critical_wavenumber_shear");
+  EXPECT_EQ(t[0][3], "critical_wavenumber_heat");
+  EXPECT_EQ(t[0][4], "critical_length");
+  EXPECT_EQ(t[1][2], "0");
+  EXPECT_EQ(t[1][3], "0");
+  EXPECT_EQ(t[1][4], "inf");
+  EXPECT_GT(std::stod(t[4][2]), 0);  // α = 0.5, β = 0: no linear root (theory.md §19.6), still an answer
+  EXPECT_GT(std::stod(t[4][3]), 0);
+  const CliRun walton = run_gkt("stability " + scene_path("rough_walton.toml") +
+                                " --set 'alpha=[0.9]' --set 'friction=[0.5]' --set "
+                                "'coefficients=[\"critical_wavenumber_shear\", \"critical_length\"]'");
+  ASSERT_EQ(walton.status, 0) << walton.err;
+  const auto w = parse_csv(walton.out);
+  ASSERT_EQ(w.size(), 2u) << walton.out;
+  EXPECT_EQ(w[0][2], "critical_wavenumber_shear");
+  EXPECT_GT(std::stod(w[1][2]), 0) << walton.out;
+}
+
 // The rough-walton model (theory.md §19.10): friction = 1e6 reproduces the rough model with beta = beta0
 // (Maxwellian), and bad input is refused with one line.
 TEST(CliRoughWalton, ConstantBetaLimitAndBadInput) {

@@ -6,7 +6,9 @@
 //  (3) the limits α = β = 1 (energy conserved, equipartition) and β = −1 (frozen spin, smooth Haff);
 //  (4) Walton friction (Maxwellian rates by quadrature): its HCS θ at late times, and the constant-β
 //      trajectory as μ_f → ∞;
-//  (5) bad input.
+//  (5) bad input;
+//  (6) nonzero initial cumulants a20, a02, a11: the same HCS at late times, zeros bit for bit the
+//      default, unrealizable values refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -212,4 +214,80 @@ TEST(RoughCoolingEvolution, WaltonFrictionRelaxesToItsHcsAndConstantBetaLimit) {
   }
   EXPECT_THROW((void)gkt::evolve_rough_maxwellian_cooling(4, walton(3, 0.9, 1, 0.4, 1), 1, 1, {1}, 1e-8, 1e-12),
                std::invalid_argument);
+}
+
+// (6) From nonzero (realizable) initial cumulants the linear scheme relaxes to the same HCS as from
+// Maxwellians (the steady solver's θ, ζ*, a20, a02, a11 to 1e-8), the first sample still carries the
+// initial values, and explicit zeros reproduce the default run bit for bit.
+TEST(RoughCoolingEvolution, InitialCumulantsRelaxToTheHcs) {
+  struct Case {
+    int d;
+    Rational alpha, beta, kappa;
+    gkt::RoughCumulants a;
+  };
+  for (const Case& c : {Case{3, Rational(9, 10), Rational(1, 2), Rational(2, 5), {0.1, -0.2, 0.05}},
+                        Case{3, Rational(7, 10), Rational(1), Rational(2, 5), {-0.3, 0.5, -0.2}},
+                        Case{2, Rational(9, 10), Rational(1, 2), Rational(1, 2), {0.2, -0.4, 0.1}}}) {
+    const auto steady =
+        gkt::rough_homogeneous_cooling_state(c.d, c.alpha, c.beta, c.kappa, gkt::RoughHcsScheme::linear);
+    const gkt::RoughCoolingRates rates(c.d, c.alpha, c.beta, c.kappa);
+    const auto run = gkt::evolve_rough_cooling(rates, true, 1, 2, {1e-9, 1e5, 2e5}, 1e-11, 1e-14, c.a);
+    const auto& first = run.samples.front();
+    EXPECT_NEAR(first.a20, c.a[0], 1e-6);
+    EXPECT_NEAR(first.a02, c.a[1], 1e-6);
+    EXPECT_NEAR(first.a11, c.a[2], 1e-6);
+    const auto& end = run.samples.back();
+    EXPECT_NEAR(end.rotational_temperature / end.translational_temperature, steady.temperature_ratio, 1e-8)
+        << "d=" << c.d << " alpha=" << c.alpha;
+    EXPECT_NEAR(end.cooling_rate, steady.cooling_rate, 1e-8);
+    EXPECT_NEAR(end.a20, steady.a20, 1e-8);
+    EXPECT_NEAR(end.a02, steady.a02, 1e-8);
+    EXPECT_NEAR(end.a11, steady.a11, 1e-8);
+    // The cumulants change the early cooling: a20 > 0 at τ = 0 is a different trajectory.
+    const auto from_maxwellian = gkt::evolve_rough_cooling(rates, true, 1, 2, {0.5}, 1e-11, 1e-14);
+    const auto from_cumulants = gkt::evolve_rough_cooling(rates, true, 1, 2, {0.5}, 1e-11, 1e-14, c.a);
+    EXPECT_GT(std::abs(from_cumulants.samples[0].translational_temperature -
+                       from_maxwellian.samples[0].translational_temperature),
+              1e-6);
+    const auto zero = gkt::evolve_rough_cooling(rates, true, 1, 2, {0.5, 50}, 1e-10, 1e-14, {0.0, 0.0, 0.0});
+    const auto plain = gkt::evolve_rough_cooling(rates, true, 1, 2, {0.5, 50}, 1e-10, 1e-14);
+    for (std::size_t i = 0; i < 2; ++i) {
+      EXPECT_EQ(zero.samples[i].translational_temperature, plain.samples[i].translational_temperature);
+      EXPECT_EQ(zero.samples[i].rotational_temperature, plain.samples[i].rotational_temperature);
+      EXPECT_EQ(zero.samples[i].a02, plain.samples[i].a02);
+    }
+  }
+}
+
+// Unrealizable initial cumulants (theory.md (19.24a)) and cumulants without the linear scheme are
+// refused, naming the field.
+TEST(RoughCoolingEvolution, InitialCumulantsMustBeRealizable) {
+  auto message = [](int d, const gkt::RoughCumulants& a) -> std::string {
+    try {
+      gkt::check_rough_initial_cumulants(d, a);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(message(3, {-0.39, -0.39, 0}), "");
+  EXPECT_EQ(message(2, {-0.5, -0.66, 0}), "");  // Var c² = 0 is allowed
+  EXPECT_EQ(message(3, {-0.41, 0, 0}).rfind("a20: must be >= -2/(d+2)", 0), 0u) << message(3, {-0.41, 0, 0});
+  EXPECT_EQ(message(2, {-0.45, 0, 0}), "");  // −1/2 for disks
+  EXPECT_EQ(message(3, {0, -0.41, 0}).rfind("a02: must be >= -2/(d_r+2)", 0), 0u);
+  EXPECT_EQ(message(2, {0, -0.6, 0}), "");  // −2/3 for disks (one rotational degree of freedom)
+  // Cauchy–Schwarz: d d_r a11² ≤ (2 + (d+2)a20)(2 + (d_r+2)a02), |a11| ≤ 2/3 at a20 = a02 = 0 (3D).
+  EXPECT_EQ(message(3, {0, 0, 0.66}), "");
+  EXPECT_EQ(message(3, {0, 0, -0.67}).rfind("a11: must be in [-0.666667, 0.666667]", 0), 0u)
+      << message(3, {0, 0, -0.67});
+  EXPECT_EQ(message(2, {0, 0, 1.41}), "");  // |a11| ≤ √2 for disks
+  EXPECT_EQ(message(2, {0, 0, 1.42}).rfind("a11:", 0), 0u);
+  EXPECT_EQ(message(3, {NAN, 0, 0}), "a20: must be a finite number");
+  const gkt::RoughCoolingRates rates(3, Rational(9, 10), Rational(1, 2), Rational(2, 5));
+  try {
+    gkt::evolve_rough_cooling(rates, false, 1, 1, {1}, 1e-8, 1e-12, {0.1, 0, 0});
+    ADD_FAILURE() << "no throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("Maxwellian scheme carries no cumulants"), std::string::npos) << e.what();
+  }
 }

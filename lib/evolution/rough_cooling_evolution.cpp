@@ -32,6 +32,7 @@ struct Problem {
   const RoughMaxwellianRates* maxwellian = nullptr;  // Maxwellian rates as a function of θ
   bool linear = false;
   std::array<double, 3> base{};  // Maxwellian ⟨x²⟩, ⟨y²⟩, ⟨xy⟩
+  RoughCumulants initial{};      // a20, a02, a11 at τ = 0 (linear scheme)
 
   [[nodiscard]] std::array<double, 3> cumulants(const double* y) const {
     return linear ? std::array<double, 3>{y[3], y[4], y[5]} : std::array<double, 3>{};
@@ -88,7 +89,8 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   double* yv = N_VGetArrayPointer(y.get());
   yv[0] = std::log(translational0);
   yv[1] = std::log(rotational0);
-  for (int k = 2; k < n; ++k) yv[k] = 0.0;
+  yv[2] = 0.0;
+  for (int k = 3; k < n; ++k) yv[k] = problem.initial[static_cast<std::size_t>(k - 3)];
 
   const std::unique_ptr<void, CvodeDeleter> cvode(CVodeCreate(CV_BDF, raw_context));
   if (!cvode) throw std::runtime_error("CVODE: CVodeCreate failed");
@@ -130,12 +132,40 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
 
 }  // namespace
 
+void check_rough_initial_cumulants(int dimension, const RoughCumulants& a) {
+  if (dimension != 2 && dimension != 3) throw std::invalid_argument("dimension: must be 2 or 3");
+  const char* names[] = {"a20", "a02", "a11"};
+  for (std::size_t q = 0; q < 3; ++q)
+    if (!std::isfinite(a[q])) throw std::invalid_argument(std::string(names[q]) + ": must be a finite number");
+  const double d = dimension, d_r = dimension == 3 ? 3.0 : 1.0;
+  // theory.md (19.24a): ⟨x²⟩ = (d(d+2)/4)(1 + a20) ≥ ⟨x⟩² = d²/4, likewise for y = ŵ², and
+  // Cov(x, y)² = (d d_r a11/4)² ≤ Var x Var y.
+  const double var_x = d * ((d + 2) * (1 + a[0]) - d) / 4, var_y = d_r * ((d_r + 2) * (1 + a[1]) - d_r) / 4;
+  auto bound = [](double v) { return std::to_string(v); };
+  if (var_x < 0)
+    throw std::invalid_argument("a20: must be >= -2/(d+2) = " + bound(-2 / (d + 2)) +
+                                " for dimension = " + std::to_string(dimension) + " (Var c² >= 0), got " + bound(a[0]));
+  if (var_y < 0)
+    throw std::invalid_argument("a02: must be >= -2/(d_r+2) = " + bound(-2 / (d_r + 2)) +
+                                " for dimension = " + std::to_string(dimension) + " (Var w² >= 0), got " + bound(a[1]));
+  const double limit = std::sqrt(var_x * var_y) / (d * d_r / 4);
+  if (std::abs(a[2]) > limit)
+    throw std::invalid_argument("a11: must be in [-" + bound(limit) + ", " + bound(limit) +
+                                "] at these a20, a02 (Cauchy-Schwarz: Cov(c², w²)² <= Var c² Var w²), got " +
+                                bound(a[2]));
+}
+
 RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
                                           double rotational0, const std::vector<double>& times, double rtol,
-                                          double atol) {
+                                          double atol, const RoughCumulants& initial_cumulants) {
+  check_rough_initial_cumulants(rates.dimension(), initial_cumulants);
+  if (!linear && initial_cumulants != RoughCumulants{})
+    throw std::invalid_argument(
+        "a20, a02, a11: the Maxwellian scheme carries no cumulants: use hcs = \"linear\" or leave them 0");
   Problem problem;
   problem.rates = &rates;
   problem.linear = linear;
+  problem.initial = initial_cumulants;
   problem.base = rates.maxwellian_fourth_moments();
   return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol);
 }

@@ -47,6 +47,12 @@ std::vector<ColumnDescription> make_catalogue() {
       {"thermal_conductivity", kRough, "κ in q = −κ∇T_t − μ∇n, q the total energy flux (theory.md §19.7)", "κ0(T_t)",
        R::conductivity},
       {"density_heat_coefficient", kRough, "μ in q = −κ∇T_t − μ∇n (theory.md §19.7)", "T_tκ0/n", R::density_heat},
+      {"critical_wavenumber_shear", kRough, "rough HCS stability: k⊥c* = √(ζ*/η*) of the shear mode (theory.md §19.14)",
+       "ν0(T_t)/v0(T_t) (k* = k v0/ν0)", R::wavenumber},
+      {"critical_wavenumber_heat", kRough, "rough HCS stability: k∥c* of the heat mode (theory.md (19.28))",
+       "ν0(T_t)/v0(T_t) (k* = k v0/ν0)", R::wavenumber},
+      {"critical_length", kRough, "rough HCS stability: L_c* = 2π/max(k⊥c*, k∥c*) (theory.md §19.14)",
+       "v0(T_t)/ν0(T_t) (L* = L ν0/v0)", R::length},
       // Uniform shear flow (theory.md §22): GNB's units, never converted by --units physical.
       {"reduced_shear_rate",
        {"uniform-shear"},

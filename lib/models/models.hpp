@@ -41,6 +41,11 @@ std::vector<ParameterSpec> rough_evolution_parameters(const std::vector<Paramete
 /// Returns the rough gas's cooling trajectory for a request validated against `schema`
 /// (rough_evolution_parameters): the temperatures, θ, ζ* and, with hcs = "linear", a20, a02, a11.
 Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request);
+
+/// Returns the keys a20, a02, a11 of `gkt evolve` for the "rough" model: the initial cumulants of the
+/// linear scheme (default 0), bounded here by the union of both dimensions' realizability limits; the
+/// exact limits of theory.md (19.24a) are applied per dimension (check_rough_initial_cumulants).
+std::vector<ParameterSpec> rough_initial_cumulant_parameters();
 /// Returns the Walton gas's Maxwellian cooling trajectory (keys dimension, alpha, beta0,
 /// moment_of_inertia, friction, the initial temperatures, rtol, atol): the temperatures, θ and ζ*.
 Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request);

@@ -14,6 +14,7 @@ std::string ParameterSpec::allowed() const {
     return "one of " + detail::join(choices, "\"");
   }
   const std::string kind_name = kind == Kind::integer ? "an integer" : "a number";
+  if (max >= unbounded() && min <= -unbounded()) return kind_name;  // no bound either way
   if (max >= unbounded()) return kind_name + (min_inclusive ? " >= " : " > ") + min.to_decimal_string();
   if (kind == Kind::integer && min_inclusive && max_inclusive && min == max)
     return "exactly " + min.to_decimal_string();
@@ -32,7 +33,7 @@ void ParameterSpec::check(const Rational& v) const {
   };
   if (kind == Kind::choice) throw fail();
   if (kind == Kind::integer && !fmpz_is_one(fmpq_denref(v.raw()))) throw fail();
-  if (min_inclusive ? v < min : v <= min) throw fail();
+  if (min > -unbounded() && (min_inclusive ? v < min : v <= min)) throw fail();
   if (max_inclusive ? v > max : v >= max) throw fail();
 }
 

@@ -4,10 +4,14 @@
 // (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11; and the
 // shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7) and the orientational
 // correlation C (rough_orientation_correlation.hpp, §19.8); κ*, μ* (rough_thermal_conductivity.hpp) and
-// the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3.
+// the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3; the
+// linear stability of the HCS from them (rough_hcs_stability.hpp, §19.14).
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
+#include "gkt/evolution/rough_hcs_stability.hpp"
 #include "gkt/transport/rough/rough_bulk_viscosity.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_orientation_correlation.hpp"
@@ -20,6 +24,41 @@ namespace gkt::detail {
 
 namespace {
 
+/// The coefficients of `gkt table` before the stability values were added (its default columns).
+const std::vector<std::string> kRoughTableColumns{"rotational_temperature_ratio",
+                                                  "cooling_rate",
+                                                  "a20",
+                                                  "a02",
+                                                  "a11",
+                                                  "shear_viscosity",
+                                                  "bulk_viscosity",
+                                                  "thermal_conductivity",
+                                                  "density_heat_coefficient",
+                                                  "cooling_rate_first_order",
+                                                  "orientation_correlation"};
+
+/// Returns the HCS stability of the constant-β gas from its first-Sonine coefficients at the Maxwellian
+/// θ, ζ* (the state they are computed about, whatever `hcs`; theory.md §19.14). At β = −1 the spin
+/// decouples: the smooth gas's translational equations with the translational κ*, μ*.
+HcsStability rough_stability(int d, const Rational& alpha, const Rational& beta, const Rational& kappa) {
+  const RoughCoolingState m = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
+  const RoughThermalConductivity q = rough_thermal_conductivity(d, alpha, beta, kappa);
+  const RoughScalarResponse b = rough_bulk_viscosity(d, alpha, beta, kappa);
+  const bool decoupled = std::isinf(m.temperature_ratio);
+  RoughStabilityInput in;
+  in.dimension = d;
+  in.temperature_ratio = m.temperature_ratio;
+  // α = 1, β = ±1 loses no energy ((19.3)): ζ* = 0 exactly, where the solver's double may leave 1e-17.
+  const bool conservative = alpha == Rational(1) && (beta == Rational(1) || beta == Rational(-1));
+  in.cooling_rate = conservative ? 0.0 : m.cooling_rate;
+  in.shear_viscosity = rough_shear_viscosity(d, alpha, beta, kappa);
+  in.bulk_viscosity = b.bulk_viscosity;  // NaN at β = −1: not used there
+  in.thermal_conductivity = decoupled ? q.translational : q.total;
+  in.density_heat_coefficient = decoupled ? q.density_heat_translational : q.density_heat_total;
+  in.cooling_rate_first_order = b.cooling_rate_first_order;
+  return rough_hcs_stability(in);
+}
+
 class RoughModel final : public TransportModel {
  public:
   [[nodiscard]] std::string name() const override { return "rough"; }
@@ -28,20 +67,16 @@ class RoughModel final : public TransportModel {
            "alpha, beta and reduced moment of inertia: homogeneous cooling state (temperature ratio, cooling "
            "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; first-Sonine shear and bulk viscosity, "
            "thermal conductivity, density heat coefficient, first-order cooling rate; translation-rotation "
-           "correlation (3D)";
+           "correlation (3D); linear stability of the homogeneous cooling state";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"rotational_temperature_ratio",
-            "cooling_rate",
-            "a20",
-            "a02",
-            "a11",
-            "shear_viscosity",
-            "bulk_viscosity",
-            "thermal_conductivity",
-            "density_heat_coefficient",
-            "cooling_rate_first_order",
-            "orientation_correlation"};
+    auto names = kRoughTableColumns;
+    for (const auto& c : stability_coefficient_names()) names.push_back(c);
+    return names;
+  }
+  /// Without `coefficients` a scene gets the columns it had before the stability values existed.
+  [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint&) const override {
+    return kRoughTableColumns;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     auto specs = rough_grain_parameters("beta", "tangential restitution coefficient (-1 smooth, +1 perfectly rough)");
@@ -54,10 +89,12 @@ class RoughModel final : public TransportModel {
   }
   [[nodiscard]] int max_order() const override { return 1; }
   [[nodiscard]] bool supports(Capability capability) const override {
-    return capability == Capability::table || capability == Capability::evolve;
+    return capability == Capability::table || capability == Capability::evolve || capability == Capability::stability;
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
-    return rough_evolution_parameters(parameters(), {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
+    auto specs = rough_evolution_parameters(parameters(), {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
+    for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
+    return specs;
   }
   /// T_t(τ), T_r(τ) and the cumulants from Maxwellians at T_t(0), T_r(0) (theory.md §19.13).
   Trajectory evolve(const TrajectoryRequest& request) override {
@@ -70,20 +107,34 @@ class RoughModel final : public TransportModel {
     const auto [d, alpha, beta, kappa] = read_rough_grain(specs, point, "beta");
     const std::string scheme = SchemaPoint(specs, point).choice("hcs");
     require_first_approximation(order, "rough");
+    const auto& critical = stability_coefficient_names();
+    const auto is_critical = [&critical](const std::string& c) {
+      return std::find(critical.begin(), critical.end(), c) != critical.end();
+    };
+    // The stability values use the Maxwellian state whatever `hcs` (theory.md §19.14): a request for
+    // them alone does not need, nor refuse, the scheme's state.
     RoughCoolingState s;
-    if (scheme == "linear") {
-      s = linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region (theory.md §19.6)
-    } else if (scheme == "maxwellian") {
-      s = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
-    } else {  // linear-or-maxwellian: the Maxwellian θ, ζ* and nan cumulants where the linear scheme has no root
-      s = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::linear);
-      if (!s.linear_scheme_solved) {
+    if (!std::all_of(coefficients.begin(), coefficients.end(), is_critical)) {
+      if (scheme == "linear") {
+        s = linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region (theory.md §19.6)
+      } else if (scheme == "maxwellian") {
         s = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
-        s.a20 = s.a02 = s.a11 = std::nan("");
+      } else {  // linear-or-maxwellian: the Maxwellian θ, ζ* and nan cumulants where the linear scheme has no root
+        s = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::linear);
+        if (!s.linear_scheme_solved) {
+          s = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
+          s.a20 = s.a02 = s.a11 = std::nan("");
+        }
       }
     }
+    std::optional<HcsStability> stability;
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
+      if (is_critical(name)) {
+        if (!stability) stability = rough_stability(d, alpha, beta, kappa);  // theory.md §19.14
+        out.push_back(rough_stability_value(*stability, name));
+        continue;
+      }
       double x = 0;
       if (name == "rotational_temperature_ratio") {
         x = s.temperature_ratio;

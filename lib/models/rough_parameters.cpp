@@ -53,4 +53,16 @@ CoefficientValue first_approximation(double x) {
   return v;
 }
 
+CoefficientValue rough_stability_value(const HcsStability& s, const std::string& name) {
+  const double x = name == "critical_wavenumber_shear"  ? s.shear_wavenumber
+                   : name == "critical_wavenumber_heat" ? s.heat_wavenumber
+                                                        : s.critical_length;
+  CoefficientValue v = first_approximation(x);
+  if (std::isinf(x) && x > 0) {  // stable at every wave number: L_c* = +∞, value and error 0
+    v.defined = v.converged = true;
+    v.infinite = true;
+  }
+  return v;
+}
+
 }  // namespace gkt::detail

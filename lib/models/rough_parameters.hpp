@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "gkt/evolution/hcs_stability.hpp"
 #include "models/models.hpp"
 
 namespace gkt::detail {
@@ -28,6 +29,11 @@ RoughGrain read_rough_grain(const std::vector<ParameterSpec>& schema, const Para
 /// Throws std::invalid_argument unless `order` asks for order = 1 (the rough models have the first
 /// approximation only); `model` names the model in the message.
 void require_first_approximation(const OrderRequest& order, const std::string& model);
+
+/// Returns the stability value `name` (one of stability_coefficient_names()) of `s` as a first
+/// approximation; critical_length = +∞ (a stable HCS) as CoefficientValue::infinite (docs/conventions.md
+/// "The elastic end"), NaN (no HCS) as undefined.
+CoefficientValue rough_stability_value(const HcsStability& s, const std::string& name);
 
 /// Returns x as a first approximation: order 1, no error estimate, undefined (and not converged)
 /// where x is not finite (θ = inf where the spin decouples, NaN where a scheme has no root).

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "gkt/evolution/rough_cooling_evolution.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
@@ -36,6 +37,21 @@ std::vector<ParameterSpec> rough_evolution_parameters(const std::vector<Paramete
   return specs;
 }
 
+std::vector<ParameterSpec> rough_initial_cumulant_parameters() {
+  auto cumulant = [](const char* name, const Rational& min, const char* description) {
+    return ParameterSpec{
+        name, ParameterSpec::Kind::real, min, ParameterSpec::unbounded(), true, true, Rational(0), description, {}};
+  };
+  // Var c² >= 0: a20 >= -2/(d+2) (-1/2 for disks); Var w² >= 0: a02 >= -2/(d_r+2) (-2/3 for disks).
+  return {cumulant("a20", Rational(-1, 2),
+                   "initial a20(0), hcs = \"linear\" only: >= -2/(d+2) (Var c^2 >= 0, theory.md (19.24a))"),
+          cumulant("a02", Rational(-2, 3),
+                   "initial a02(0), hcs = \"linear\" only: >= -2/(d_r+2) (Var w^2 >= 0, theory.md (19.24a))"),
+          cumulant("a11", -ParameterSpec::unbounded(),
+                   "initial a11(0), hcs = \"linear\" only: d d_r a11^2 <= (2 + (d+2) a20)(2 + (d_r+2) a02) "
+                   "(Cauchy-Schwarz, theory.md (19.24a))")};
+}
+
 Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request) {
   const SchemaPoint p(schema, request.parameters);
   const int d = p.number("dimension") == Rational(2) ? 2 : 3;
@@ -47,10 +63,17 @@ Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const Traj
       (scheme == "linear-or-maxwellian" &&
        rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::linear).linear_scheme_solved);
   if (scheme == "linear") (void)linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region
+  const RoughCumulants initial{p.number("a20").to_double(), p.number("a02").to_double(), p.number("a11").to_double()};
+  check_rough_initial_cumulants(d, initial);  // before the tables are built
+  if (!linear && initial != RoughCumulants{})
+    throw std::invalid_argument(
+        "a20, a02, a11: initial cumulants need the linear scheme (hcs = \"linear\"" +
+        std::string(scheme == "linear-or-maxwellian" ? ", which has no root at this state" : "") + "); got hcs = \"" +
+        scheme + "\"");
   const RoughCoolingRates rates(d, alpha, beta, kappa);
   const RoughEvolutionResult result = evolve_rough_cooling(
       rates, linear, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(),
-      request.times, p.number("rtol").to_double(), p.number("atol").to_double());
+      request.times, p.number("rtol").to_double(), p.number("atol").to_double(), initial);
   return tabulate_rough_trajectory(result, linear);
 }
 

@@ -2,10 +2,12 @@
 // friction in Walton's form, β(γ) = min{β0, −1 + ((1+κ)/κ)(1+α) μ_f cot γ}
 // (rough_walton.hpp; docs/theory.md §19.10): the Maxwellian HCS (θ, ζ*), the first-Sonine η*, κ*, μ*
 // and the scalar Navier–Stokes response (bulk viscosity, first-order cooling rate). μ_f → ∞ is the "rough"
-// model.
+// model. The linear stability of the HCS from these coefficients (rough_hcs_stability.hpp, §19.14).
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "gkt/evolution/rough_hcs_stability.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "models/models.hpp"
 #include "models/rough_parameters.hpp"
@@ -14,6 +16,31 @@ namespace gkt::detail {
 
 namespace {
 
+/// The coefficients of `gkt table` before the stability values were added (its default columns).
+const std::vector<std::string> kWaltonTableColumns{"rotational_temperature_ratio",
+                                                   "cooling_rate",
+                                                   "shear_viscosity",
+                                                   "bulk_viscosity",
+                                                   "thermal_conductivity",
+                                                   "density_heat_coefficient",
+                                                   "cooling_rate_first_order"};
+
+/// Returns the HCS stability of the Walton gas from its Maxwellian θ, ζ* and first-Sonine coefficients
+/// (theory.md §19.14); NaN everywhere where the spin decouples (no HCS of the spin, §19.10).
+HcsStability walton_stability(int d, const RoughWaltonState& s) {
+  if (s.spin_decoupled) return {std::nan(""), std::nan(""), std::nan("")};
+  RoughStabilityInput in;
+  in.dimension = d;
+  in.temperature_ratio = s.temperature_ratio;
+  in.cooling_rate = s.cooling_rate;
+  in.shear_viscosity = s.shear_viscosity;
+  in.bulk_viscosity = s.bulk_viscosity;
+  in.thermal_conductivity = s.thermal_conductivity;
+  in.density_heat_coefficient = s.density_heat_coefficient;
+  in.cooling_rate_first_order = s.cooling_rate_first_order;
+  return rough_hcs_stability(in);
+}
+
 class RoughWaltonModel final : public TransportModel {
  public:
   [[nodiscard]] std::string name() const override { return "rough-walton"; }
@@ -21,16 +48,17 @@ class RoughWaltonModel final : public TransportModel {
     return "rough inelastic hard spheres (d = 3) or disks (d = 2) with Coulomb friction (Walton): "
            "beta = min{beta0, -1 + ((1+kappa)/kappa)(1+alpha) friction cot(impact angle)}; Maxwellian "
            "homogeneous cooling state (temperature ratio, cooling rate); first-Sonine shear and bulk viscosity, "
-           "thermal conductivity, density heat coefficient and first-order cooling rate";
+           "thermal conductivity, density heat coefficient and first-order cooling rate; linear stability of the "
+           "homogeneous cooling state";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
-    return {"rotational_temperature_ratio",
-            "cooling_rate",
-            "shear_viscosity",
-            "bulk_viscosity",
-            "thermal_conductivity",
-            "density_heat_coefficient",
-            "cooling_rate_first_order"};
+    auto names = kWaltonTableColumns;
+    for (const auto& c : stability_coefficient_names()) names.push_back(c);
+    return names;
+  }
+  /// Without `coefficients` a scene gets the columns it had before the stability values existed.
+  [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint&) const override {
+    return kWaltonTableColumns;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     auto specs = rough_grain_parameters(
@@ -48,7 +76,7 @@ class RoughWaltonModel final : public TransportModel {
   }
   [[nodiscard]] int max_order() const override { return 1; }
   [[nodiscard]] bool supports(Capability capability) const override {
-    return capability == Capability::table || capability == Capability::evolve;
+    return capability == Capability::table || capability == Capability::evolve || capability == Capability::stability;
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     return rough_evolution_parameters(parameters(), {"dimension", "alpha", "beta0", "moment_of_inertia", "friction"});
@@ -67,6 +95,11 @@ class RoughWaltonModel final : public TransportModel {
         rough_walton_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"));
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
+      const auto& critical = stability_coefficient_names();
+      if (std::find(critical.begin(), critical.end(), name) != critical.end()) {
+        out.push_back(rough_stability_value(walton_stability(d, s), name));  // theory.md §19.14
+        continue;
+      }
       double x = 0;
       if (name == "rotational_temperature_ratio") {
         x = s.temperature_ratio;  // +inf when the spin decouples

@@ -93,7 +93,7 @@ Json spec_json(const ParameterSpec& spec) {
     s["choices"] = spec.choices;
     s["default"] = spec.choices.empty() ? Json() : Json(spec.choices.front());
   } else {
-    s["min"] = number_json(spec.min);
+    if (spec.min > -ParameterSpec::unbounded()) s["min"] = number_json(spec.min);
     if (spec.max < ParameterSpec::unbounded()) s["max"] = number_json(spec.max);
     s["min_inclusive"] = spec.min_inclusive;
     s["max_inclusive"] = spec.max_inclusive;

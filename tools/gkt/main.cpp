@@ -348,7 +348,9 @@ int run(int argc, char** argv) {
   TableRun stability_run;
   stability_run.stability = true;
   std::vector<std::string> stability_overrides;
-  stability->add_option("scene", stability_scene, "Scene file (TOML), model smooth-inelastic, mixture or viscoelastic")
+  stability
+      ->add_option("scene", stability_scene,
+                   "Scene file (TOML), model smooth-inelastic, mixture, viscoelastic, rough or rough-walton")
       ->required();
   stability->add_option("--set", stability_overrides, "Override a scene key: KEY=VALUE; repeatable");
   stability->add_option("--format", stability_run.format, "Output format")->check(CLI::IsMember({"csv", "json"}));

@@ -39,14 +39,23 @@ struct RoughEvolutionResult {
   EvolutionCounters counters;
 };
 
+/// Initial cumulants (a20, a02, a11) of the first-Sonine distribution (theory.md (19.9)).
+using RoughCumulants = std::array<double, 3>;
+
+/// Throws std::invalid_argument naming the field (a20, a02 or a11) and its allowed range unless the
+/// cumulants are finite and realizable for dimension d (theory.md (19.24a): Var c² ≥ 0, Var ŵ² ≥ 0,
+/// Cauchy–Schwarz for their covariance).
+void check_rough_initial_cumulants(int dimension, const RoughCumulants& a);
+
 /// Returns the trajectory from T_t(0) = translational0, T_r(0) = rotational0 (units T_ref, both
-/// > 0; Maxwellian initial distributions) at the increasing positive `times`. linear = false: the
-/// Maxwellian two-temperature equations (theory.md (19.12), (19.24)); true: the first-Sonine scheme carrying
-/// a20, a02, a11 (theory.md (19.25)). Throws std::invalid_argument naming the field on bad input,
+/// > 0) at the increasing positive `times`. linear = false: the Maxwellian two-temperature equations
+/// (theory.md (19.12), (19.24)) from Maxwellians; true: the first-Sonine scheme carrying a20, a02, a11
+/// (theory.md (19.25)) from `initial_cumulants` (checked by check_rough_initial_cumulants; nonzero
+/// values need linear = true). Throws std::invalid_argument naming the field on bad input,
 /// EvolutionFailure (an invalid_argument) if CVODE stops early.
 RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
                                           double rotational0, const std::vector<double>& times, double rtol,
-                                          double atol);
+                                          double atol, const RoughCumulants& initial_cumulants = {});
 
 /// Maxwellian rates at θ = T_r/T_t: (z_t, z_r) = (ζ_t, ζ_r)/(nσ^{d−1}v_t ν) (e.g. from the Walton
 /// quadrature of rough_walton.hpp, times 4/(d+2)).

@@ -13,7 +13,8 @@
 namespace gkt {
 
 /// A model parameter: its key, kind and allowed closed/open range or choices (used to validate
-/// input). A real parameter whose upper bound is at least ParameterSpec::unbounded() has none.
+/// input). A real parameter whose upper bound is at least ParameterSpec::unbounded() has none, and one
+/// whose lower bound is at most −unbounded() has no lower bound.
 struct ParameterSpec {
   /// What values the parameter takes: an integer, a real number or one of named choices.
   enum class Kind { integer, real, choice };

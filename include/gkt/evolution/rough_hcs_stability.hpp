@@ -1,0 +1,44 @@
+// Linear stability of the homogeneous cooling state of the dilute rough gas (spheres or disks with
+// spin; docs/theory.md §19.14): the Navier–Stokes equations for n, u and the mean temperature
+// T = (dT_t + d_rT_r)/(d + d_r), with T_r slaved to T in the normal solution, linearised about the HCS;
+// [garzo2018rough] (their stored copy is the abstract only).
+//
+// Units as for smooth spheres but at the translational temperature: k* = k v0/ν0, L* = L ν0/v0 with
+// v0 = √(2T_t/m), ν0 = nT_t/η0(T_t) (docs/conventions.md).
+#pragma once
+
+#include <array>
+#include <complex>
+
+#include "gkt/evolution/hcs_stability.hpp"
+
+namespace gkt {
+
+/// The first-order coefficients of the rough gas at one state, reduced at T_t as in the `rough` model.
+struct RoughStabilityInput {
+  int dimension = 3;  ///< d = 2 (disks, d_r = 1) or 3 (spheres, d_r = 3)
+  /// θ = T_r/T_t on the HCS; +∞: the spin decouples (β = −1, no torque), the hydrodynamic temperature is
+  /// T_t and the equations are the smooth gas's (bulk_viscosity and cooling_rate_first_order ignored).
+  double temperature_ratio = 1;
+  double cooling_rate = 0;              ///< ζ* = ζ/ν0(T_t), ζ the cooling rate of T (and of T_t, T_r)
+  double shear_viscosity = 1;           ///< η/η0(T_t)
+  double bulk_viscosity = 0;            ///< η_b/η0(T_t), nT_t − nτ_tT = −η_b∇·u (theory.md (19.18))
+  double thermal_conductivity = 1;      ///< κ/κ0(T_t), q = −κ∇T_t − μ∇n, q the total energy flux
+  double density_heat_coefficient = 0;  ///< nμ/(T_tκ0(T_t))
+  double cooling_rate_first_order = 0;  ///< ζ_U, ζ = ζ⁽⁰⁾ + ζ_U∇·u (theory.md (19.19))
+};
+
+/// Returns the translational share of the heat capacity, d/(d + d_rθ) = (d/(d + d_r)) T_t/T on the
+/// HCS (1 when θ = +∞: the spin decoupled); theory.md (19.26).
+double rough_translational_share(int dimension, double temperature_ratio);
+
+/// Returns the 3×3 matrix M(k*) of the longitudinal modes (ρ, δT/T, w∥) of the rough gas, ∂_τ X = M X
+/// (theory.md (19.27)); the d − 1 transverse modes obey (14.1) unchanged.
+std::array<std::array<std::complex<double>, 3>, 3> rough_longitudinal_matrix(const RoughStabilityInput& in, double k);
+
+/// Returns k⊥c* = √(ζ*/η*), k∥c* of theory.md (19.28) (0 if the heat mode never grows) and
+/// L_c* = 2π/max(k⊥c*, k∥c*) (+∞ when both are 0). Throws std::invalid_argument naming the field if
+/// d ∉ {2, 3}, θ is not > 0, or η*, κ* are not > 0.
+HcsStability rough_hcs_stability(const RoughStabilityInput& in);
+
+}  // namespace gkt
