@@ -836,7 +836,8 @@ TEST(CliStability, RefusesModelsWithoutStability) {
   const CliRun bad = run_gkt("stability " + scene.string());
   fs::remove(scene);
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.err.find("model: \"hard-spheres\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\""),
+  EXPECT_NE(bad.err.find("model: \"hard-spheres\" has no stability analysis; use \"mixture\", \"rough\", "
+                         "\"rough-walton\", \"smooth-inelastic\" or \"viscoelastic\""),
             std::string::npos)
       << bad.err;
 }

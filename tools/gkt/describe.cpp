@@ -280,4 +280,14 @@ std::string describe_models(const std::string& name, bool json) {
   return out.str();
 }
 
+std::string models_supporting(Capability capability) {
+  std::vector<std::string> names;
+  for (const auto& name : transport_model_names())
+    if (make_transport_model(name)->supports(capability)) names.push_back("\"" + name + "\"");
+  std::string joined;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    joined += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return joined;
+}
+
 }  // namespace gkt::cli

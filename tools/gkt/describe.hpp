@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gkt/models/column_catalogue.hpp"
+#include "gkt/models/transport_model.hpp"
 #include "scene.hpp"
 
 namespace gkt::cli {
@@ -25,5 +26,9 @@ std::optional<int> scene_dimension(const Scene& scene);
 /// allowed values, default and meaning, the commands it supports, its evolution keys and its
 /// columns with meaning, reduction and SI unit; JSON when `json`, else text.
 std::string describe_models(const std::string& name, bool json);
+
+/// Returns the registered models that support `capability`, quoted and joined for an error message
+/// (e.g. "\"mixture\", \"rough\" or \"smooth-inelastic\"").
+std::string models_supporting(Capability capability);
 
 }  // namespace gkt::cli

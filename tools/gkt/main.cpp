@@ -145,8 +145,8 @@ int run_table(const std::string& scene_path, const std::vector<std::string>& ove
   // `gkt stability` is `gkt table` whose default coefficients are the HCS stability values.
   if (run.stability && !scene.coefficients_given) {
     if (!gkt::make_transport_model(scene.model)->supports(gkt::Capability::stability))
-      throw std::invalid_argument("model: \"" + scene.model +
-                                  "\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\"");
+      throw std::invalid_argument("model: \"" + scene.model + "\" has no stability analysis; use " +
+                                  gkt::cli::models_supporting(gkt::Capability::stability));
     scene.coefficients = gkt::stability_coefficient_names();
   }
   const gkt::cli::TableOptions options{run.exact, run.jobs, physical_reference(run, scene)};

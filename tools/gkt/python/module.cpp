@@ -20,6 +20,7 @@
 
 #include <toml++/toml.h>
 
+#include "../describe.hpp"
 #include "../dsmc_command.hpp"
 #include "../evolve_command.hpp"
 #include "../scene.hpp"
@@ -171,8 +172,8 @@ py::dict table(const py::object& scene, const std::vector<std::string>& override
     if (stability && !loaded.coefficients_given) {
       const auto names = gkt::make_transport_model(loaded.model)->coefficient_names();
       if (std::find(names.begin(), names.end(), kStabilityCoefficients.front()) == names.end())
-        throw std::invalid_argument("model: \"" + loaded.model +
-                                    "\" has no stability analysis; use \"smooth-inelastic\" or \"mixture\"");
+        throw std::invalid_argument("model: \"" + loaded.model + "\" has no stability analysis; use " +
+                                    gkt::cli::models_supporting(gkt::Capability::stability));
       loaded.coefficients = kStabilityCoefficients;
     }
     result = gkt::cli::compute_table(loaded, {exact}, warnings);
