@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "gkt/collision/quadratic_form_moments.hpp"
@@ -409,4 +410,31 @@ TEST(RoughCollisionMoments, SixFormMomentsAgainstMonteCarlo) {
     EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
     EXPECT_LT(error, 0.1 * std::abs(exact)) << "Monte Carlo too noisy to discriminate, moment " << e;
   }
+}
+
+// A down-closed kept set (caps on the total degree per particle): the kept moments equal the full
+// table's, exactly; the others are refused.
+TEST(RoughCollisionMoments, KeptSetEqualsTheFullTable) {
+  const auto params = gkt::rough_parameters(3, Rational(4, 5), Rational(1, 2), Rational(2, 5), Rational(3, 2));
+  const auto f = six_energy_forms();
+  const std::vector<int> degrees{2, 2, 1, 1, 2, 2};
+  const RoughCollisionMoments<Rational> full(params, f, degrees);
+  auto keep = [](const gkt::RoughExponents& e) { return e[0] + e[1] <= 2 && e[2] + e[3] <= 1 && e[4] + e[5] <= 2; };
+  const RoughCollisionMoments<Rational> kept(params, f, degrees, keep);
+  int compared = 0;
+  for (int a = 0; a <= 2; ++a)
+    for (int b = 0; b <= 2; ++b)
+      for (int c = 0; c <= 1; ++c)
+        for (int e = 0; e <= 1; ++e)
+          for (int g = 0; g <= 2; ++g)
+            for (int h = 0; h <= 2; ++h) {
+              const gkt::RoughExponents k{a, b, c, e, g, h};
+              if (keep(k)) {
+                EXPECT_EQ(kept.moment(k), full.moment(k));
+                ++compared;
+              } else {
+                EXPECT_THROW((void)kept.moment(k), std::out_of_range);
+              }
+            }
+  EXPECT_EQ(compared, 6 * 3 * 6);
 }

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -90,9 +92,13 @@ inline void add_short_product(fmpz_poly_struct* acc, const fmpz_poly_struct* r, 
 
 /// Returns f_m, 0 ≤ m_v ≤ box_v (k0 slowest, the last variable fastest), of the recurrence in N
 /// variables whose terms `rec` carry the exponent shift e and the coefficients q = Qc_e, p = Π_e
-/// (Term: members e (std::array<int, N>), q, p).
+/// (Term: members e (std::array<int, N>), q, p). With `keep` only the m it accepts are computed
+/// (the others are left 0); the accepted set must be down-closed (m kept and m' ≤ m componentwise
+/// ⇒ m' kept), which is what makes it closed under the recurrence.
 template <class Ring, class Term, std::size_t N>
-std::vector<Ring> solve_euler_recurrence(const std::vector<Term>& rec, const std::array<int, N>& box) {
+std::vector<Ring> solve_euler_recurrence(
+    const std::vector<Term>& rec, const std::array<int, N>& box,
+    const std::type_identity_t<std::function<bool(const std::array<int, N>&)>>& keep = {}) {
   // Row-major strides of the box: index(k) = Σ_v k_v stride_v, so index(m − e) = index(m) − index(e).
   std::array<std::size_t, N> stride{};
   std::size_t size = 1;
@@ -127,7 +133,7 @@ std::vector<Ring> solve_euler_recurrence(const std::vector<Term>& rec, const std
       offset += static_cast<std::size_t>(r.e[v]) * stride[v];
       inside = inside && r.e[v] <= box[v];
     }
-    if (!inside) continue;  // never reaches a coefficient of the box
+    if (!inside || (keep && !keep(r.e))) continue;  // never reaches a computed coefficient
     IntegerTerm t{r.e, degree, offset, {}, {}};
     integer_numerator(t.q.raw(), r.q, c.raw());
     integer_numerator(t.p.raw(), r.p, c.raw());
@@ -170,6 +176,7 @@ std::vector<Ring> solve_euler_recurrence(const std::vector<Term>& rec, const std
     int n = 0;
     for (std::size_t v = 0; v < N; ++v) n += k[v];
     total_degree[at] = n;
+    if (keep && !keep(k)) continue;
     for (auto& s : by_shift) fmpz_poly_zero(s.raw());
     for (std::size_t t = 0; t < terms.size(); ++t) {
       const auto& e = terms[t].e;

@@ -14,6 +14,8 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -126,10 +128,12 @@ struct GeneratingSeries {
 /// Returns the Taylor coefficients f_m, 0 ≤ m_v ≤ box_v (index order of GeneratingSeries, k0
 /// slowest), of the f with f_0 = 1 and Π·Ef = f·Qc (theory.md (3.2)–(3.3)) in N variables:
 /// |m| f_m = Σ_{e≠0} (Qc_e − |m−e| Π_e) f_{m−e}. `pi` has constant term 1; the constant term of
-/// `qc` (an Euler derivative: none) is ignored. Exact in the ring.
+/// `qc` (an Euler derivative: none) is ignored. Exact in the ring. `keep`: a down-closed subset of
+/// the box to compute (solve_euler_recurrence); empty: all of it.
 template <class Ring, std::size_t N>
-std::vector<Ring> euler_recurrence(const SmallPolynomial<Ring, N>& pi, const SmallPolynomial<Ring, N>& qc,
-                                   const ExponentVector<N>& box) {
+std::vector<Ring> euler_recurrence(
+    const SmallPolynomial<Ring, N>& pi, const SmallPolynomial<Ring, N>& qc, const ExponentVector<N>& box,
+    const std::type_identity_t<std::function<bool(const ExponentVector<N>&)>>& keep = {}) {
   using Exponents = ExponentVector<N>;
   struct RecurrenceTerm {
     Exponents e;
@@ -147,7 +151,7 @@ std::vector<Ring> euler_recurrence(const SmallPolynomial<Ring, N>& pi, const Sma
       }
     if (!merged && term.e != Exponents{}) rec.push_back({term.e, term.c, Ring(0L)});
   }
-  return solve_euler_recurrence<Ring>(rec, box);
+  return solve_euler_recurrence<Ring>(rec, box, keep);
 }
 
 /// Returns the Taylor coefficients of J(Q0 + Σ x_v Q_v)/J(Q0) in the box (exact in Ring).

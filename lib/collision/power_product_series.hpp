@@ -10,7 +10,9 @@
 // (generating_series.hpp) are the special case a^{1/2} n1^{−(d−1)/2} n2^{−1}.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -18,10 +20,11 @@
 
 namespace gkt::detail {
 
-/// Returns a·b keeping only the monomials inside the box.
+/// Returns a·b keeping only the monomials inside the box (and accepted by `keep`, if given).
 template <class Ring, std::size_t N>
-SmallPolynomial<Ring, N> truncated_product(const SmallPolynomial<Ring, N>& a, const SmallPolynomial<Ring, N>& b,
-                                           const ExponentVector<N>& box) {
+SmallPolynomial<Ring, N> truncated_product(
+    const SmallPolynomial<Ring, N>& a, const SmallPolynomial<Ring, N>& b, const ExponentVector<N>& box,
+    const std::type_identity_t<std::function<bool(const ExponentVector<N>&)>>& keep = {}) {
   SmallPolynomial<Ring, N> r;
   for (const auto& x : a.terms)
     for (const auto& y : b.terms) {
@@ -31,7 +34,7 @@ SmallPolynomial<Ring, N> truncated_product(const SmallPolynomial<Ring, N>& a, co
         e[v] = x.e[v] + y.e[v];
         inside = inside && e[v] <= box[v];
       }
-      if (inside) r.add(e, x.c * y.c);
+      if (inside && (!keep || keep(e))) r.add(e, x.c * y.c);
     }
   return r;
 }
@@ -45,8 +48,11 @@ struct PowerFactor {
 
 /// Returns the Taylor coefficients f(k) of Π_i (p_i(x)/p_i(0))^{r_i}, 0 ≤ k_v ≤ box_v, in the
 /// index order of GeneratingSeries (k0 slowest). Throws std::domain_error if some p_i(0) = 0.
+/// `keep`: only a down-closed subset of the box (the rest left 0; solve_euler_recurrence).
 template <class Ring, std::size_t N>
-std::vector<Ring> expand_power_product(std::vector<PowerFactor<Ring, N>> factors, const ExponentVector<N>& box) {
+std::vector<Ring> expand_power_product(
+    std::vector<PowerFactor<Ring, N>> factors, const ExponentVector<N>& box,
+    const std::type_identity_t<std::function<bool(const ExponentVector<N>&)>>& keep = {}) {
   for (auto& f : factors) {
     const Rational c = f.polynomial.constant();
     if (c.is_zero()) throw std::domain_error("expand_power_product: a factor vanishes at the expansion point");
@@ -54,15 +60,15 @@ std::vector<Ring> expand_power_product(std::vector<PowerFactor<Ring, N>> factors
   }
   SmallPolynomial<Ring, N> pi;
   pi.add(ExponentVector<N>{}, Ring(1L));
-  for (const auto& f : factors) pi = truncated_product(pi, f.polynomial, box);
+  for (const auto& f : factors) pi = truncated_product(pi, f.polynomial, box, keep);
   SmallPolynomial<Ring, N> qc;
   for (std::size_t i = 0; i < factors.size(); ++i) {
     SmallPolynomial<Ring, N> term = Ring(factors[i].exponent) * factors[i].polynomial.euler();
     for (std::size_t j = 0; j < factors.size(); ++j)
-      if (j != i) term = truncated_product(term, factors[j].polynomial, box);
+      if (j != i) term = truncated_product(term, factors[j].polynomial, box, keep);
     qc = qc + term;
   }
-  return euler_recurrence(pi, qc, box);
+  return euler_recurrence(pi, qc, box, keep);
 }
 
 }  // namespace gkt::detail

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "collision/power_product_series.hpp"
 
@@ -130,8 +131,14 @@ RoughForm operator+(const RoughForm& f, const RoughForm& g) {
 
 template <class Ring>
 RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters,
-                                                   const std::vector<RoughForm>& forms,
-                                                   const std::vector<int>& degrees) {
+                                                   const std::vector<RoughForm>& forms, const std::vector<int>& degrees)
+    : RoughCollisionMoments(parameters, forms, degrees, {}) {}
+
+template <class Ring>
+RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters,
+                                                   const std::vector<RoughForm>& forms, const std::vector<int>& degrees,
+                                                   std::function<bool(const RoughExponents&)> keep)
+    : keep_(std::move(keep)) {
   if (forms.size() > kRoughVariables || forms.size() != degrees.size())
     throw std::invalid_argument("RoughCollisionMoments: at most eight forms, one degree each");
   const int d = parameters.dimension;
@@ -204,7 +211,7 @@ RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameter
     factors.push_back({determinant(mn, {0, 1, 2, 3}, {0, 1, 2, 3}, box), Rational(-1)});
     factors.push_back({hermitian_determinant(mt, mb, box), Rational(-1)});
   }
-  auto f = detail::expand_power_product(std::move(factors), box);
+  auto f = detail::expand_power_product(std::move(factors), box, keep_);
   box_ = box;
   // f_k = ⟨Π F_v^{k_v}⟩/(⟨1⟩ Π k_v!): multiply by the factorials, walking the box in its index
   // order (an odometer, the last form fastest).
@@ -233,6 +240,7 @@ Ring RoughCollisionMoments<Ring>::moment(const RoughExponents& k) const {
     if (k[v] < 0 || k[v] > box_[v]) throw std::out_of_range("RoughCollisionMoments: degree outside the expanded box");
     index = index * static_cast<std::size_t>(box_[v] + 1) + static_cast<std::size_t>(k[v]);
   }
+  if (keep_ && !keep_(k)) throw std::out_of_range("RoughCollisionMoments: moment outside the kept set");
   return values_[index];
 }
 

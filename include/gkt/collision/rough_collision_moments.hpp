@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
@@ -50,8 +51,13 @@ class RoughCollisionMoments {
   /// disks).
   RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters, const std::vector<RoughForm>& forms,
                         const std::vector<int>& degrees);
+  /// As above, computing only the moments whose exponents `keep` accepts inside the box. The
+  /// accepted set must be down-closed (k kept and k' ≤ k componentwise ⇒ k' kept), e.g. caps on the
+  /// total degree of groups of forms; the cost falls with its size (docs/performance.md).
+  RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters, const std::vector<RoughForm>& forms,
+                        const std::vector<int>& degrees, std::function<bool(const RoughExponents&)> keep);
   /// Returns ⟨Π F_v^{k_v}⟩/⟨1⟩ (velocities in units of √(2T_t/m)); throws std::out_of_range
-  /// outside the expanded box. Unlisted trailing exponents are 0 (`moment({i, j})`).
+  /// outside the expanded box or the kept set. Unlisted trailing exponents are 0 (`moment({i, j})`).
   [[nodiscard]] Ring moment(const RoughExponents& k) const;
   /// Returns moment(k) for a shorter exponent array (the forms past K at exponent 0).
   template <std::size_t K>
@@ -63,6 +69,7 @@ class RoughCollisionMoments {
 
  private:
   RoughExponents box_{};
+  std::function<bool(const RoughExponents&)> keep_;
   std::vector<Ring> values_;
 };
 
