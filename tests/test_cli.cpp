@@ -626,7 +626,7 @@ TEST(CliRough, SmoothLimitAndBadInput) {
            {"dimension=4", "dimension: must be 2 or 3, got 4"},
            {"order=2", "order: must be exactly 1, got 2"},
            {"dimension=2", "coefficients: orientation_correlation needs dimension = 3"},
-           {"'hcs=\"nonlinear\"'", "hcs: must be one of"}}) {
+           {"'hcs=\"quadratic\"'", "hcs: must be one of"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
@@ -657,6 +657,45 @@ TEST(CliRough, LinearSchemeNoRootRegion) {
   EXPECT_EQ(f[0][0], "rotational_temperature_ratio");
   EXPECT_EQ(f[1][0], m[1][0]);  // θ: the Maxwellian one
   EXPECT_EQ(f[1][1], "nan");    // no cumulants
+}
+
+// Higher Sonine orders of the rough HCS (theory.md §19.14): `order` (or `tolerance`) and hcs =
+// "nonlinear" reach θ, ζ* and the cumulants with an error from the next order; order 1 "nonlinear"
+// differs from the first-Sonine "linear" only by the products of cumulants; the transport columns
+// refuse order > 1 and tolerance with one line.
+TEST(CliRough, SonineOrdersOfTheCoolingState) {
+  const std::string hcs =
+      " --set 'alpha=[0.9]' --set 'coefficients=[\"rotational_temperature_ratio\", \"a20\", \"a03\"]'";
+  const CliRun first = run_gkt("table " + scene_path("rough_hcs.toml") + hcs);
+  const CliRun second = run_gkt("table " + scene_path("rough_hcs.toml") + hcs + " --set order=2");
+  const CliRun nonlinear = run_gkt("table " + scene_path("rough_hcs.toml") + hcs + " --set 'hcs=\"nonlinear\"'");
+  ASSERT_EQ(first.status, 0) << first.err;
+  ASSERT_EQ(second.status, 0) << second.err;
+  ASSERT_EQ(nonlinear.status, 0) << nonlinear.err;
+  const auto f = parse_csv(first.out), s = parse_csv(second.out), n = parse_csv(nonlinear.out);
+  ASSERT_EQ(s[0].size(), 8U);  // alpha, three values, three errors, order
+  EXPECT_EQ(s[0][4], "rotational_temperature_ratio_error");
+  EXPECT_EQ(f[1][3], "0");  // a03 is truncated at first Sonine
+  EXPECT_NE(s[1][3], "0");
+  EXPECT_EQ(s[1][7], "2");
+  EXPECT_NEAR(std::stod(s[1][1]), 0.85507, 2e-5);  // theory.md §19.14
+  EXPECT_GT(std::abs(std::stod(s[1][1]) - std::stod(f[1][1])), 3e-4);
+  EXPECT_LT(std::stod(s[1][4]), 3e-4);  // error |θ_3 − θ_2|
+  EXPECT_NEAR(std::stod(n[1][1]), std::stod(f[1][1]), 2e-4);
+  EXPECT_NE(n[1][1], f[1][1]);
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"order=2", "order: must be exactly 1, got 2 for shear_viscosity"},
+           {"tolerance=1e-3", "tolerance: shear_viscosity of model rough is a first approximation"},
+           {"order=4", "order: must be an integer in [1, 3], got 4"}}) {
+    const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
+    EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+  const CliRun maxwellian =
+      run_gkt("table " + scene_path("rough_hcs.toml") + hcs + " --set order=2 --set 'hcs=\"maxwellian\"'");
+  EXPECT_EQ(maxwellian.status, 2);
+  EXPECT_NE(maxwellian.err.find("hcs: \"maxwellian\" is a first approximation"), std::string::npos) << maxwellian.err;
 }
 
 // `gkt evolve` with the rough model (theory.md §19.13; golden rough_evolve.csv): the last row equals
@@ -765,7 +804,7 @@ TEST(CliRoughEvolve, InitialCumulants) {
   EXPECT_NE(walton.err.find("a20: unknown key for gkt evolve"), std::string::npos) << walton.err;
 }
 
-// `gkt stability` for rough spheres (theory.md §19.14): the three stability columns by default; β = −1
+// `gkt stability` for rough spheres (theory.md §19.15): the three stability columns by default; β = −1
 // (spin decoupled) equals the smooth gas's first-Sonine stability at the Maxwellian (checked against
 // the library in test_rough_hcs_stability.cpp); α = β = 1 is stable (0, 0, inf); the stability values
 // do not need the linear scheme's root (hcs = "linear", its no-root region, still answers); rough-walton

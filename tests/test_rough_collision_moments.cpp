@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "gkt/collision/quadratic_form_moments.hpp"
@@ -310,4 +311,130 @@ TEST(RoughCollisionMoments, TranslationSpinCouplingAgainstMonteCarlo) {
     EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
     EXPECT_LT(error, 0.04 * (std::abs(exact) + 1)) << "moment " << e;
   }
+}
+
+namespace {
+
+/// The six forms of the nonlinear HCS balances (theory.md §19.12): c1², ŵ1², c2², ŵ2², c1'², ŵ1'².
+std::vector<RoughForm> six_energy_forms() {
+  return {
+      rough_dot_form(RoughSlot::v1, RoughSlot::v1),           rough_dot_form(RoughSlot::w1, RoughSlot::w1),
+      rough_dot_form(RoughSlot::v2, RoughSlot::v2),           rough_dot_form(RoughSlot::w2, RoughSlot::w2),
+      rough_dot_form(RoughSlot::v1_post, RoughSlot::v1_post), rough_dot_form(RoughSlot::w1_post, RoughSlot::w1_post)};
+}
+
+}  // namespace
+
+// More than four forms (the recurrence in eight variables): a six-form table must contain the
+// lower tables exactly — forms at power 0 drop out, a form that is the sum of two others expands
+// binomially, and the order of the forms does not matter (the box is walked as an odometer).
+TEST(RoughCollisionMoments, SixFormsContainTheLowerTables) {
+  for (int d : {2, 3}) {
+    const auto params = gkt::rough_parameters(d, Rational(7, 10), Rational(1, 2), Rational(2, 5), Rational(6, 5));
+    const auto f = six_energy_forms();
+    const RoughCollisionMoments<Rational> six(params, f, {2, 1, 1, 1, 2, 1});
+    // Power 0: the four-form table of (c1², ŵ1², c1'², ŵ1'²) and the two-form table of (c2², ŵ2²).
+    const RoughCollisionMoments<Rational> four(params, {f[0], f[1], f[4], f[5]}, {2, 1, 2, 1});
+    const RoughCollisionMoments<Rational> two(params, {f[2], f[3]}, {1, 1});
+    for (int a = 0; a <= 2; ++a)
+      for (int b = 0; b <= 1; ++b)
+        for (int c = 0; c <= 2; ++c)
+          for (int e = 0; e <= 1; ++e) EXPECT_EQ(six.moment({a, b, 0, 0, c, e}), four.moment({a, b, c, e}));
+    for (int a = 0; a <= 1; ++a)
+      for (int b = 0; b <= 1; ++b) EXPECT_EQ(six.moment({0, 0, a, b, 0, 0}), two.moment({a, b}));
+    // Reversed order of the forms: the same moments at reversed exponents.
+    const std::vector<RoughForm> reversed(f.rbegin(), f.rend());
+    const RoughCollisionMoments<Rational> backwards(params, reversed, {1, 2, 1, 1, 1, 2});
+    for (int a = 0; a <= 2; ++a)
+      for (int b = 0; b <= 1; ++b)
+        for (int c = 0; c <= 1; ++c)
+          for (int g = 0; g <= 2; ++g)
+            EXPECT_EQ(six.moment({a, b, c, 1, g, 1}), backwards.moment({1, g, 1, c, b, a})) << a << b << c << g;
+    // A sixth form that is the sum of two others: ⟨(c1² + ŵ1'²) M⟩ = ⟨c1² M⟩ + ⟨ŵ1'² M⟩, and the
+    // seventh and eighth variables (ΔE-like differences) in the same table.
+    const std::vector<RoughForm> eight{f[0], f[1], f[2],        f[3],
+                                       f[4], f[5], f[0] + f[5], f[4] + gkt::scaled(f[0], Rational(-1))};
+    const RoughCollisionMoments<Rational> sums(params, eight, {1, 1, 1, 1, 1, 1, 1, 1});
+    for (int b = 0; b <= 1; ++b)
+      for (int c = 0; c <= 1; ++c) {
+        EXPECT_EQ(sums.moment({0, b, c, 1, 0, 0, 1, 0}),
+                  sums.moment({1, b, c, 1, 0, 0, 0, 0}) + sums.moment({0, b, c, 1, 0, 1, 0, 0}));
+        EXPECT_EQ(sums.moment({0, b, c, 0, 0, 0, 0, 1}),
+                  sums.moment({0, b, c, 0, 1, 0, 0, 0}) - sums.moment({1, b, c, 0, 0, 0, 0, 0}));
+        EXPECT_EQ(sums.moment({0, b, c, 0, 0, 0, 1, 1}),
+                  sums.moment({1, b, c, 0, 1, 0, 0, 0}) - six.moment({2, b, c, 0, 0, 0}) +
+                      sums.moment({0, b, c, 0, 1, 1, 0, 0}) - sums.moment({1, b, c, 0, 0, 1, 0, 0}));
+      }
+    EXPECT_THROW(RoughCollisionMoments<Rational>(params, std::vector<RoughForm>(9, f[0]), std::vector<int>(9, 1)),
+                 std::invalid_argument);
+  }
+}
+
+// One six-form moment family, ⟨c1² ŵ1² c2² ŵ2² c1'² ŵ1'²⟩ and two of its faces, against Monte Carlo.
+TEST(RoughCollisionMoments, SixFormMomentsAgainstMonteCarlo) {
+  const int d = 3;
+  const double alpha = 0.7, beta = 0.5, kappa = 0.4, theta = 1.2;
+  const auto params = gkt::rough_parameters(d, Rational(7, 10), Rational(1, 2), Rational(2, 5), Rational(6, 5));
+  const RoughCollisionMoments<Rational> engine(params, six_energy_forms(), {1, 1, 1, 1, 1, 1});
+  const std::vector<std::array<int, 6>> exponents{{1, 1, 1, 1, 1, 1}, {1, 0, 1, 0, 1, 1}, {0, 1, 0, 1, 1, 1}};
+  const std::array<std::array<RoughSlot, 2>, 6> slots{{{RoughSlot::v1, RoughSlot::v1},
+                                                       {RoughSlot::w1, RoughSlot::w1},
+                                                       {RoughSlot::v2, RoughSlot::v2},
+                                                       {RoughSlot::w2, RoughSlot::w2},
+                                                       {RoughSlot::v1_post, RoughSlot::v1_post},
+                                                       {RoughSlot::w1_post, RoughSlot::w1_post}}};
+  gkt::test::RoughCollisionSampler sampler(d, alpha, beta, kappa, theta, 20261202);
+  const long samples = 400000;
+  std::vector<double> swh(exponents.size(), 0), sw2h2(exponents.size(), 0), sw2h(exponents.size(), 0);
+  double w_sum = 0, w2_sum = 0;
+  for (long s = 0; s < samples; ++s) {
+    const RoughCollision c = sampler.draw();
+    if (c.weight == 0) continue;
+    w_sum += c.weight;
+    w2_sum += c.weight * c.weight;
+    std::array<double, 6> values{};
+    for (std::size_t v = 0; v < 6; ++v) values[v] = mc_dot(c, slots[v][0], slots[v][1]);
+    for (std::size_t e = 0; e < exponents.size(); ++e) {
+      double h = 1;
+      for (std::size_t v = 0; v < 6; ++v)
+        if (exponents[e][v] == 1) h *= values[v];
+      swh[e] += c.weight * h;
+      sw2h2[e] += c.weight * c.weight * h * h;
+      sw2h[e] += c.weight * c.weight * h;
+    }
+  }
+  for (std::size_t e = 0; e < exponents.size(); ++e) {
+    const double mean = swh[e] / w_sum;
+    const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+    const double exact = engine.moment(exponents[e]).to_double();
+    EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
+    EXPECT_LT(error, 0.1 * std::abs(exact)) << "Monte Carlo too noisy to discriminate, moment " << e;
+  }
+}
+
+// A down-closed kept set (caps on the total degree per particle): the kept moments equal the full
+// table's, exactly; the others are refused.
+TEST(RoughCollisionMoments, KeptSetEqualsTheFullTable) {
+  const auto params = gkt::rough_parameters(3, Rational(4, 5), Rational(1, 2), Rational(2, 5), Rational(3, 2));
+  const auto f = six_energy_forms();
+  const std::vector<int> degrees{2, 2, 1, 1, 2, 2};
+  const RoughCollisionMoments<Rational> full(params, f, degrees);
+  auto keep = [](const gkt::RoughExponents& e) { return e[0] + e[1] <= 2 && e[2] + e[3] <= 1 && e[4] + e[5] <= 2; };
+  const RoughCollisionMoments<Rational> kept(params, f, degrees, keep);
+  int compared = 0;
+  for (int a = 0; a <= 2; ++a)
+    for (int b = 0; b <= 2; ++b)
+      for (int c = 0; c <= 1; ++c)
+        for (int e = 0; e <= 1; ++e)
+          for (int g = 0; g <= 2; ++g)
+            for (int h = 0; h <= 2; ++h) {
+              const gkt::RoughExponents k{a, b, c, e, g, h};
+              if (keep(k)) {
+                EXPECT_EQ(kept.moment(k), full.moment(k));
+                ++compared;
+              } else {
+                EXPECT_THROW((void)kept.moment(k), std::out_of_range);
+              }
+            }
+  EXPECT_EQ(compared, 6 * 3 * 6);
 }

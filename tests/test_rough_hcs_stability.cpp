@@ -1,5 +1,5 @@
-// Linear stability of the rough gas's HCS (docs/theory.md §19.14): the closed-form critical wave
-// numbers (19.28) against the eigenvalues of the longitudinal matrix (19.27) computed numerically
+// Linear stability of the rough gas's HCS (docs/theory.md §19.15): the closed-form critical wave
+// numbers (19.32) against the eigenvalues of the longitudinal matrix (19.31) computed numerically
 // (Eigen), with the library's first-Sonine coefficients; the smooth limit β = −1 against the smooth
 // gas's stability (hcs_stability, theory.md §14) with the smooth solver's first-Sonine coefficients
 // at a2 = 0; the elastic perfectly rough gas; the shear mode against √(ζ*/η*) with ζ* from an
@@ -92,7 +92,7 @@ double maxwellian_cooling_rate(int d, double alpha, double beta, double kappa) {
 
 }  // namespace
 
-// The heat-mode eigenvalue of (19.27) is real and changes sign exactly at k∥c* of (19.28), and the
+// The heat-mode eigenvalue of (19.31) is real and changes sign exactly at k∥c* of (19.32), and the
 // numerical determinant is (k²/2)(ζ*/2 − s((d+2)/(2(d−1)))(κ* − μ*)k²) whatever η_b, ζ_U (they drop
 // out); the shear mode ½(ζ* − η*k²) vanishes at k⊥c*.
 TEST(RoughHcsStability, HeatModeCrossesZeroAtTheClosedFormWavenumber) {

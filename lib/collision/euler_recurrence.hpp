@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -88,10 +90,25 @@ inline void add_short_product(fmpz_poly_struct* acc, const fmpz_poly_struct* r, 
       _fmpz_vec_scalar_addmul_fmpz(acc->coeffs + k, g->coeffs, g->length, r->coeffs + k);
 }
 
-/// Returns f_m, 0 ≤ m_v ≤ box_v (k0 slowest), of the recurrence whose terms `rec` carry the
-/// exponent shift e and the coefficients q = Qc_e, p = Π_e (Term: members e, q, p).
-template <class Ring, class Term>
-std::vector<Ring> solve_euler_recurrence(const std::vector<Term>& rec, const std::array<int, 4>& box) {
+/// Returns f_m, 0 ≤ m_v ≤ box_v (k0 slowest, the last variable fastest), of the recurrence in N
+/// variables whose terms `rec` carry the exponent shift e and the coefficients q = Qc_e, p = Π_e
+/// (Term: members e (std::array<int, N>), q, p). With `keep` only the m it accepts are computed
+/// (the others are left 0); the accepted set must be down-closed (m kept and m' ≤ m componentwise
+/// ⇒ m' kept), which is what makes it closed under the recurrence.
+template <class Ring, class Term, std::size_t N>
+std::vector<Ring> solve_euler_recurrence(
+    const std::vector<Term>& rec, const std::array<int, N>& box,
+    const std::type_identity_t<std::function<bool(const std::array<int, N>&)>>& keep = {}) {
+  // Row-major strides of the box: index(k) = Σ_v k_v stride_v, so index(m − e) = index(m) − index(e).
+  std::array<std::size_t, N> stride{};
+  std::size_t size = 1;
+  for (std::size_t v = N; v-- > 0;) {
+    stride[v] = size;
+    size *= static_cast<std::size_t>(box[v] + 1);
+  }
+  int top_degree = 0;
+  for (std::size_t v = 0; v < N; ++v) top_degree += box[v];
+
   // Common denominator c of every Qc_e, Π_e and their integer numerators c Qc_e, c Π_e.
   Integer c;
   fmpz_one(c.raw());
@@ -100,25 +117,29 @@ std::vector<Ring> solve_euler_recurrence(const std::vector<Term>& rec, const std
     accumulate_denominator(c.raw(), r.p);
   }
   struct IntegerTerm {
-    std::array<int, 4> e;
-    int degree;  // |e|
+    std::array<int, N> e;
+    int degree;          // |e|
+    std::size_t offset;  // index(e)
     IntegerPolynomial q, p;
   };
   std::vector<IntegerTerm> terms;
   int top_shift = 1;
   for (const auto& r : rec) {
-    IntegerTerm t{r.e, r.e[0] + r.e[1] + r.e[2] + r.e[3], {}, {}};
+    int degree = 0;
+    std::size_t offset = 0;
+    bool inside = true;
+    for (std::size_t v = 0; v < N; ++v) {
+      degree += r.e[v];
+      offset += static_cast<std::size_t>(r.e[v]) * stride[v];
+      inside = inside && r.e[v] <= box[v];
+    }
+    if (!inside || (keep && !keep(r.e))) continue;  // never reaches a computed coefficient
+    IntegerTerm t{r.e, degree, offset, {}, {}};
     integer_numerator(t.q.raw(), r.q, c.raw());
     integer_numerator(t.p.raw(), r.p, c.raw());
     top_shift = std::max(top_shift, t.degree);
     terms.push_back(std::move(t));
   }
-  std::size_t size = 1;
-  for (int v = 0; v < 4; ++v) size *= static_cast<std::size_t>(box[v] + 1);
-  auto index = [&](int k0, int k1, int k2, int k3) {
-    return ((static_cast<std::size_t>(k0) * (box[1] + 1) + k1) * (box[2] + 1) + k2) * (box[3] + 1) + k3;
-  };
-  const int top_degree = box[0] + box[1] + box[2] + box[3];
   std::vector<IntegerPolynomial> g(size);
   fmpz_poly_one(g[0].raw());
 
@@ -140,37 +161,45 @@ std::vector<Ring> solve_euler_recurrence(const std::vector<Term>& rec, const std
   }
   std::vector<IntegerPolynomial> by_shift(shifts);
   IntegerPolynomial scaled;
-  // Lexicographic order: every m − e (e ≥ 0, e ≠ 0) comes before m.
-  for (int k0 = 0; k0 <= box[0]; ++k0)
-    for (int k1 = 0; k1 <= box[1]; ++k1)
-      for (int k2 = 0; k2 <= box[2]; ++k2)
-        for (int k3 = 0; k3 <= box[3]; ++k3) {
-          const int n = k0 + k1 + k2 + k3;
-          if (n == 0) continue;
-          for (auto& s : by_shift) fmpz_poly_zero(s.raw());
-          for (std::size_t t = 0; t < terms.size(); ++t) {
-            const auto& e = terms[t].e;
-            const int j0 = k0 - e[0], j1 = k1 - e[1], j2 = k2 - e[2], j3 = k3 - e[3];
-            if (j0 < 0 || j1 < 0 || j2 < 0 || j3 < 0) continue;
-            add_short_product(by_shift[static_cast<std::size_t>(terms[t].degree)].raw(),
-                              r_of_term[static_cast<std::size_t>(n) * terms.size() + t].raw(),
-                              g[index(j0, j1, j2, j3)].raw());
-          }
-          auto* out = g[index(k0, k1, k2, k3)].raw();
-          for (int j = 1; j <= top_shift; ++j) {
-            auto* s = by_shift[static_cast<std::size_t>(j)].raw();
-            if (s->length == 0) continue;
-            _fmpz_poly_normalise(s);
-            if (j == 1) {
-              fmpz_poly_add(out, out, s);
-            } else {
-              fmpz_poly_scalar_mul_fmpz(
-                  scaled.raw(), s,
-                  multiplier[static_cast<std::size_t>(n) * shifts + static_cast<std::size_t>(j)].raw());
-              fmpz_poly_add(out, out, scaled.raw());
-            }
-          }
-        }
+  // Lexicographic order (an odometer, the last variable fastest): every m − e (e ≥ 0, e ≠ 0)
+  // comes before m.
+  std::array<int, N> k{};
+  std::vector<int> total_degree(size, 0);
+  for (std::size_t at = 1; at < size; ++at) {
+    for (std::size_t v = N; v-- > 0;) {
+      if (k[v] < box[v]) {
+        ++k[v];
+        break;
+      }
+      k[v] = 0;
+    }
+    int n = 0;
+    for (std::size_t v = 0; v < N; ++v) n += k[v];
+    total_degree[at] = n;
+    if (keep && !keep(k)) continue;
+    for (auto& s : by_shift) fmpz_poly_zero(s.raw());
+    for (std::size_t t = 0; t < terms.size(); ++t) {
+      const auto& e = terms[t].e;
+      bool below = true;
+      for (std::size_t v = 0; v < N && below; ++v) below = e[v] <= k[v];
+      if (!below) continue;
+      add_short_product(by_shift[static_cast<std::size_t>(terms[t].degree)].raw(),
+                        r_of_term[static_cast<std::size_t>(n) * terms.size() + t].raw(), g[at - terms[t].offset].raw());
+    }
+    auto* out = g[at].raw();
+    for (int j = 1; j <= top_shift; ++j) {
+      auto* s = by_shift[static_cast<std::size_t>(j)].raw();
+      if (s->length == 0) continue;
+      _fmpz_poly_normalise(s);
+      if (j == 1) {
+        fmpz_poly_add(out, out, s);
+      } else {
+        fmpz_poly_scalar_mul_fmpz(scaled.raw(), s,
+                                  multiplier[static_cast<std::size_t>(n) * shifts + static_cast<std::size_t>(j)].raw());
+        fmpz_poly_add(out, out, scaled.raw());
+      }
+    }
+  }
 
   // f_m = G_m / (c^{|m|} |m|!), reduced once.
   std::vector<Integer> denominator(static_cast<std::size_t>(top_degree) + 1);
@@ -181,15 +210,10 @@ std::vector<Ring> solve_euler_recurrence(const std::vector<Term>& rec, const std
   }
   std::vector<Ring> f;
   f.reserve(size);
-  for (int k0 = 0; k0 <= box[0]; ++k0)
-    for (int k1 = 0; k1 <= box[1]; ++k1)
-      for (int k2 = 0; k2 <= box[2]; ++k2)
-        for (int k3 = 0; k3 <= box[3]; ++k3) {
-          const std::size_t at = index(k0, k1, k2, k3);
-          f.push_back(
-              ring_from_integer<Ring>(g[at].raw(), denominator[static_cast<std::size_t>(k0 + k1 + k2 + k3)].raw()));
-          g[at] = IntegerPolynomial();  // free as we go
-        }
+  for (std::size_t at = 0; at < size; ++at) {
+    f.push_back(ring_from_integer<Ring>(g[at].raw(), denominator[static_cast<std::size_t>(total_degree[at])].raw()));
+    g[at] = IntegerPolynomial();  // free as we go
+  }
   return f;
 }
 

@@ -1,5 +1,7 @@
 // Private: exact Taylor expansion of the Gaussian collision integral J(Q(x)) in up to four
-// auxiliary variables x = (x0, x1, x2, x3), Q(x) = Q0 + Σ_v x_v Q_v (docs/theory.md §3).
+// auxiliary variables x = (x0, x1, x2, x3), Q(x) = Q0 + Σ_v x_v Q_v (docs/theory.md §3). The
+// polynomials and the recurrence take the number of variables as a template parameter (the
+// rough engine uses eight).
 //
 // J/J(0) = a^{1/2} n1^{−(d−1)/2} n2^{−1} with a, n1, n2 polynomials (degree 1, 2, 2) in x
 // normalised to constant term 1. Its coefficients follow from the Euler-operator identity
@@ -11,6 +13,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -22,9 +27,14 @@ namespace gkt::detail {
 
 using ExactForm = std::array<std::array<Rational, 4>, 4>;
 
-/// Number of auxiliary expansion variables the engine supports.
+/// Exponent vector of a monomial in N auxiliary variables.
+template <std::size_t N>
+using ExponentVector = std::array<int, N>;
+
+/// Number of auxiliary expansion variables of the smooth engine (the rough engine,
+/// rough_collision_moments.cpp, runs the same recurrence in more).
 inline constexpr int kVariables = 4;
-using Exponents = std::array<int, kVariables>;
+using Exponents = ExponentVector<kVariables>;
 
 /// Returns the reference form Q0 = diag(θ_i, θ_j, 0, 0): the two Maxwellians (theory.md (2.8)).
 inline ExactForm reference_form(const CollisionPair& pair) {
@@ -34,9 +44,10 @@ inline ExactForm reference_form(const CollisionPair& pair) {
   return q0;
 }
 
-/// A polynomial in the auxiliary variables with few terms (exponent vectors e, coefficients c).
-template <class Ring>
+/// A polynomial in N auxiliary variables with few terms (exponent vectors e, coefficients c).
+template <class Ring, std::size_t N = kVariables>
 struct SmallPolynomial {
+  using Exponents = ExponentVector<N>;
   struct Term {
     Exponents e;
     Ring c;
@@ -72,7 +83,7 @@ struct SmallPolynomial {
     for (const auto& x : a.terms)
       for (const auto& y : b.terms) {
         Exponents e{};
-        for (int v = 0; v < kVariables; ++v) e[v] = x.e[v] + y.e[v];
+        for (std::size_t v = 0; v < N; ++v) e[v] = x.e[v] + y.e[v];
         r.add(e, x.c * y.c);
       }
     return r;
@@ -87,7 +98,7 @@ struct SmallPolynomial {
     SmallPolynomial r;
     for (const auto& t : terms) {
       long degree = 0;
-      for (int v = 0; v < kVariables; ++v) degree += t.e[v];
+      for (std::size_t v = 0; v < N; ++v) degree += t.e[v];
       r.add(t.e, Ring(degree) * t.c);
     }
     return r;
@@ -115,12 +126,15 @@ struct GeneratingSeries {
 };
 
 /// Returns the Taylor coefficients f_m, 0 ≤ m_v ≤ box_v (index order of GeneratingSeries, k0
-/// slowest), of the f with f_0 = 1 and Π·Ef = f·Qc (theory.md (3.2)–(3.3)):
+/// slowest), of the f with f_0 = 1 and Π·Ef = f·Qc (theory.md (3.2)–(3.3)) in N variables:
 /// |m| f_m = Σ_{e≠0} (Qc_e − |m−e| Π_e) f_{m−e}. `pi` has constant term 1; the constant term of
-/// `qc` (an Euler derivative: none) is ignored. Exact in the ring.
-template <class Ring>
-std::vector<Ring> euler_recurrence(const SmallPolynomial<Ring>& pi, const SmallPolynomial<Ring>& qc,
-                                   const Exponents& box) {
+/// `qc` (an Euler derivative: none) is ignored. Exact in the ring. `keep`: a down-closed subset of
+/// the box to compute (solve_euler_recurrence); empty: all of it.
+template <class Ring, std::size_t N>
+std::vector<Ring> euler_recurrence(
+    const SmallPolynomial<Ring, N>& pi, const SmallPolynomial<Ring, N>& qc, const ExponentVector<N>& box,
+    const std::type_identity_t<std::function<bool(const ExponentVector<N>&)>>& keep = {}) {
+  using Exponents = ExponentVector<N>;
   struct RecurrenceTerm {
     Exponents e;
     Ring q, p;
@@ -137,7 +151,7 @@ std::vector<Ring> euler_recurrence(const SmallPolynomial<Ring>& pi, const SmallP
       }
     if (!merged && term.e != Exponents{}) rec.push_back({term.e, term.c, Ring(0L)});
   }
-  return solve_euler_recurrence<Ring>(rec, box);
+  return solve_euler_recurrence<Ring>(rec, box, keep);
 }
 
 /// Returns the Taylor coefficients of J(Q0 + Σ x_v Q_v)/J(Q0) in the box (exact in Ring).

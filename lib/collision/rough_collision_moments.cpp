@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "collision/power_product_series.hpp"
 
@@ -53,22 +54,26 @@ SlotRows<Ring> slot_rows(const RoughCollisionParameters<Ring>& p) {
   return r;
 }
 
+constexpr std::size_t kRoughVariables = kMaxRoughForms;
+using Box = detail::ExponentVector<kRoughVariables>;
 template <class Ring>
-using PolyMatrix4 = std::array<std::array<detail::SmallPolynomial<Ring>, 4>, 4>;
+using Poly = detail::SmallPolynomial<Ring, kRoughVariables>;
+template <class Ring>
+using PolyMatrix4 = std::array<std::array<Poly<Ring>, 4>, 4>;
 
 /// Returns det of the submatrix m[rows][cols] by the Leibniz formula, truncated to the box.
 template <class Ring>
-detail::SmallPolynomial<Ring> determinant(const PolyMatrix4<Ring>& m, const std::vector<int>& rows,
-                                          const std::vector<int>& cols, const detail::Exponents& box) {
+Poly<Ring> determinant(const PolyMatrix4<Ring>& m, const std::vector<int>& rows, const std::vector<int>& cols,
+                       const Box& box) {
   std::vector<int> perm(cols.size());
   for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = static_cast<int>(i);
-  detail::SmallPolynomial<Ring> det;
+  Poly<Ring> det;
   do {
     int inversions = 0;
     for (std::size_t i = 0; i < perm.size(); ++i)
       for (std::size_t j = i + 1; j < perm.size(); ++j)
         if (perm[i] > perm[j]) ++inversions;
-    detail::SmallPolynomial<Ring> term = m[rows[0]][cols[perm[0]]];
+    Poly<Ring> term = m[rows[0]][cols[perm[0]]];
     for (std::size_t i = 1; i < perm.size() && !term.terms.empty(); ++i)
       term = detail::truncated_product(term, m[rows[i]][cols[perm[i]]], box);
     det = inversions % 2 == 0 ? det + term : det - term;
@@ -78,22 +83,20 @@ detail::SmallPolynomial<Ring> determinant(const PolyMatrix4<Ring>& m, const std:
 
 /// Returns det(A + iB) (real for A symmetric, B antisymmetric: a Hermitian matrix) by Leibniz.
 template <class Ring>
-detail::SmallPolynomial<Ring> hermitian_determinant(const PolyMatrix4<Ring>& a, const PolyMatrix4<Ring>& b,
-                                                    const detail::Exponents& box) {
-  using Poly = detail::SmallPolynomial<Ring>;
+Poly<Ring> hermitian_determinant(const PolyMatrix4<Ring>& a, const PolyMatrix4<Ring>& b, const Box& box) {
   std::array<int, 4> perm{0, 1, 2, 3};
-  Poly det;
+  Poly<Ring> det;
   do {
     int inversions = 0;
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j)
         if (perm[i] > perm[j]) ++inversions;
-    Poly re = a[0][perm[0]], im = b[0][perm[0]];
+    Poly<Ring> re = a[0][perm[0]], im = b[0][perm[0]];
     for (int i = 1; i < 4; ++i) {
-      const Poly& x = a[i][perm[i]];
-      const Poly& y = b[i][perm[i]];
-      Poly next_re = detail::truncated_product(re, x, box) - detail::truncated_product(im, y, box);
-      Poly next_im = detail::truncated_product(re, y, box) + detail::truncated_product(im, x, box);
+      const Poly<Ring>& x = a[i][perm[i]];
+      const Poly<Ring>& y = b[i][perm[i]];
+      Poly<Ring> next_re = detail::truncated_product(re, x, box) - detail::truncated_product(im, y, box);
+      Poly<Ring> next_im = detail::truncated_product(re, y, box) + detail::truncated_product(im, x, box);
       re = std::move(next_re);
       im = std::move(next_im);
     }
@@ -128,32 +131,37 @@ RoughForm operator+(const RoughForm& f, const RoughForm& g) {
 
 template <class Ring>
 RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters,
-                                                   const std::vector<RoughForm>& forms,
-                                                   const std::vector<int>& degrees) {
-  if (forms.size() > 4 || forms.size() != degrees.size())
-    throw std::invalid_argument("RoughCollisionMoments: at most four forms, one degree each");
+                                                   const std::vector<RoughForm>& forms, const std::vector<int>& degrees)
+    : RoughCollisionMoments(parameters, forms, degrees, {}) {}
+
+template <class Ring>
+RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters,
+                                                   const std::vector<RoughForm>& forms, const std::vector<int>& degrees,
+                                                   std::function<bool(const RoughExponents&)> keep)
+    : keep_(std::move(keep)) {
+  if (forms.size() > kRoughVariables || forms.size() != degrees.size())
+    throw std::invalid_argument("RoughCollisionMoments: at most eight forms, one degree each");
   const int d = parameters.dimension;
   if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3");
-  detail::Exponents box{};
+  Box box{};
   for (std::size_t v = 0; v < forms.size(); ++v) {
     if (degrees[v] < 0) throw std::invalid_argument("RoughCollisionMoments: negative degree");
     box[v] = degrees[v];
   }
   const auto rows = slot_rows(parameters);
-  using Poly = detail::SmallPolynomial<Ring>;
   // Normal block over (v1n, v2n, ŵ1n, ŵ2n) (the spin part only for d = 3), tangential block A over
   // (v1t, v2t, ŝ1, ŝ2) and, for forms coupling v and w, its rotation part B (theory.md (19.5a)).
   PolyMatrix4<Ring> mn, mt, mb;
   // The reference Gaussians exp(−v1² − v2² − s(ŵ1² + ŵ2²)) (theory.md §19.2).
   const Ring one(1L), width(parameters.spin_width);
   for (int r = 0; r < 4; ++r) {
-    mn[r][r].add(detail::Exponents{}, r < 2 ? one : width);
-    mt[r][r].add(detail::Exponents{}, r < 2 ? one : width);
+    mn[r][r].add(Box{}, r < 2 ? one : width);
+    mt[r][r].add(Box{}, r < 2 ? one : width);
   }
   bool mixed = false;
   // exp(+Σ x_v F_v): each form subtracts x_v Σ_ab F_ab (row_a row_bᵀ) from the blocks.
   for (std::size_t v = 0; v < forms.size(); ++v) {
-    detail::Exponents e{};
+    Box e{};
     e[v] = 1;
     for (int a = 0; a < 8; ++a)
       for (int b = 0; b < 8; ++b) {
@@ -185,11 +193,11 @@ RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameter
           }
       }
   }
-  std::vector<detail::PowerFactor<Ring>> factors;
+  std::vector<detail::PowerFactor<Ring, kRoughVariables>> factors;
   const Ring two(2L);
   if (!mixed) {
     // a = ℓᵀ adj(M_v) ℓ with ℓ = (1, −1) (u = v1n − v2n), n_v = det M_v, n_w = det M_w, t = det M_t.
-    Poly a = mn[0][0] + mn[1][1] + two * mn[0][1];
+    Poly<Ring> a = mn[0][0] + mn[1][1] + two * mn[0][1];
     factors.push_back({a, Rational(1, 2)});
     factors.push_back({determinant(mn, {0, 1}, {0, 1}, box), Rational(-1)});
     if (d == 3) factors.push_back({determinant(mn, {2, 3}, {2, 3}, box), Rational(-1, 2)});
@@ -197,36 +205,42 @@ RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameter
   } else {
     // d = 3 with v·w forms: a = ℓᵀ adj(M_N) ℓ, n = det M_N over the whole normal block, and the two
     // tangential copies give det(A⊗I + B⊗J)^{−1/2} = det(A + iB)^{−1}.
-    const Poly c00 = determinant(mn, {1, 2, 3}, {1, 2, 3}, box), c11 = determinant(mn, {0, 2, 3}, {0, 2, 3}, box);
-    const Poly c01 = determinant(mn, {1, 2, 3}, {0, 2, 3}, box);  // (−1)^{0+1}·this = adj_01
+    const Poly<Ring> c00 = determinant(mn, {1, 2, 3}, {1, 2, 3}, box), c11 = determinant(mn, {0, 2, 3}, {0, 2, 3}, box);
+    const Poly<Ring> c01 = determinant(mn, {1, 2, 3}, {0, 2, 3}, box);  // (−1)^{0+1}·this = adj_01
     factors.push_back({c00 + c11 + two * c01, Rational(1, 2)});
     factors.push_back({determinant(mn, {0, 1, 2, 3}, {0, 1, 2, 3}, box), Rational(-1)});
     factors.push_back({hermitian_determinant(mt, mb, box), Rational(-1)});
   }
-  auto f = detail::expand_power_product(std::move(factors), box);
-  box_ = {box[0], box[1], box[2], box[3]};
+  auto f = detail::expand_power_product(std::move(factors), box, keep_);
+  box_ = box;
+  // f_k = ⟨Π F_v^{k_v}⟩/(⟨1⟩ Π k_v!): multiply by the factorials, walking the box in its index
+  // order (an odometer, the last form fastest).
   values_.reserve(f.size());
-  std::size_t i = 0;
-  for (int k0 = 0; k0 <= box[0]; ++k0)
-    for (int k1 = 0; k1 <= box[1]; ++k1)
-      for (int k2 = 0; k2 <= box[2]; ++k2)
-        for (int k3 = 0; k3 <= box[3]; ++k3, ++i) {
-          Ring value = std::move(f[i]);
-          detail::scale(value, Rational::factorial(static_cast<unsigned long>(k0)) *
-                                   Rational::factorial(static_cast<unsigned long>(k1)) *
-                                   Rational::factorial(static_cast<unsigned long>(k2)) *
-                                   Rational::factorial(static_cast<unsigned long>(k3)));
-          values_.push_back(std::move(value));
-        }
+  RoughExponents k{};
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    Rational factorials(1);
+    for (const int kv : k) factorials *= Rational::factorial(static_cast<unsigned long>(kv));
+    Ring value = std::move(f[i]);
+    detail::scale(value, factorials);
+    values_.push_back(std::move(value));
+    for (std::size_t v = kRoughVariables; v-- > 0;) {
+      if (k[v] < box[v]) {
+        ++k[v];
+        break;
+      }
+      k[v] = 0;
+    }
+  }
 }
 
 template <class Ring>
-Ring RoughCollisionMoments<Ring>::moment(const std::array<int, 4>& k) const {
+Ring RoughCollisionMoments<Ring>::moment(const RoughExponents& k) const {
   std::size_t index = 0;
-  for (std::size_t v = 0; v < 4; ++v) {
+  for (std::size_t v = 0; v < kRoughVariables; ++v) {
     if (k[v] < 0 || k[v] > box_[v]) throw std::out_of_range("RoughCollisionMoments: degree outside the expanded box");
     index = index * static_cast<std::size_t>(box_[v] + 1) + static_cast<std::size_t>(k[v]);
   }
+  if (keep_ && !keep_(k)) throw std::out_of_range("RoughCollisionMoments: moment outside the kept set");
   return values_[index];
 }
 

@@ -36,7 +36,7 @@ std::array<std::array<std::complex<double>, 3>, 3> rough_longitudinal_matrix(con
   const bool decoupled = spin_decoupled(in);
   const double bulk = decoupled ? 0.0 : in.bulk_viscosity;
   const double zeta_u = decoupled ? 0.0 : in.cooling_rate_first_order;
-  // theory.md (19.27): K, U carry the share s (∇T_t = τ_t∇T, heat capacity (d + d_r)/2), the work
+  // theory.md (19.31): K, U carry the share s (∇T_t = τ_t∇T, heat capacity (d + d_r)/2), the work
   // term 2τ_t/(d + d_r) = 2s/d, the longitudinal viscosity the bulk viscosity.
   const double heat = s * (d + 2) / (2 * (d - 1));
   const double kappa = heat * in.thermal_conductivity, mu = heat * in.density_heat_coefficient;
@@ -53,7 +53,7 @@ HcsStability rough_hcs_stability(const RoughStabilityInput& in) {
   const double s = rough_translational_share(in.dimension, in.temperature_ratio);
   HcsStability out;
   out.shear_wavenumber = shear_critical_wavenumber(in.cooling_rate, in.shear_viscosity);
-  // det M = (k²/2)[ζ*/2 − s((d+2)/(2(d−1)))(κ* − μ*)k²] vanishes at (19.28).
+  // det M = (k²/2)[ζ*/2 − s((d+2)/(2(d−1)))(κ* − μ*)k²] vanishes at (19.32).
   const double denominator = s * (d + 2) * (in.thermal_conductivity - in.density_heat_coefficient);
   const double numerator = (d - 1) * zeta;
   out.heat_wavenumber = numerator > 0 && denominator > 0 ? std::sqrt(numerator / denominator) : 0.0;

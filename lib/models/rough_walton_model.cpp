@@ -2,7 +2,7 @@
 // friction in Walton's form, β(γ) = min{β0, −1 + ((1+κ)/κ)(1+α) μ_f cot γ}
 // (rough_walton.hpp; docs/theory.md §19.10): the Maxwellian HCS (θ, ζ*), the first-Sonine η*, κ*, μ*
 // and the scalar Navier–Stokes response (bulk viscosity, first-order cooling rate). μ_f → ∞ is the "rough"
-// model. The linear stability of the HCS from these coefficients (rough_hcs_stability.hpp, §19.14).
+// model. The linear stability of the HCS from these coefficients (rough_hcs_stability.hpp, §19.15).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -26,7 +26,7 @@ const std::vector<std::string> kWaltonTableColumns{"rotational_temperature_ratio
                                                    "cooling_rate_first_order"};
 
 /// Returns the HCS stability of the Walton gas from its Maxwellian θ, ζ* and first-Sonine coefficients
-/// (theory.md §19.14); NaN everywhere where the spin decouples (no HCS of the spin, §19.10).
+/// (theory.md §19.15); NaN everywhere where the spin decouples (no HCS of the spin, §19.10).
 HcsStability walton_stability(int d, const RoughWaltonState& s) {
   if (s.spin_decoupled) return {std::nan(""), std::nan(""), std::nan("")};
   RoughStabilityInput in;
@@ -97,7 +97,7 @@ class RoughWaltonModel final : public TransportModel {
     for (const auto& name : coefficients) {
       const auto& critical = stability_coefficient_names();
       if (std::find(critical.begin(), critical.end(), name) != critical.end()) {
-        out.push_back(rough_stability_value(walton_stability(d, s), name));  // theory.md §19.14
+        out.push_back(rough_stability_value(walton_stability(d, s), name));  // theory.md §19.15
         continue;
       }
       double x = 0;

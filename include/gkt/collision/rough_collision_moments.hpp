@@ -15,6 +15,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
@@ -34,20 +36,40 @@ RoughForm scaled(const RoughForm& f, const Rational& c);
 /// Returns F + G.
 RoughForm operator+(const RoughForm& f, const RoughForm& g);
 
-/// Moments ⟨Π_v F_v^{k_v}⟩/⟨1⟩ for up to four rough forms F_v, 0 ≤ k_v ≤ degree_v (exact in Ring).
+/// Most forms one RoughCollisionMoments expands in (the number of variables of its recurrence).
+inline constexpr std::size_t kMaxRoughForms = 8;
+
+/// Exponents k_v of the forms in a moment; forms past the ones given have exponent 0.
+using RoughExponents = std::array<int, kMaxRoughForms>;
+
+/// Moments ⟨Π_v F_v^{k_v}⟩/⟨1⟩ for up to eight rough forms F_v, 0 ≤ k_v ≤ degree_v (exact in Ring).
 template <class Ring>
 class RoughCollisionMoments {
  public:
-  /// Throws std::invalid_argument for more than four forms, mismatched sizes, negative degrees or
-  /// a form that pairs a translational with a spin slot when d = 2 (v·w vanishes for disks).
+  /// Throws std::invalid_argument for more than kMaxRoughForms forms, mismatched sizes, negative
+  /// degrees or a form that pairs a translational with a spin slot when d = 2 (v·w vanishes for
+  /// disks).
   RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters, const std::vector<RoughForm>& forms,
                         const std::vector<int>& degrees);
+  /// As above, computing only the moments whose exponents `keep` accepts inside the box. The
+  /// accepted set must be down-closed (k kept and k' ≤ k componentwise ⇒ k' kept), e.g. caps on the
+  /// total degree of groups of forms; the cost falls with its size (docs/performance.md).
+  RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters, const std::vector<RoughForm>& forms,
+                        const std::vector<int>& degrees, std::function<bool(const RoughExponents&)> keep);
   /// Returns ⟨Π F_v^{k_v}⟩/⟨1⟩ (velocities in units of √(2T_t/m)); throws std::out_of_range
-  /// outside the expanded box.
-  [[nodiscard]] Ring moment(const std::array<int, 4>& k) const;
+  /// outside the expanded box or the kept set. Unlisted trailing exponents are 0 (`moment({i, j})`).
+  [[nodiscard]] Ring moment(const RoughExponents& k) const;
+  /// Returns moment(k) for a shorter exponent array (the forms past K at exponent 0).
+  template <std::size_t K>
+  requires(K < kMaxRoughForms) [[nodiscard]] Ring moment(const std::array<int, K>& k) const {
+    RoughExponents all{};
+    for (std::size_t v = 0; v < K; ++v) all[v] = k[v];
+    return moment(all);
+  }
 
  private:
-  std::array<int, 4> box_{};
+  RoughExponents box_{};
+  std::function<bool(const RoughExponents&)> keep_;
   std::vector<Ring> values_;
 };
 

@@ -1,5 +1,5 @@
 // Linear stability of the homogeneous cooling state of the dilute rough gas (spheres or disks with
-// spin; docs/theory.md §19.14): the Navier–Stokes equations for n, u and the mean temperature
+// spin; docs/theory.md §19.15): the Navier–Stokes equations for n, u and the mean temperature
 // T = (dT_t + d_rT_r)/(d + d_r), with T_r slaved to T in the normal solution, linearised about the HCS;
 // [garzo2018rough] (their stored copy is the abstract only).
 //
@@ -29,14 +29,14 @@ struct RoughStabilityInput {
 };
 
 /// Returns the translational share of the heat capacity, d/(d + d_rθ) = (d/(d + d_r)) T_t/T on the
-/// HCS (1 when θ = +∞: the spin decoupled); theory.md (19.26).
+/// HCS (1 when θ = +∞: the spin decoupled); theory.md (19.30).
 double rough_translational_share(int dimension, double temperature_ratio);
 
 /// Returns the 3×3 matrix M(k*) of the longitudinal modes (ρ, δT/T, w∥) of the rough gas, ∂_τ X = M X
-/// (theory.md (19.27)); the d − 1 transverse modes obey (14.1) unchanged.
+/// (theory.md (19.31)); the d − 1 transverse modes obey (14.1) unchanged.
 std::array<std::array<std::complex<double>, 3>, 3> rough_longitudinal_matrix(const RoughStabilityInput& in, double k);
 
-/// Returns k⊥c* = √(ζ*/η*), k∥c* of theory.md (19.28) (0 if the heat mode never grows) and
+/// Returns k⊥c* = √(ζ*/η*), k∥c* of theory.md (19.32) (0 if the heat mode never grows) and
 /// L_c* = 2π/max(k⊥c*, k∥c*) (+∞ when both are 0). Throws std::invalid_argument naming the field if
 /// d ∉ {2, 3}, θ is not > 0, or η*, κ* are not > 0.
 HcsStability rough_hcs_stability(const RoughStabilityInput& in);

@@ -1,0 +1,43 @@
+// The homogeneous cooling state of rough spheres and disks at any Sonine order (docs/theory.md
+// §19.14): θ = T_r/T_t, ζ* and the cumulants a_pq of the joint distribution of x = c² and y = ŵ²,
+//   φ = φ_M(c) φ_M(ŵ) [1 + Σ_{2 ≤ p+q ≤ N+1} a_pq S_p^(d/2−1)(x) S_q^(d_r/2−1)(y)],
+// in the linear scheme (products of cumulants dropped) or the nonlinear one (all kept). Order 1
+// is a20, a02, a11 (rough_homogeneous_cooling_state.hpp, the same linear scheme); order N adds
+// every a_pq with p + q ≤ N + 1.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "gkt/algebra/rational.hpp"
+
+namespace gkt {
+
+/// Cumulant scheme of the Sonine HCS: products of cumulants dropped (linear) or kept (nonlinear).
+enum class RoughSonineScheme { linear, nonlinear };
+
+/// The rough HCS at Sonine order N.
+struct RoughSonineCoolingState {
+  int order = 1;                 ///< N: the cumulants a_pq with 2 ≤ p + q ≤ N + 1
+  double temperature_ratio = 1;  ///< θ = T_r/T_t (+inf when the spin decouples, β = −1)
+  double cooling_rate = 0;       ///< ζ* = ζ/ν0 (conventions.md; the smooth gas's reduction)
+  /// The indices (p, q) and values of the cumulants, in the same order (q = 0 only at β = −1).
+  std::vector<std::array<int, 2>> indices;
+  std::vector<double> cumulants;
+  bool spin_decoupled = false;  ///< β = −1: only a_p0; spin cumulants undefined
+  /// False when no real root with realizable fourth-degree cumulants was found (every field NaN).
+  bool solved = true;
+  /// Returns a_pq: 0 beyond the order (the truncation), NaN for a spin cumulant at β = −1 or when
+  /// not solved.
+  [[nodiscard]] double cumulant(int p, int q) const;
+};
+
+/// Returns the HCS at Sonine order N ≥ 1 for d ∈ {2, 3}, α ∈ (0, 1], β ∈ [−1, 1], κ ∈ (0, 1]
+/// (std::invalid_argument naming the field otherwise). The linear scheme is solved like the first
+/// Sonine one (scan in τ, bisection); the nonlinear one by damped Newton's method in (ln τ, a) from
+/// the linear solution of the same order (or the Maxwellian). Cost: two exact engine tables with θ
+/// symbolic, six forms of degree N + 1 (docs/performance.md).
+RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational& alpha, const Rational& beta,
+                                                   const Rational& kappa, int order, RoughSonineScheme scheme);
+
+}  // namespace gkt

@@ -1,0 +1,82 @@
+// Private: the moment balances of the rough gas's homogeneous cooling state at any Sonine order
+// (docs/theory.md §19.14). The scaled distribution is
+//   φ(c, ŵ) = φ_M(c) φ_M(ŵ) [1 + Σ_{(p,q) ∈ I} a_pq S_p^(m_t)(x) S_q^(m_r)(y)],   x = c², y = ŵ²,
+// I = {(p, q): 2 ≤ p + q ≤ M} (M = order + 1; only q = 0 when the spin decouples, β = −1). For
+// each test ψ = x^k y^l, (k, l) ∈ I, and for the energies x, y the Boltzmann equation gives
+//   (k + l) z ⟨ψ⟩ + R[ψ] = 0,   R[ψ] = ⟨(1 + Φ(1))(1 + Φ(2))(ψ(1') − ψ(1))⟩/⟨1⟩,   z = −(2/d) R[x],
+// and R[x]/d = R[y]/d_r (ζ_t = ζ_r). The collision averages of monomials
+//   D(i, j, k, l; m, n) = ⟨x1^i y1^j x2^k y2^l (x1'^m y1'^n − x1^m y1^n)⟩/⟨1⟩
+// come from the rough engine with θ symbolic (six forms x1, y1, x2, y2, x1', y1' for the gain
+// and four for the loss), combined exactly into Laurent polynomials in τ = θ/κ; per τ they are
+// evaluated in double and contracted with the Sonine coefficients.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "gkt/algebra/rational.hpp"
+
+namespace gkt::detail {
+
+/// Exact Σ_j c_j τ^{j − shift} with its double coefficients (a collision average in powers of τ).
+struct TauLaurent {
+  int shift = 0;
+  std::vector<Rational> exact;
+  std::vector<double> c;
+  [[nodiscard]] double operator()(double tau) const;
+};
+
+/// The balances of the rough HCS with cumulants a_pq, p + q ≤ M (see the file comment).
+class RoughSonineBalances {
+ public:
+  /// Builds the exact tables for d ∈ {2, 3}, α, β, κ (validated: std::invalid_argument naming the
+  /// field) and highest Sonine degree M = p + q ≥ 2. With `products` the Φ(1)Φ(2) averages (the
+  /// nonlinear scheme) are built too.
+  RoughSonineBalances(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                      int highest_degree, bool products);
+
+  /// Returns the cumulant indices (p, q) in the order of the unknowns.
+  [[nodiscard]] const std::vector<std::array<int, 2>>& cumulants() const { return cumulants_; }
+  /// Returns true at β = −1 (the spin decouples; the unknowns are a_p0 only, τ plays no role).
+  [[nodiscard]] bool spin_decoupled() const { return decoupled_; }
+  /// Returns the residuals at τ and a: F_0 = R[x]/d − R[y]/d_r (absent when the spin decouples), then
+  /// F_(k,l) = (k + l) z ⟨x^k y^l⟩ + R[x^k y^l] for the cumulant indices. `linear` drops every
+  /// product of cumulants (the linear scheme); otherwise all are kept (needs `products`).
+  [[nodiscard]] std::vector<double> residual(double tau, std::span<const double> a, bool linear) const;
+  /// Returns z_t = ζ_t/(nσ^{d−1}v_t ν) = −(2/d) R[x] at τ and a (linearised in a when `linear`).
+  [[nodiscard]] double translational_rate(double tau, std::span<const double> a, bool linear) const;
+
+  /// R_{w1,w2}[t] at τ: weights 0 (Φ = 1) and 1 … K (the Sonine products), tests 0 = x, 1 = y,
+  /// 2 … K + 1 the cumulant indices. Entries with both weights ≠ 0 only with `products`.
+  struct Productions {
+    std::size_t weights = 0, tests = 0;
+    std::vector<double> r;  // [w1][w2][t]
+    [[nodiscard]] double operator()(std::size_t w1, std::size_t w2, std::size_t t) const {
+      return r[(w1 * weights + w2) * tests + t];
+    }
+  };
+  /// Returns the collision averages at τ (only those of the linear scheme when `linear`).
+  [[nodiscard]] Productions productions(double tau, bool linear) const;
+  /// Returns residual(τ, a, linear) from the averages at τ.
+  [[nodiscard]] std::vector<double> evaluate(const Productions& r, std::span<const double> a, bool linear) const;
+
+ private:
+  int dimension_;
+  int highest_;
+  bool products_;
+  bool decoupled_;
+  std::vector<std::array<int, 2>> cumulants_;
+  std::vector<std::array<int, 2>> tests_;      // x, y, then the cumulants
+  std::vector<std::array<int, 2>> monomials_;  // (i, j) with i + j ≤ M (j = 0 when decoupled)
+  /// Sonine products as monomials: per weight, (monomial index, coefficient).
+  std::vector<std::vector<std::pair<std::size_t, double>>> weight_terms_;
+  /// ⟨ψ_t⟩_M and ⟨ψ_t Φ_w⟩_M (exact rationals as doubles): [t], [t][w − 1].
+  std::vector<double> maxwellian_;
+  std::vector<std::vector<double>> projection_;
+  /// D(monomial 1, monomial 2; test) as Laurent polynomials in τ, [m1][m2][t]; with `products`
+  /// false only the entries with m1 = 0 or m2 = 0 are filled.
+  std::vector<TauLaurent> d_;
+};
+
+}  // namespace gkt::detail
