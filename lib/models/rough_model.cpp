@@ -4,14 +4,21 @@
 // (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11; and the
 // shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7) and the orientational
 // correlation C (rough_orientation_correlation.hpp, §19.8); κ*, μ* (rough_thermal_conductivity.hpp) and
-// the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3.
+// the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3. At order N > 1
+// (or with a tolerance) the five Navier–Stokes columns come from rough_sonine_transport.hpp (§19.14) with the
+// error of theory.md (6.1) from orders N + 1, N + 2; the HCS columns stay first-Sonine (order 1 only).
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "gkt/transport/rough/rough_bulk_viscosity.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_orientation_correlation.hpp"
 #include "gkt/transport/rough/rough_shear_viscosity.hpp"
+#include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 #include "models/models.hpp"
 #include "models/rough_parameters.hpp"
@@ -19,6 +26,33 @@
 namespace gkt::detail {
 
 namespace {
+
+// Order N needs the tables to N + 2 for its error estimate: K = 10 at the cap costs ~5 s per (α, β, κ) in 3D
+// (docs/performance.md).
+constexpr int kMaxRoughOrder = 8;
+
+/// The Navier–Stokes columns of the higher-order solver (theory.md §19.14).
+constexpr std::array<const char*, 5> kSonineColumns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
+                                                    "density_heat_coefficient", "cooling_rate_first_order"};
+
+bool is_sonine_column(const std::string& name) {
+  return std::find(kSonineColumns.begin(), kSonineColumns.end(), name) != kSonineColumns.end();
+}
+
+/// Returns the column `name` of one order's values.
+double pick(const RoughTransportValues& v, const std::string& name) {
+  if (name == "shear_viscosity") return v.shear_viscosity;
+  if (name == "bulk_viscosity") return v.bulk_viscosity;
+  if (name == "thermal_conductivity") return v.thermal_conductivity;
+  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
+  return v.cooling_rate_first_order;
+}
+
+/// The tables of one (d, α, β, κ) and the values of every order solved so far.
+struct RoughSonineEntry {
+  std::unique_ptr<RoughSonineTransport> transport;
+  std::map<int, RoughTransportValues> values;
+};
 
 class RoughModel final : public TransportModel {
  public:
@@ -52,7 +86,7 @@ class RoughModel final : public TransportModel {
                                 {"linear", "maxwellian", "linear-or-maxwellian"}));
     return specs;
   }
-  [[nodiscard]] int max_order() const override { return 1; }
+  [[nodiscard]] int max_order() const override { return kMaxRoughOrder; }
   [[nodiscard]] bool supports(Capability capability) const override {
     return capability == Capability::table || capability == Capability::evolve;
   }
@@ -69,7 +103,13 @@ class RoughModel final : public TransportModel {
     const auto specs = parameters();
     const auto [d, alpha, beta, kappa] = read_rough_grain(specs, point, "beta");
     const std::string scheme = SchemaPoint(specs, point).choice("hcs");
-    require_first_approximation(order, "rough");
+    const bool first = order.order == 1 && !order.tolerance;
+    for (const auto& name : coefficients)
+      if (!first && !is_sonine_column(name))
+        throw std::invalid_argument("coefficients: " + name +
+                                    " of model rough is computed at order 1 only; use order = 1 without tolerance, "
+                                    "or ask for shear_viscosity, bulk_viscosity, thermal_conductivity, "
+                                    "density_heat_coefficient, cooling_rate_first_order");
     RoughCoolingState s;
     if (scheme == "linear") {
       s = linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region (theory.md §19.6)
@@ -84,6 +124,16 @@ class RoughModel final : public TransportModel {
     }
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
+      if (!first) {  // order N > 1 or a tolerance: theory.md §19.14, error (6.1) from orders N + 1, N + 2
+        // Tables to N + 2 for a fixed order; a tolerance scan starts at 3 and then takes the cap + 2 at once.
+        const int tables = order.tolerance ? kMaxRoughOrder + 2 : order.order + 2;
+        out.push_back(choose_order(order, max_order(), [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
+          const auto at = [&](int m) { return pick(sonine_values(d, alpha, beta, kappa, m, tables), name); };
+          const double v0 = at(n), v1 = at(n + 1), v2 = at(n + 2);
+          return estimate_from_doubles(v0, v1, v2);
+        }));
+        continue;
+      }
       double x = 0;
       if (name == "rotational_temperature_ratio") {
         x = s.temperature_ratio;
@@ -120,6 +170,24 @@ class RoughModel final : public TransportModel {
     }
     return out;
   }
+
+ private:
+  /// Returns the values of order n; the tables are built to order 3 first, then to `tables` (≥ n) if needed.
+  RoughTransportValues sonine_values(int d, const Rational& alpha, const Rational& beta, const Rational& kappa, int n,
+                                     int tables) {
+    if (sonine_.size() > 64) sonine_.clear();  // bound memory in long sweeps (never mid-evaluation)
+    const std::string key =
+        std::to_string(d) + "|" + alpha.to_string() + "|" + beta.to_string() + "|" + kappa.to_string();
+    RoughSonineEntry& entry = sonine_[key];
+    if (const auto it = entry.values.find(n); it != entry.values.end()) return it->second;
+    if (!entry.transport || entry.transport->highest_order() < n) {
+      const int k = n <= 3 ? 3 : std::max(n, tables);
+      entry.transport = std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k);
+    }
+    return entry.values[n] = entry.transport->at_maxwellian_state(n);
+  }
+
+  std::map<std::string, RoughSonineEntry> sonine_;
 };
 
 }  // namespace
