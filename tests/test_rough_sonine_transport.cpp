@@ -1,4 +1,4 @@
-// Navier–Stokes coefficients of the rough gas at Sonine order N (docs/theory.md §19.14).
+// Navier–Stokes coefficients of the rough gas at Sonine order N (docs/theory.md §19.15).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,7 +106,7 @@ TEST(RoughSonineTransport, PidduckGasAtEveryOrder) {
 }
 
 // Convergence in order: 3D (α, β) = (0.9, 0.5) all five coefficients settle; (0.7, 0) η* settles while κ* and μ*
-// keep oscillating (the standard scheme's breakdown, theory.md §19.14); disks (0.9, 0.5), κ = 1/2.
+// keep oscillating (the standard scheme's breakdown, theory.md §19.15); disks (0.9, 0.5), κ = 1/2.
 TEST(RoughSonineTransport, ConvergenceInOrder) {
   {
     const RoughSonineTransport t(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 8);

@@ -292,7 +292,7 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
   const double z = -(1.0 / dd) * elements.element(0, 1, 0, 0, 0, state.tau);
   RoughTransportValues out;
 
-  // Shear: (L − (z/2)G + (z/2)N) a = b, b_p = ⟨ψ_p:Y2⟩/⟨Y2:Y2⟩, η* = (d − 1) bᵀa (theory.md (19.26)).
+  // Shear: (L − (z/2)G + (z/2)N) a = b, b_p = ⟨ψ_p:Y2⟩/⟨Y2:Y2⟩, η* = (d − 1) bᵀa (theory.md (19.41)).
   {
     const RoughGalerkinSystem s = rough_tensor_system(elements, state, order);
     const RoughTrialFunction y2 = rough_sonine_function(d, 2, 0, 0);
@@ -303,7 +303,7 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
   }
 
   // Heat: (L − (z/2)(G + N)) x = ⟨ψ_p·(ψ1 + ψ2)⟩, (L − (z/2)G) y = z N x; fluxes ⟨c(x + θy)·ψ_q⟩ against the smooth
-  // elastic n1²/(d − 1), n1 = d(d+2)/4 (theory.md (19.27)).
+  // elastic n1²/(d − 1), n1 = d(d+2)/4 (theory.md (19.42)).
   {
     const RoughGalerkinSystem s = rough_vector_system(elements, state, order);
     const auto drive = projections(d, -(dd + 2) / 2 - dr / 2, 1, 1, s.basis);
@@ -322,7 +322,7 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
 
   // Scalar: unknowns a_q and ζ_U; rows (L − (z/2)G + (z/2)N) a − (4/(d+2))⟨ψ_p H⟩ζ_U = −(4/(d+2))⟨ψ_p s⟩ with
   // H = (x − d/2) + (y − d_r/2), s = (2/d)(x − d/2) − (2/(d + d_rθ))H, and zero total energy ⟨(x + θy) f1⟩ = 0;
-  // η_b* = −(2/d)⟨x f1⟩ (theory.md (19.28)).
+  // η_b* = −(2/d)⟨x f1⟩ (theory.md (19.43)).
   if (decoupled) {
     out.bulk_viscosity = out.cooling_rate_first_order = nan;
     return out;

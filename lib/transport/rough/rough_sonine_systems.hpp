@@ -1,4 +1,4 @@
-// The Galerkin systems of the rough gas's Navier–Stokes modes at Sonine order N (docs/theory.md §19.14):
+// The Galerkin systems of the rough gas's Navier–Stokes modes at Sonine order N (docs/theory.md §19.15):
 // basis functions ψ = T_r(c) S_p(x) L_q(y) (x = c², y = ŵ², ŵ the spin scaled by √(2T_r/(κm)); T_0 = 1,
 // T_1 = c, T_2 = (c c)°), their collision matrix L = ⟨ψ_p, 𝓛ψ_q⟩ (normalisation of theory.md (5.2)) and the
 // Maxwellian products N_pq = ⟨ψ_p ψ_q⟩, G_pq = ⟨ψ_q C·∂_C ψ_p⟩ (C = (c, ŵ)) of the cooling term
@@ -67,11 +67,11 @@ struct RoughModeState {
   bool spin_decoupled = false;
 };
 
-/// Returns the shear system of order N: (c c)° S_p L_q, p + q ≤ N − 1 (theory.md (19.26)).
+/// Returns the shear system of order N: (c c)° S_p L_q, p + q ≤ N − 1 (theory.md (19.41)).
 RoughGalerkinSystem rough_tensor_system(const RoughCollisionElements& elements, const RoughModeState& state, int order);
-/// Returns the heat system of order N: c S_p L_q, 1 ≤ p + q ≤ N (no momentum; theory.md (19.27)).
+/// Returns the heat system of order N: c S_p L_q, 1 ≤ p + q ≤ N (no momentum; theory.md (19.42)).
 RoughGalerkinSystem rough_vector_system(const RoughCollisionElements& elements, const RoughModeState& state, int order);
-/// Returns the scalar system of order N: S_p L_q, 1 ≤ p + q ≤ N (no mass; theory.md (19.28)).
+/// Returns the scalar system of order N: S_p L_q, 1 ≤ p + q ≤ N (no mass; theory.md (19.43)).
 RoughGalerkinSystem rough_scalar_system(const RoughCollisionElements& elements, const RoughModeState& state, int order);
 
 /// Returns η*, κ*, μ*, η_b*, ζ_U at order N about Maxwellians at θ (θ = +inf: spin decoupled).

@@ -1,5 +1,5 @@
 // Navier–Stokes coefficients of the dilute rough gas (constant β) at Sonine order N with Maxwellian
-// weights at the temperature ratio θ (docs/theory.md §19.14): the shear, heat and scalar (∇·u) modes
+// weights at the temperature ratio θ (docs/theory.md §19.15): the shear, heat and scalar (∇·u) modes
 // expanded in products of translational and spin Sonine polynomials,
 //   tensor: (c c)° S_p(c²) L_q(ŵ²), p + q ≤ N − 1;   vector: c S_p(c²) L_q(ŵ²), 1 ≤ p + q ≤ N;
 //   scalar: S_p(c²) L_q(ŵ²), 1 ≤ p + q ≤ N (zero total energy; ζ_U the energy row's unknown),
@@ -26,7 +26,7 @@ struct RoughTransportValues {
 };
 
 /// The exact collision tables of one (d, α, β, κ) up to a highest Sonine order, with θ symbolic; each call
-/// evaluates them at θ and solves the three Galerkin systems of one order (theory.md §19.14).
+/// evaluates them at θ and solves the three Galerkin systems of one order (theory.md §19.15).
 class RoughSonineTransport {
  public:
   /// Builds the tables for orders 1 … highest_order. Throws std::invalid_argument naming the field for
