@@ -60,8 +60,9 @@ class RoughModel final : public TransportModel {
   [[nodiscard]] std::string description() const override {
     return "rough inelastic hard spheres (d = 3) or disks (d = 2), constant normal and tangential restitution "
            "alpha, beta and reduced moment of inertia: homogeneous cooling state (temperature ratio, cooling "
-           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; first-Sonine shear and bulk viscosity, "
-           "thermal conductivity, density heat coefficient, first-order cooling rate; translation-rotation "
+           "rate, cumulants a20, a02, a11), Maxwellian or first Sonine; shear and bulk viscosity, thermal "
+           "conductivity, density heat coefficient, first-order cooling rate at first Sonine or Sonine order up to 8 "
+           "(translation x spin Sonine products, Maxwellian reference); translation-rotation "
            "correlation (3D)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
