@@ -624,7 +624,9 @@ TEST(CliRough, SmoothLimitAndBadInput) {
            {"moment_of_inertia=1.5", "moment_of_inertia: must be a number in (0, 1], got 1.5"},
            {"alpha=0", "alpha: must be a number in (0, 1], got 0"},
            {"dimension=4", "dimension: must be 2 or 3, got 4"},
-           {"order=2", "order: must be exactly 1, got 2"},
+           // Order N > 1 exists for the HCS (§19.14) and Navier-Stokes columns (§19.16); the scene asks for C too.
+           {"order=2", "coefficients: orientation_correlation of model rough is computed at order 1 only"},
+           {"order=9", "order: must be an integer in [1, 8], got 9"},
            {"dimension=2", "coefficients: orientation_correlation needs dimension = 3"},
            {"'hcs=\"quadratic\"'", "hcs: must be one of"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
@@ -632,6 +634,31 @@ TEST(CliRough, SmoothLimitAndBadInput) {
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
     EXPECT_TRUE(bad.out.empty());
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+}
+
+// Order N > 1 of the rough Navier-Stokes columns (theory.md §19.16): the order-2 error column is (6.1) from the
+// order-2, 3, 4 values printed by the CLI itself; order 1 stays the first approximation with a nan error.
+TEST(CliRough, HigherSonineOrderAndItsError) {
+  const std::string base = "table " + scene_path("rough_hcs.toml") +
+                           " --set alpha=0.9 --set 'coefficients=[\"shear_viscosity\", \"bulk_viscosity\"]'";
+  std::map<int, std::vector<std::string>> row;
+  for (int n = 1; n <= 4; ++n) {
+    const CliRun run = run_gkt(base + " --set order=" + std::to_string(n));
+    ASSERT_EQ(run.status, 0) << run.err;
+    const auto t = parse_csv(run.out);
+    ASSERT_EQ(t.size(), 2u);
+    row[n] = t[1];
+  }
+  EXPECT_EQ(row[1][2], "nan");
+  for (std::size_t c = 0; c < 2; ++c) {
+    const double v2 = std::stod(row[2][c]), v3 = std::stod(row[3][c]), v4 = std::stod(row[4][c]);
+    // (6.1): the geometric tail with a 25 % margin, or both corrections when they do not shrink.
+    const double d1 = std::abs(v3 - v2), d2 = std::abs(v4 - v3), ratio = d2 / d1;
+    const double expected = ratio < 1 ? 1.25 * d1 / (1 - ratio) : d1 + d2;
+    EXPECT_NEAR(std::stod(row[2][2 + c]), expected, 0.01 * expected) << c;
+    EXPECT_NE(row[2][c], row[1][c]);
+    EXPECT_EQ(row[2].back(), "2");
   }
 }
 
@@ -661,8 +688,8 @@ TEST(CliRough, LinearSchemeNoRootRegion) {
 
 // Higher Sonine orders of the rough HCS (theory.md §19.14): `order` (or `tolerance`) and hcs =
 // "nonlinear" reach θ, ζ* and the cumulants with an error from the next order; order 1 "nonlinear"
-// differs from the first-Sonine "linear" only by the products of cumulants; the transport columns
-// refuse order > 1 and tolerance with one line.
+// differs from the first-Sonine "linear" only by the products of cumulants; C refuses order > 1 and
+// tolerance, the HCS columns an order above 3, with one line.
 TEST(CliRough, SonineOrdersOfTheCoolingState) {
   const std::string hcs =
       " --set 'alpha=[0.9]' --set 'coefficients=[\"rotational_temperature_ratio\", \"a20\", \"a03\"]'";
@@ -684,9 +711,8 @@ TEST(CliRough, SonineOrdersOfTheCoolingState) {
   EXPECT_NEAR(std::stod(n[1][1]), std::stod(f[1][1]), 2e-4);
   EXPECT_NE(n[1][1], f[1][1]);
   for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
-           {"order=2", "order: must be exactly 1, got 2 for shear_viscosity"},
-           {"tolerance=1e-3", "tolerance: shear_viscosity of model rough is a first approximation"},
-           {"order=4", "order: must be an integer in [1, 3], got 4"}}) {
+           {"tolerance=1e-3", "coefficients: orientation_correlation of model rough is computed at order 1 only"},
+           {"order=4", "order: rotational_temperature_ratio of model rough takes orders 1 to 3, got 4"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;

@@ -6,14 +6,18 @@
 // (rough_sonine_cooling_state.hpp, §19.14); and the
 // shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7) and the orientational
 // correlation C (rough_orientation_correlation.hpp, §19.8); κ*, μ* (rough_thermal_conductivity.hpp) and
-// the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3; the
-// linear stability of the HCS from them (rough_hcs_stability.hpp, §19.15).
+// the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3; at order
+// N > 1 (or with a tolerance) these five Navier–Stokes columns come from rough_sonine_transport.hpp (§19.16)
+// with the error of theory.md (6.1) from orders N + 1, N + 2; the linear stability of the HCS from the
+// first-Sonine coefficients (rough_hcs_stability.hpp, §19.15).
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "gkt/evolution/rough_hcs_stability.hpp"
 #include "gkt/transport/rough/rough_bulk_viscosity.hpp"
@@ -21,6 +25,7 @@
 #include "gkt/transport/rough/rough_orientation_correlation.hpp"
 #include "gkt/transport/rough/rough_shear_viscosity.hpp"
 #include "gkt/transport/rough/rough_sonine_cooling_state.hpp"
+#include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 #include "models/models.hpp"
 #include "models/rough_parameters.hpp"
@@ -90,6 +95,33 @@ bool is_hcs_column(const std::string& name) {
   return name == "rotational_temperature_ratio" || name == "cooling_rate" || cumulant_of(name).has_value();
 }
 
+// The Navier–Stokes columns at order N need the tables to N + 2 for their error estimate: K = 10 at the cap
+// costs ~5 s per (α, β, κ) in 3D (docs/performance.md).
+constexpr int kMaxRoughOrder = 8;
+
+/// The Navier–Stokes columns of the higher-order solver (theory.md §19.16).
+constexpr std::array<const char*, 5> kSonineColumns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
+                                                    "density_heat_coefficient", "cooling_rate_first_order"};
+
+bool is_sonine_column(const std::string& name) {
+  return std::find(kSonineColumns.begin(), kSonineColumns.end(), name) != kSonineColumns.end();
+}
+
+/// Returns the column `name` of one order's values.
+double pick_transport(const RoughTransportValues& v, const std::string& name) {
+  if (name == "shear_viscosity") return v.shear_viscosity;
+  if (name == "bulk_viscosity") return v.bulk_viscosity;
+  if (name == "thermal_conductivity") return v.thermal_conductivity;
+  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
+  return v.cooling_rate_first_order;
+}
+
+/// The tables of one (d, α, β, κ) and the values of every order solved so far.
+struct RoughSonineEntry {
+  std::unique_ptr<RoughSonineTransport> transport;
+  std::map<int, RoughTransportValues> values;
+};
+
 class RoughModel final : public TransportModel {
  public:
   [[nodiscard]] std::string name() const override { return "rough"; }
@@ -97,8 +129,9 @@ class RoughModel final : public TransportModel {
     return "rough inelastic hard spheres (d = 3) or disks (d = 2), constant normal and tangential restitution "
            "alpha, beta and reduced moment of inertia: homogeneous cooling state (temperature ratio, cooling "
            "rate, cumulants a20, a02, a11 and a_pq to p + q = 4), Maxwellian or Sonine orders 1-3 (linear or "
-           "nonlinear); first-Sonine shear and bulk viscosity, "
-           "thermal conductivity, density heat coefficient, first-order cooling rate; translation-rotation "
+           "nonlinear); shear and bulk viscosity, thermal conductivity, density heat coefficient, first-order "
+           "cooling rate at first Sonine or Sonine order up to 8 (translation x spin Sonine products, Maxwellian "
+           "reference); translation-rotation "
            "correlation (3D); linear stability of the homogeneous cooling state";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
@@ -124,8 +157,9 @@ class RoughModel final : public TransportModel {
                                 {"linear", "maxwellian", "linear-or-maxwellian", "nonlinear"}));
     return specs;
   }
-  /// The HCS columns take orders 1 … kMaxRoughHcsOrder; the transport columns are first Sonine only.
-  [[nodiscard]] int max_order() const override { return kMaxRoughHcsOrder; }
+  /// The HCS columns take orders 1 … kMaxRoughHcsOrder, the Navier–Stokes columns 1 … kMaxRoughOrder; C and
+  /// the stability values are first approximations.
+  [[nodiscard]] int max_order() const override { return kMaxRoughOrder; }
   [[nodiscard]] bool supports(Capability capability) const override {
     return capability == Capability::table || capability == Capability::evolve || capability == Capability::stability;
   }
@@ -148,34 +182,37 @@ class RoughModel final : public TransportModel {
     const auto specs = parameters();
     const auto [d, alpha, beta, kappa] = read_rough_grain(specs, point, "beta");
     const std::string scheme = SchemaPoint(specs, point).choice("hcs");
-    // Orders above 1, a tolerance or the nonlinear scheme: the Sonine HCS (theory.md §19.14) for θ, ζ*
-    // and the cumulants, with the error from the next order; the first-Sonine path otherwise.
-    const bool sonine = scheme == "nonlinear" || order.order > 1 || order.tolerance || order.row_tolerance;
+    // Order 1 asked for as such is the first approximation of §19.6–19.9 (error not estimated); order 1
+    // chosen by a tolerance scan (row_tolerance set) carries its estimate like any other order. The HCS
+    // columns take the Sonine HCS (theory.md §19.14) beyond it or with the nonlinear scheme, the five
+    // Navier–Stokes columns the Sonine solver of §19.16; C and the stability values are first approximations.
+    const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
+    const bool hcs_sonine = scheme == "nonlinear" || !first;
     for (const auto& name : coefficients) {
       if (is_hcs_column(name)) {
-        if (sonine && (scheme == "maxwellian" || scheme == "linear-or-maxwellian"))
+        if (hcs_sonine && (scheme == "maxwellian" || scheme == "linear-or-maxwellian"))
           throw std::invalid_argument(
               "hcs: \"" + scheme + "\" is a first approximation: use order = 1, or hcs = \"linear\" or \"nonlinear\"");
+        if (!order.tolerance && order.order > kMaxRoughHcsOrder)
+          throw std::invalid_argument("order: " + name + " of model rough takes orders 1 to " +
+                                      std::to_string(kMaxRoughHcsOrder) + ", got " + std::to_string(order.order));
         continue;
       }
-      if (order.tolerance)
-        throw std::invalid_argument("tolerance: " + name +
-                                    " of model rough is a first approximation: use order = 1 (tolerance applies to "
-                                    "rotational_temperature_ratio, cooling_rate and the cumulants only)");
-      if (order.order != 1)
-        throw std::invalid_argument("order: must be exactly 1, got " + std::to_string(order.order) + " for " + name +
-                                    " (first Sonine; the HCS columns take orders up to " +
-                                    std::to_string(kMaxRoughHcsOrder) + ")");
+      if (!first && !is_sonine_column(name))
+        throw std::invalid_argument("coefficients: " + name +
+                                    " of model rough is computed at order 1 only; use order = 1 without tolerance, "
+                                    "or ask for the HCS columns or shear_viscosity, bulk_viscosity, "
+                                    "thermal_conductivity, density_heat_coefficient, cooling_rate_first_order");
     }
-    if (sonine) return sonine_values(d, alpha, beta, kappa, scheme, coefficients, order);
     const auto& critical = stability_coefficient_names();
     const auto is_critical = [&critical](const std::string& c) {
       return std::find(critical.begin(), critical.end(), c) != critical.end();
     };
-    // The stability values use the Maxwellian state whatever `hcs` (theory.md §19.15): a request for
-    // them alone does not need, nor refuse, the scheme's state.
+    // The first-approximation state of the scheme, only for first-approximation HCS columns (the transport and
+    // stability values use the Maxwellian state whatever `hcs`, §19.7, §19.15).
     RoughCoolingState s;
-    if (!std::all_of(coefficients.begin(), coefficients.end(), is_critical)) {
+    const bool first_hcs = !hcs_sonine && std::any_of(coefficients.begin(), coefficients.end(), is_hcs_column);
+    if (first_hcs) {
       if (scheme == "linear") {
         s = linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region (theory.md §19.6)
       } else if (scheme == "maxwellian") {
@@ -188,9 +225,26 @@ class RoughModel final : public TransportModel {
         }
       }
     }
+    HcsSonineStates hcs_states(d, alpha, beta, kappa,
+                               scheme == "nonlinear" ? RoughSonineScheme::nonlinear : RoughSonineScheme::linear);
     std::optional<HcsStability> stability;
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
+      if (hcs_sonine && is_hcs_column(name)) {
+        out.push_back(hcs_sonine_value(hcs_states, name, order));
+        continue;
+      }
+      if (!first && is_sonine_column(name)) {  // theory.md §19.16, error (6.1) from orders N + 1, N + 2
+        // Tables to N + 2 for a fixed order; a tolerance scan starts at 3 and then takes the cap + 2 at once.
+        const int tables = order.tolerance ? kMaxRoughOrder + 2 : order.order + 2;
+        out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
+          const auto at = [&](int m) {
+            return pick_transport(transport_values(d, alpha, beta, kappa, m, tables), name);
+          };
+          return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
+        }));
+        continue;
+      }
       if (is_critical(name)) {
         if (!stability) stability = rough_stability(d, alpha, beta, kappa);  // theory.md §19.15
         out.push_back(rough_stability_value(*stability, name));
@@ -236,57 +290,66 @@ class RoughModel final : public TransportModel {
   }
 
  private:
-  /// The Sonine HCS values at the requested order or tolerance: v_N with the error |v_{N+1} − v_N|
-  /// (theory.md §19.14); the transport columns as in the first-Sonine path.
-  std::vector<CoefficientValue> sonine_values(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
-                                              const std::string& scheme, const std::vector<std::string>& coefficients,
-                                              const OrderRequest& order) {
-    const RoughSonineScheme s = scheme == "nonlinear" ? RoughSonineScheme::nonlinear : RoughSonineScheme::linear;
-    std::map<int, RoughSonineCoolingState> states;
-    auto state = [&](int n) -> const RoughSonineCoolingState& {
-      auto it = states.find(n);
-      if (it == states.end()) it = states.emplace(n, rough_sonine_cooling_state(d, alpha, beta, kappa, n, s)).first;
+  /// The Sonine HCS states of one (d, α, β, κ) and scheme, solved on first use per order.
+  class HcsSonineStates {
+   public:
+    HcsSonineStates(int d, Rational alpha, Rational beta, Rational kappa, RoughSonineScheme scheme)
+        : d_(d), alpha_(std::move(alpha)), beta_(std::move(beta)), kappa_(std::move(kappa)), scheme_(scheme) {}
+    const RoughSonineCoolingState& at(int n) {
+      auto it = states_.find(n);
+      if (it == states_.end())
+        it = states_.emplace(n, rough_sonine_cooling_state(d_, alpha_, beta_, kappa_, n, scheme_)).first;
       return it->second;
-    };
-    auto pick = [](const RoughSonineCoolingState& st, const std::string& name) {
+    }
+
+   private:
+    int d_;
+    Rational alpha_, beta_, kappa_;
+    RoughSonineScheme scheme_;
+    std::map<int, RoughSonineCoolingState> states_;
+  };
+
+  /// Returns one HCS column at the requested order or tolerance: v_N with the error |v_{N+1} − v_N|
+  /// (theory.md §19.14).
+  static CoefficientValue hcs_sonine_value(HcsSonineStates& states, const std::string& name,
+                                           const OrderRequest& order) {
+    auto pick = [&name](const RoughSonineCoolingState& st) {
       if (name == "rotational_temperature_ratio") return st.temperature_ratio;
       if (name == "cooling_rate") return st.cooling_rate;
       const auto pq = *cumulant_of(name);
       return st.cumulant(pq[0], pq[1]);
     };
-    std::vector<CoefficientValue> out;
-    for (const auto& name : coefficients) {
-      if (!is_hcs_column(name)) {
-        out.push_back(evaluate_first_sonine(d, alpha, beta, kappa, name));
-        continue;
-      }
-      out.push_back(choose_order(order, kMaxRoughHcsOrder, [&](int n) {
-        const double v = pick(state(n), name), next = pick(state(n + 1), name);
-        OrderValue value;
-        value.exact = false;
-        value.defined = std::isfinite(v);
-        if (!value.defined) return value;
-        value.estimate.value = Rational::from_double(v);
-        value.estimate.converging = std::isfinite(next);
-        value.estimate.error = value.estimate.converging ? Rational::from_double(std::abs(next - v)) : Rational(0);
-        if (!value.estimate.converging) value.defined = false;  // no error estimate: nan, error inf
-        return value;
-      }));
-    }
-    return out;
+    return choose_order(order, kMaxRoughHcsOrder, [&](int n) {
+      const double v = pick(states.at(n)), next = pick(states.at(n + 1));
+      OrderValue value;
+      value.exact = false;
+      value.defined = std::isfinite(v);
+      if (!value.defined) return value;
+      value.estimate.value = Rational::from_double(v);
+      value.estimate.converging = std::isfinite(next);
+      value.estimate.error = value.estimate.converging ? Rational::from_double(std::abs(next - v)) : Rational(0);
+      if (!value.estimate.converging) value.defined = false;  // no error estimate: nan, error inf
+      return value;
+    });
   }
 
-  /// One transport column (or C) in the first approximation, whatever the HCS order.
-  CoefficientValue evaluate_first_sonine(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
-                                         const std::string& name) {
-    ParameterPoint point;
-    point.numbers["dimension"] = Rational(d);
-    point.numbers["alpha"] = alpha;
-    point.numbers["beta"] = beta;
-    point.numbers["moment_of_inertia"] = kappa;
-    point.choices["hcs"] = "maxwellian";  // the transport columns do not use the HCS cumulants
-    return evaluate(point, {name}, OrderRequest{})[0];
+  /// Returns the Navier–Stokes values of order n; the tables are built to order 3 first, then to `tables`
+  /// (≥ n) if needed.
+  RoughTransportValues transport_values(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                                        int n, int tables) {
+    if (sonine_.size() > 64) sonine_.clear();  // bound memory in long sweeps (never mid-evaluation)
+    const std::string key =
+        std::to_string(d) + "|" + alpha.to_string() + "|" + beta.to_string() + "|" + kappa.to_string();
+    RoughSonineEntry& entry = sonine_[key];
+    if (const auto it = entry.values.find(n); it != entry.values.end()) return it->second;
+    if (!entry.transport || entry.transport->highest_order() < n) {
+      const int k = n <= 3 ? 3 : std::max(n, tables);
+      entry.transport = std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k);
+    }
+    return entry.values[n] = entry.transport->at_maxwellian_state(n);
   }
+
+  std::map<std::string, RoughSonineEntry> sonine_;
 };
 
 }  // namespace

@@ -1,0 +1,58 @@
+// Navier–Stokes coefficients of the dilute rough gas (constant β) at Sonine order N with Maxwellian
+// weights at the temperature ratio θ (docs/theory.md §19.16): the shear, heat and scalar (∇·u) modes
+// expanded in products of translational and spin Sonine polynomials,
+//   tensor: (c c)° S_p(c²) L_q(ŵ²), p + q ≤ N − 1;   vector: c S_p(c²) L_q(ŵ²), 1 ≤ p + q ≤ N;
+//   scalar: S_p(c²) L_q(ŵ²), 1 ≤ p + q ≤ N (zero total energy; ζ_U the energy row's unknown),
+// every collision average exact in the rough engine with θ symbolic (one table per slot pair, shared by
+// the three modes), the Galerkin systems solved in double. Order 1 is the first-Sonine approximation of
+// rough_shear_viscosity.hpp, rough_thermal_conductivity.hpp and rough_bulk_viscosity.hpp.
+#pragma once
+
+#include <memory>
+
+#include "gkt/algebra/rational.hpp"
+
+namespace gkt {
+
+/// η*, κ*, μ*, η_b*, ζ_U of one Sonine order (reductions as in conventions.md: η0(T_t), κ0(T_t), ν0(T_t)).
+struct RoughTransportValues {
+  double shear_viscosity = 0;                     ///< η/η0(T_t)
+  double thermal_conductivity = 0;                ///< κ/κ0(T_t), q the total energy flux (NaN at β = −1)
+  double thermal_conductivity_translational = 0;  ///< its translational flux alone
+  double density_heat_coefficient = 0;            ///< nμ/(T_t κ0) (NaN at β = −1)
+  double density_heat_translational = 0;          ///< its translational flux alone
+  double bulk_viscosity = 0;                      ///< η_b/η0(T_t) (NaN at β = −1)
+  double cooling_rate_first_order = 0;            ///< ζ_U of ζ = ζ⁽⁰⁾ + ζ_U∇·u (NaN at β = −1)
+};
+
+/// The exact collision tables of one (d, α, β, κ) up to a highest Sonine order, with θ symbolic; each call
+/// evaluates them at θ and solves the three Galerkin systems of one order (theory.md §19.16).
+class RoughSonineTransport {
+ public:
+  /// Builds the tables for orders 1 … highest_order. Throws std::invalid_argument naming the field for
+  /// d ∉ {2, 3}, α ∉ (0, 1], β ∉ [−1, 1], κ ∉ (0, 1] or highest_order < 1.
+  RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                       int highest_order);
+  ~RoughSonineTransport();
+  RoughSonineTransport(const RoughSonineTransport&) = delete;
+  RoughSonineTransport& operator=(const RoughSonineTransport&) = delete;
+  /// Takes the tables.
+  RoughSonineTransport(RoughSonineTransport&&) noexcept;
+  /// Takes the tables.
+  RoughSonineTransport& operator=(RoughSonineTransport&&) noexcept;
+
+  /// Returns the coefficients at Sonine order `order` (1 … highest_order) about Maxwellians at
+  /// θ = T_r/T_t, with ζ* the Maxwellian cooling rate at that θ (theory.md (19.12)); θ = +inf only at
+  /// β = −1 (spin decoupled: total fluxes, η_b and ζ_U NaN). α = β = 1, θ = 1 is Pidduck's gas.
+  [[nodiscard]] RoughTransportValues at(int order, double temperature_ratio) const;
+  /// Returns the same at the Maxwellian HCS θ (θ = +inf at β = −1).
+  [[nodiscard]] RoughTransportValues at_maxwellian_state(int order) const;
+  /// Returns the highest order the tables allow.
+  [[nodiscard]] int highest_order() const;
+
+ private:
+  struct Tables;
+  std::unique_ptr<Tables> tables_;
+};
+
+}  // namespace gkt
