@@ -241,8 +241,10 @@ TrialBasis trial_basis(const Grid& grid, double tail, int k_max) {
 }
 
 /// One resolution N with the weight's exponent `tail`: the HCS with trial/test degree K = N + 1
-/// (Newton), then the three Chapman–Enskog modes with degree N (theory.md (10.12)–(10.14)).
-TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, double tail, int order) {
+/// (Newton from `start`, φ on the 1-D rule — the previous solution, or the Maxwellian if empty; the
+/// solution is left there), then the three Chapman–Enskog modes with degree N (theory.md (10.12)–(10.14)).
+TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, double tail, int order,
+                                    std::vector<double>& start) {
   const double d = kDimension, m = d / 2 - 1, nu = frequency_factor();
   const int k_max = order + 1, n_max = order;
   const auto kk = static_cast<std::size_t>(k_max + 1);
@@ -292,11 +294,11 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   // Newton's method on: ∫φ = 1, ∫c²φ = d/2, R_p + (2/d) R_1 ⟨x S_p'⟩_φ = 0 (p ≥ 2; R_1 = R[S_1] = −R[x]).
   Eigen::VectorXd b(kk);
   b.setZero();
-  for (std::size_t i = 0; i < grid.c.size(); ++i) {  // start: the Maxwellian projected on the basis
+  for (std::size_t i = 0; i < grid.c.size(); ++i) {  // the start projected on the basis: b_k = ∫ φ Q_k
     const double x = grid.c[i] * grid.c[i];
+    const double phi = start.empty() ? std::pow(kPi, -1.5) * std::exp(-x) : start[i];
     basis.values(x, k_max, q.data());
-    for (std::size_t k = 0; k < kk; ++k)
-      b[static_cast<Eigen::Index>(k)] += grid.w[i] * 4 * kPi * x * std::pow(kPi, -1.5) * std::exp(-x) * q[k];
+    for (std::size_t k = 0; k < kk; ++k) b[static_cast<Eigen::Index>(k)] += grid.w[i] * 4 * kPi * x * phi * q[k];
   }
   auto residual = [&](const Eigen::VectorXd& v, Eigen::MatrixXd* jac) {
     Eigen::VectorXd f(kk);
@@ -327,7 +329,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
     for (int h = 0; h < 30; ++h, lambda /= 2)
       if (residual(b - lambda * step, nullptr).norm() < f.norm() || f.norm() < 1e-13) break;
     b -= lambda * step;
-    converged = step.norm() * lambda < 1e-13 * b.norm();
+    converged = step.norm() * lambda < 1e-11 * b.norm();
   }
   if (!converged || !(residual(b, nullptr).norm() < 1e-9)) return out;
   const double r1 = b.dot(tensor[1] * b), zeta_r = std::max(0.0, (2 / d) * r1);
@@ -347,6 +349,13 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
     }
     return sum / norm2;
   };
+  start.resize(grid.c.size());
+  for (std::size_t i = 0; i < grid.c.size(); ++i) {
+    basis.values(grid.c[i] * grid.c[i], k_max, q.data());
+    double phi = 0;
+    for (std::size_t j = 0; j < kk; ++j) phi += b[static_cast<Eigen::Index>(j)] * q[j];
+    start[i] = phi * std::exp(log_weight(grid.c[i], tail));
+  }
   out.a2 = cumulant(2);
   out.a3 = cumulant(3);
   out.cooling_rate = zeta_r * (d + 2) / (4 * nu);  // theory.md (9.4)
@@ -453,11 +462,12 @@ std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alp
   const Grid grid = make_grid(c_max, reach, degree);
   const Kernel kernel = collision_kernel(grid, alpha, p_max);
   std::vector<TailGalerkinValues> out;
+  std::vector<double> start;  // φ of the previous solution on the 1-D rule (empty: the Maxwellian)
   for (int n = 1; n <= max_order; ++n) {
     double tail = tail0;
     TailGalerkinValues v;
     for (int pass = 0; pass < kWeightPasses; ++pass) {
-      v = solve_resolution(grid, kernel, tail, n);
+      v = solve_resolution(grid, kernel, tail, n, start);
       if (!v.solved || alpha == 1) break;
       tail = v.tail_exponent;
     }
