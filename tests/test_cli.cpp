@@ -1023,7 +1023,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "model = \"smooth-inelastic\"\npacking_fraction = 0.2\npair_correlation = \"py\"\norder = 1\n", "",
                  "pair_correlation: must be one of \"carnahan-starling\", got \"py\""},
         BadInput{"unknown_scheme", "model = \"smooth-inelastic\"\nscheme = \"improved\"\norder = 1\n", "",
-                 "scheme: must be one of \"standard\", \"modified\", got \"improved\""},
+                 "scheme: must be one of \"standard\", \"modified\", \"tail\", got \"improved\""},
         BadInput{"alpha_zero", "model = \"smooth-inelastic\"\nalpha = 0\norder = 1\n", "",
                  "alpha: must be a number in (0, 1], got 0"},
         BadInput{"alpha_above_one", "model = \"smooth-inelastic\"\nalpha = 1.5\norder = 1\n", "",

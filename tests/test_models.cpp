@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -15,6 +16,7 @@
 #include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
+#include "gkt/transport/monodisperse/tail_galerkin.hpp"
 
 using gkt::Capability;
 using gkt::ParameterPoint;
@@ -287,4 +289,43 @@ TEST(ModelFacade, ToleranceDrivesTheMixtureHcsOrder) {
   const auto k2 = model->evaluate(fixed, {"temperature_ratio_1"}, {1, tolerance});
   EXPECT_DOUBLE_EQ(k2[0].value.to_double(), ratio[0]);
   EXPECT_GT(k2[0].error.to_double(), 1e-3);
+}
+
+// scheme = "tail" (theory.md §10.6): the model's value at order N is the solver's resolution N with the
+// error (6.1) from N + 1, N + 2; what the scheme does not do (2D, dense, linear HCS, a4, closed
+// forms, orders past the cap) is refused with the field named.
+TEST(ModelFacade, TailSchemeThroughTheModel) {
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  ParameterPoint p;
+  p.numbers["alpha"] = Rational(1, 2);
+  p.choices["scheme"] = "tail";
+  gkt::OrderRequest order;
+  order.order = 3;
+  const auto v = model->evaluate(p, {"thermal_conductivity", "a2", "pressure"}, order);
+  const auto seq = gkt::tail_galerkin_sequence(3, 0.5, 5);
+  ASSERT_EQ(v.size(), 3U);
+  EXPECT_NEAR(v[0].value.to_double(), seq[2].thermal_conductivity, 1e-12);
+  EXPECT_NEAR(v[1].value.to_double(), seq[2].a2, 1e-12);
+  const double d1 = std::fabs(seq[3].a2 - seq[2].a2), d2 = std::fabs(seq[4].a2 - seq[3].a2);
+  EXPECT_NEAR(v[1].error.to_double(), 1.25 * d1 / (1 - d2 / d1), 1e-6 * d1);  // (6.1)
+  EXPECT_FALSE(v[0].exact);
+  EXPECT_EQ(v[2].value, Rational(1));  // dilute pressure p* = 1
+  auto refused = [&](ParameterPoint q, const std::vector<std::string>& c, int n) {
+    gkt::OrderRequest r;
+    r.order = n;
+    return refusal([&] { (void)model->evaluate(q, c, r); });
+  };
+  ParameterPoint two = p;
+  two.numbers["dimension"] = Rational(2);
+  EXPECT_TRUE(contains(refused(two, {"a2"}, 2), "scheme: \"tail\" is implemented for dimension = 3 only"));
+  ParameterPoint dense = p;
+  dense.numbers["packing_fraction"] = Rational(1, 10);
+  EXPECT_TRUE(contains(refused(dense, {"a2"}, 2), "scheme: \"tail\" is dilute only"));
+  ParameterPoint linear = p;
+  linear.choices["hcs"] = "linear";
+  EXPECT_TRUE(contains(refused(linear, {"a2"}, 1), "hcs:"));
+  EXPECT_TRUE(contains(refused(p, {"a4"}, 2), "coefficients: a4 is not computed by scheme = \"tail\""));
+  EXPECT_TRUE(contains(refused(p, {"a2"}, gkt::kTailGalerkinMaxOrder - 1), "order: must be an integer in [1, "));
+  EXPECT_TRUE(contains(refusal([&] { (void)model->closed_form(p, "shear_viscosity", 1); }),
+                       "scheme: \"tail\" is numerical and has no closed forms"));
 }

@@ -17,6 +17,7 @@
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
+#include "gkt/transport/monodisperse/tail_galerkin.hpp"
 #include "models/models.hpp"
 
 namespace gkt::detail {
@@ -90,7 +91,7 @@ class SmoothInelasticModel final : public TransportModel {
   [[nodiscard]] std::string description() const override {
     return "smooth inelastic hard spheres (d = 3) or disks (d = 2), constant restitution alpha: "
            "homogeneous cooling state, pressure and Navier-Stokes coefficients, dilute or dense (Enskog), "
-           "standard or modified Sonine scheme";
+           "standard or modified Sonine scheme, or the tail-carrying scheme for strong dissipation";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     std::vector<std::string> names;
@@ -112,8 +113,10 @@ class SmoothInelasticModel final : public TransportModel {
         dimension_spec(),
         restitution_spec("alpha", "normal restitution coefficient"),
         choice_spec("hcs", "cumulant scheme of the homogeneous cooling state", {"nonlinear", "linear"}),
-        choice_spec("scheme", "Sonine trial-function weight of the Navier-Stokes coefficients: Maxwellian or HCS",
-                    {"standard", "modified"}),
+        choice_spec("scheme",
+                    "trial-function weight: Maxwellian (standard), HCS (modified) or Gaussian core with the "
+                    "exponential HCS tail (tail: dilute, 3D, converges at strong dissipation)",
+                    {"standard", "modified", "tail"}),
         {"packing_fraction",
          ParameterSpec::Kind::real,
          Rational(0),
@@ -151,6 +154,7 @@ class SmoothInelasticModel final : public TransportModel {
       throw std::invalid_argument("packing_fraction: must be a number in [0, " +
                                   max_packing_fraction(d).to_decimal_string() +
                                   "] for dimension = " + std::to_string(d) + ", got " + phi.to_decimal_string());
+    if (p.choice("scheme") == "tail") return evaluate_tail(d, alpha, phi, scheme, coefficients, order);
     const PairCorrelation& pc = pair_correlation(closure);
     const Rational chi = pc.contact_value(d, phi);
     const Dense dense{phi, chi, pc.packing_derivative(d, phi), closure};
@@ -162,6 +166,7 @@ class SmoothInelasticModel final : public TransportModel {
 
     if (memo_.size() > 4096) memo_.clear();  // bound memory in long sweeps (never mid-evaluation)
     if (ns_memo_.size() > 4096) ns_memo_.clear();
+    if (tail_memo_.size() > 256) tail_memo_.clear();
     std::vector<CoefficientValue> out;
     for (const auto& c : coefficients) {
       if (c == "pressure") {  // exact, independent of the cumulants
@@ -216,6 +221,10 @@ class SmoothInelasticModel final : public TransportModel {
     const SchemaPoint p(parameters(), point);
     const int d = p.number("dimension") == Rational(2) ? 2 : 3;
     const std::string scheme = p.choice("scheme");
+    if (scheme == "tail")
+      throw std::invalid_argument(
+          "scheme: \"tail\" is numerical and has no closed forms: use \"standard\" or "
+          "\"modified\"");
     if (p.number("packing_fraction").sign() != 0) {
       if (scheme != "standard")
         throw std::invalid_argument("scheme: dense-gas closed forms exist for \"standard\" only, got \"" + scheme +
@@ -279,6 +288,57 @@ class SmoothInelasticModel final : public TransportModel {
   }
 
  private:
+  /// The dilute 3D values of the tail scheme (tail_galerkin.hpp, theory.md §10.6): a2, a3, ζ*, η*, κ*,
+  /// μ* (and the HCS stability values from them) at resolution N with the error (6.1) from N + 1, N + 2.
+  std::vector<CoefficientValue> evaluate_tail(int d, const Rational& alpha, const Rational& phi,
+                                              const std::string& hcs_scheme,
+                                              const std::vector<std::string>& coefficients, const OrderRequest& order) {
+    if (d != 3) throw std::invalid_argument("scheme: \"tail\" is implemented for dimension = 3 only");
+    if (phi.sign() != 0) throw std::invalid_argument("scheme: \"tail\" is dilute only: use packing_fraction = 0");
+    if (hcs_scheme != "nonlinear")
+      throw std::invalid_argument("hcs: the tail scheme solves the full HCS: use hcs = \"nonlinear\"");
+    const int highest = kTailGalerkinMaxOrder - 2;
+    if (!order.tolerance && order.order > highest)
+      throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(highest) +
+                                  "] for scheme = \"tail\", got " + std::to_string(order.order));
+    const Dense dilute{Rational(0), Rational(1), Rational(0), "carnahan-starling"};
+    std::vector<CoefficientValue> out;
+    for (const auto& c : coefficients) {
+      if (c == "pressure") {
+        out.push_back({reduced_pressure(d, alpha, Rational(0)), Rational(0), order.order, true, true, true});
+        continue;
+      }
+      const auto transport = transport_named(c);
+      if (!transport && c != "a2" && c != "a3" && c != "cooling_rate")
+        throw std::invalid_argument(std::string("coefficients: ") + c +
+                                    " is not computed by scheme = \"tail\" (a2, a3, cooling_rate, transport)");
+      auto pick = [&](const TailGalerkinValues& v) {
+        if (c == "a2") return v.a2;
+        if (c == "a3") return v.a3;
+        if (c == "cooling_rate") return v.cooling_rate;
+        const NavierStokesValues ns{v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient, 0, 0};
+        return pick_transport(ns, *transport, d, v.cooling_rate, dilute, alpha);
+      };
+      out.push_back(choose_order(order, highest, [&](int n) {
+        const auto& seq = tail_sequence(alpha, n + 2);
+        const auto& s0 = seq[static_cast<std::size_t>(n - 1)];
+        const auto& s1 = seq[static_cast<std::size_t>(n)];
+        const auto& s2 = seq[static_cast<std::size_t>(n + 1)];
+        if (!s0.solved || !s1.solved || !s2.solved) return OrderValue{{Rational(0), Rational(0), false}, false, false};
+        return estimate_from_doubles(pick(s0), pick(s1), pick(s2));
+      }));
+    }
+    return out;
+  }
+  /// The tail-scheme values at resolutions 1 … at least `needed` (memoised per α; a longer sequence is
+  /// computed in steps of four resolutions, the collision kernel being shared within one sequence).
+  const std::vector<TailGalerkinValues>& tail_sequence(const Rational& alpha, int needed) {
+    auto& seq = tail_memo_[alpha.to_string()];
+    if (static_cast<int>(seq.size()) < needed)
+      seq = tail_galerkin_sequence(3, alpha.to_double(),
+                                   std::min(kTailGalerkinMaxOrder, std::max(needed, static_cast<int>(seq.size()) + 4)));
+    return seq;
+  }
   /// The transport value `which` from one order's η*, κ*, μ*, …; the stability values also need the
   /// dilute ζ* of the same order and the density (theory.md (14.4)–(14.5)).
   static double pick_transport(const NavierStokesValues& v, Transport which, int d, double zeta_dilute,
@@ -431,6 +491,7 @@ class SmoothInelasticModel final : public TransportModel {
   std::array<std::optional<FirstSonineNavierStokes>, 2> first_sonine_;
   std::map<std::pair<int, Transport>, EnskogClosedForm> enskog_forms_;
   std::map<std::tuple<int, std::string, int>, std::optional<NavierStokesValues>> ns_memo_;
+  std::map<std::string, std::vector<TailGalerkinValues>> tail_memo_;
 };
 
 }  // namespace

@@ -1,0 +1,39 @@
+// Homogeneous cooling state and Navier–Stokes coefficients of dilute smooth inelastic hard
+// spheres in a representation that carries the exponential high-energy tail of the HCS:
+// Petrov–Galerkin with Sonine test functions and trial functions w(c) × polynomial in c², where
+// w is Gaussian in the core and decays as exp(−A c) with the HCS tail exponent A
+// (docs/theory.md §10.6; [vannoije1998] for the tail). It converges at strong dissipation,
+// where the Maxwellian-weighted Sonine series of §9–10 is asymptotic.
+//
+// Reduced as the Sonine solvers: a_k the Sonine cumulants of φ, ζ* = ζ/ν0, η* = η/η0,
+// κ* = κ/κ0, μ* = nμ/(Tκ0) (docs/conventions.md), A in units of 1/v0, v0 = √(2T/m).
+#pragma once
+
+#include <vector>
+
+namespace gkt {
+
+/// Highest resolution (polynomial degree N in c² of the transport modes) the tail scheme accepts.
+inline constexpr int kTailGalerkinMaxOrder = 12;  // N = 12 fails in the tensor mode at α = 0.2 (theory.md §10.6)
+
+/// The tail-scheme quantities at one resolution N (d = 3, dilute).
+struct TailGalerkinValues {
+  int order = 0;                        ///< N: CE trial/test degree N, HCS degree N + 1 in c²
+  bool solved = false;                  ///< false if Newton's method found no HCS at this N
+  double a2 = 0;                        ///< Sonine cumulant a2 of the HCS
+  double a3 = 0;                        ///< Sonine cumulant a3 of the HCS
+  double cooling_rate = 0;              ///< ζ* = ζ/ν0
+  double tail_exponent = 0;             ///< A of φ ~ exp(−A c): 2β/ζ_r, β = π^{(d−1)/2}/Γ((d+1)/2)
+  double shear_viscosity = 0;           ///< η* = η/η0
+  double thermal_conductivity = 0;      ///< κ* = κ/κ0
+  double density_heat_coefficient = 0;  ///< μ* = nμ/(Tκ0)
+};
+
+/// Returns the tail-scheme values at resolutions N = 1 … max_order for dimension 3 and
+/// restitution α ∈ (0, 1] (element N − 1 is resolution N). The collision kernel on the quadrature
+/// grid is computed once for max_order and shared by all resolutions (each resolution uses the
+/// leading Sonine test functions). Throws std::invalid_argument naming the field for d ≠ 3,
+/// α outside (0, 1] or max_order outside [1, kTailGalerkinMaxOrder].
+std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order);
+
+}  // namespace gkt

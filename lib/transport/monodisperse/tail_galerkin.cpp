@@ -1,0 +1,489 @@
+// Tail-carrying Petrov–Galerkin solution of the HCS and the Chapman–Enskog equations of dilute
+// smooth inelastic hard spheres (tail_galerkin.hpp; docs/theory.md §10.6).
+//
+// Trial functions F_k(c) = w(c) Q_k(c²), w(c) = exp(−2c²/(1 + √(1 + 4c²/A²))) (Gaussian for
+// c ≪ A, exp(−A c) for c ≫ A; theory.md (10.11)), Q_k orthonormal in ∫ w Q_k Q_l dc; test
+// functions the Sonine polynomials of the standard scheme. Collision moments of a polynomial test
+// function: the σ̂ integral is a polynomial in s = ĝ·σ̂ and cos φ (exact Gauss rules), the angle
+// between v1 and v2 becomes |g| with dμ = g dg/(c1 c2) (3D, polynomial integrand, exact Gauss
+// rule), leaving a 2-D radial integral over (c1, c2) by composite Gauss–Legendre split at c1 = c2.
+#include "gkt/transport/monodisperse/tail_galerkin.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace gkt {
+
+namespace {
+
+constexpr int kDimension = 3;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kPanelWidth = 1.0;  // composite Gauss–Legendre: panels of width 1 in the core …
+constexpr int kPanelNodes = 12;      // … 20 % of c beyond c = 5, 12 nodes each (measured: theory.md §10.6)
+constexpr double kNegligible = 40;   // radial nodes of weight below e^{−40} (with the polynomial growth) are dropped
+constexpr int kWeightPasses = 3;     // A of the weight taken from the previous pass's ζ_r
+
+/// Gauss–Legendre rule on [0, 1]: nodes and weights.
+struct Rule {
+  std::vector<double> x, w;
+};
+
+Rule gauss_legendre(int n) {
+  Rule r;
+  r.x.resize(static_cast<std::size_t>(n));
+  r.w.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    long double z = std::cos(static_cast<long double>(kPi) * (i + 0.75L) / (n + 0.5L)), dp = 1;
+    for (int it = 0; it < 100; ++it) {
+      long double p1 = 1, p2 = 0;
+      for (int j = 0; j < n; ++j) {
+        const long double p3 = p2;
+        p2 = p1;
+        p1 = ((2 * j + 1) * z * p2 - j * p3) / (j + 1);
+      }
+      dp = n * (z * p1 - p2) / (z * z - 1);
+      const long double step = p1 / dp;
+      z -= step;
+      if (std::fabs(step) < 1e-19L) break;
+    }
+    r.x[static_cast<std::size_t>(i)] = static_cast<double>(0.5L * (1 - z));
+    r.w[static_cast<std::size_t>(i)] = static_cast<double>(1.0L / ((1 - z * z) * dp * dp));
+  }
+  return r;
+}
+
+/// Sonine polynomials S_index^(p)(x), p = 0 … p_max ([chapman1970] §7.5; theory.md (1.1)).
+void sonine_values(int p_max, double index, double x, double* out) {
+  out[0] = 1;
+  if (p_max >= 1) out[1] = 1 + index - x;
+  for (int n = 1; n < p_max; ++n) out[n + 1] = ((2 * n + 1 + index - x) * out[n] - (n + index) * out[n - 1]) / (n + 1);
+}
+
+/// x S_p'(x) = p S_p − (p + index) S_{p−1} (theory.md (1.1)).
+double x_derivative(const std::vector<double>& s, int p, double index) {
+  return p * s[static_cast<std::size_t>(p)] - (p > 0 ? (p + index) * s[static_cast<std::size_t>(p - 1)] : 0.0);
+}
+
+/// log w(c) of the trial weight (theory.md (10.11)); A = ∞ gives the Gaussian −c².
+double log_weight(double c, double tail) {
+  const double z = std::isinf(tail) ? 0.0 : 4 * c * c / (tail * tail);
+  return -2 * c * c / (std::sqrt(1 + z) + 1);
+}
+
+/// ν = √2 π^{(d−1)/2}/Γ(d/2): the factor that turns the reduced operator of (9.1) into the
+/// units of ν0 (theory.md (9.4)); 2√(2π) in 3D.
+double frequency_factor() { return std::sqrt(2.0) * kPi / std::tgamma(kDimension / 2.0); }
+
+/// β = ∫dσ̂ Θ(ĝ·σ̂) ĝ·σ̂ = π^{(d−1)/2}/Γ((d+1)/2): the loss rate of a fast particle is β c ([vannoije1998]).
+double loss_rate_factor() { return std::pow(kPi, (kDimension - 1) / 2.0) / std::tgamma((kDimension + 1) / 2.0); }
+
+struct RadialNode {
+  double c1, c2, weight;
+};
+
+/// The 1-D composite rule on [0, c_max] and the 2-D rule on [0, c_max]², panels on the diagonal split
+/// into two triangles (the collision kernel has a kink at c1 = c2).
+struct Grid {
+  std::vector<double> c, w;
+  std::vector<RadialNode> pairs;
+};
+
+Grid make_grid(double c_max, double tail, int degree) {
+  const Rule r = gauss_legendre(kPanelNodes);
+  std::vector<double> edges{0.0};  // panels of width 1 in the core, growing by 20 % in the tail
+  while (edges.back() < c_max) edges.push_back(edges.back() + std::max(kPanelWidth, 0.2 * edges.back()));
+  const std::size_t panels = edges.size() - 1, n = r.x.size();
+  Grid g;
+  for (std::size_t i = 0; i < panels; ++i)
+    for (std::size_t a = 0; a < n; ++a) {
+      g.c.push_back(edges[i] + r.x[a] * (edges[i + 1] - edges[i]));
+      g.w.push_back(r.w[a] * (edges[i + 1] - edges[i]));
+    }
+  // A node is dropped when even the highest polynomial degree cannot lift w(c1) w(c2) to e^{−kNegligible}
+  // of the core (where w ≈ 1).
+  auto add = [&](double c1, double c2, double w) {
+    if (log_weight(c1, tail) + log_weight(c2, tail) + degree * std::log1p(c1 + c2) > -kNegligible)
+      g.pairs.push_back({c1, c2, w});
+  };
+  for (std::size_t i = 0; i < panels; ++i)
+    for (std::size_t j = 0; j < panels; ++j)
+      for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = 0; b < n; ++b) {
+          if (i != j) {
+            add(g.c[i * n + a], g.c[j * n + b], g.w[i * n + a] * g.w[j * n + b]);
+            continue;
+          }
+          const double lo = edges[i], c1 = g.c[i * n + a];
+          const double c2 = lo + r.x[b] * (c1 - lo), w = g.w[i * n + a] * r.w[b] * (c1 - lo);
+          add(c1, c2, w);
+          add(c2, c1, w);
+        }
+  return g;
+}
+
+/// The σ̂- and angle-integrated collisional change of the test functions at each radial node, five
+/// families × (p_max + 1): scalar S_p(c²) (HCS), vector c S_p^{(d/2)} contracted with the particle's own
+/// c1 ("self") or the partner's c2 ("partner"), tensor Y2 S_p^{(d/2+1)} contracted likewise.
+struct Kernel {
+  int p_max = 0;
+  std::vector<double> values;  // [node][family][p]
+  [[nodiscard]] const double* at(std::size_t node, int family) const {
+    return &values[(node * 5 + static_cast<std::size_t>(family)) * static_cast<std::size_t>(p_max + 1)];
+  }
+};
+
+enum Family { kScalar = 0, kVectorSelf = 1, kVectorPartner = 2, kTensorSelf = 3, kTensorPartner = 4 };
+
+Kernel collision_kernel(const Grid& grid, double alpha, int p_max) {
+  const double d = kDimension, m = d / 2 - 1, eps = 1 - alpha * alpha;
+  const Rule g_rule = gauss_legendre(p_max + 4), s_rule = gauss_legendre(p_max + 3);
+  // Exact rules: after the φ average the integrand is a polynomial of degree ≤ 2 p_max + 5 in s and
+  // ≤ 2 p_max + 6 in g, and of degree ≤ p_max + 2 in cos φ (Gauss–Chebyshev: exact to 2 n_phi − 1).
+  const int n_phi = p_max / 2 + 2;
+  std::vector<double> cos_phi(static_cast<std::size_t>(n_phi));
+  for (int j = 0; j < n_phi; ++j) cos_phi[static_cast<std::size_t>(j)] = std::cos(kPi * (j + 0.5) / n_phi);
+  Kernel k;
+  k.p_max = p_max;
+  const auto width = static_cast<std::size_t>(p_max + 1);
+  k.values.assign(grid.pairs.size() * 5 * width, 0.0);
+  std::vector<double> s0(width), v0(width), t0(width), s(width), v(width), t(width);
+  for (std::size_t node = 0; node < grid.pairs.size(); ++node) {
+    const double c1 = grid.pairs[node].c1, c2 = grid.pairs[node].c2, x1 = c1 * c1, x2 = c2 * c2;
+    double* out = &k.values[node * 5 * width];
+    sonine_values(p_max, m, x1, s0.data());
+    sonine_values(p_max, m + 1, x1, v0.data());
+    sonine_values(p_max, m + 2, x1, t0.data());
+    const double g_lo = std::fabs(c1 - c2), g_hi = c1 + c2;
+    for (std::size_t ig = 0; ig < g_rule.x.size(); ++ig) {
+      const double g = g_lo + (g_hi - g_lo) * g_rule.x[ig];
+      const double w_g = g_rule.w[ig] * (g_hi - g_lo) * g / (c1 * c2);  // ∫_{−1}^{1} dμ = ∫ g dg/(c1 c2)
+      // Centre of mass G and relative velocity g: G·g = (x1 − x2)/2, |g|²G² − (G·g)² = g² G⊥².
+      const double big_g2 = (2 * x1 + 2 * x2 - g * g) / 4, gg = (x1 - x2) / 2, v12 = (x1 + x2 - g * g) / 2;
+      const double perp2 = g * g * big_g2 - gg * gg, g_perp = perp2 > 0 ? std::sqrt(perp2) : 0.0;
+      const double self_t = x1 * x1 - x1 * x1 / d, partner_t = v12 * v12 - x1 * x2 / d;
+      for (std::size_t is = 0; is < s_rule.x.size(); ++is) {
+        const double sv = s_rule.x[is], sq = std::sqrt(1 - sv * sv), big_x = g * sv;
+        const double w = s_rule.w[is] * big_x * w_g * 2 * kPi / n_phi;  // (g·σ̂) ds dφ over the hemisphere
+        for (const double cp : cos_phi) {
+          // X = g·σ̂, XY = (g·σ̂)(G·σ̂); v1' = v1 − ((1+α)/2) X σ̂ (theory.md (1.2)).
+          const double xy = sv * sv * gg + sv * sq * cp * g_perp, x_sq = big_x * big_x;
+          const double u = x1 - (1 + alpha) * xy - eps * x_sq / 4;
+          const double self_v = x1 - 0.5 * (1 + alpha) * (xy + x_sq / 2);
+          const double partner_v = v12 - 0.5 * (1 + alpha) * (xy - x_sq / 2);
+          const double self_tt = self_v * self_v - u * x1 / d, partner_tt = partner_v * partner_v - u * x2 / d;
+          sonine_values(p_max, m, u, s.data());
+          sonine_values(p_max, m + 1, u, v.data());
+          sonine_values(p_max, m + 2, u, t.data());
+          for (std::size_t p = 0; p < width; ++p) {
+            out[p] += w * (s[p] - s0[p]);
+            out[width + p] += w * (self_v * v[p] - x1 * v0[p]);
+            out[2 * width + p] += w * (partner_v * v[p] - v12 * v0[p]);
+            out[3 * width + p] += w * (self_tt * t[p] - self_t * t0[p]);
+            out[4 * width + p] += w * (partner_tt * t[p] - partner_t * t0[p]);
+          }
+        }
+      }
+    }
+    const double measure = grid.pairs[node].weight * (4 * kPi) * (2 * kPi) * x1 * x2;  // S_3 S_2 c1² c2²
+    for (std::size_t i = 0; i < 5 * width; ++i) out[i] *= measure;
+  }
+  return k;
+}
+
+/// Orthonormal polynomials Q_k(x), x = c², in ∫ w Q_k Q_l d³c (Stieltjes on the 1-D rule).
+struct TrialBasis {
+  double tail = 0;
+  std::vector<double> a, b;  // three-term recurrence
+  double q0 = 0;
+  void values(double x, int k_max, double* out) const {
+    out[0] = q0;
+    if (k_max >= 1) out[1] = (x - a[0]) * out[0] / b[1];
+    for (int k = 1; k < k_max; ++k)
+      out[k + 1] = ((x - a[static_cast<std::size_t>(k)]) * out[k] - b[static_cast<std::size_t>(k)] * out[k - 1]) /
+                   b[static_cast<std::size_t>(k + 1)];
+  }
+};
+
+TrialBasis trial_basis(const Grid& grid, double tail, int k_max) {
+  const std::size_t n = grid.c.size();
+  std::vector<double> wt(n), p(n, 1.0), prev(n, 0.0), next(n);
+  double norm = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    wt[i] = grid.w[i] * 4 * kPi * grid.c[i] * grid.c[i] * std::exp(log_weight(grid.c[i], tail));
+    norm += wt[i];
+  }
+  TrialBasis basis;
+  basis.tail = tail;
+  basis.q0 = 1 / std::sqrt(norm);
+  basis.a.assign(static_cast<std::size_t>(k_max + 1), 0.0);
+  basis.b.assign(static_cast<std::size_t>(k_max + 2), 0.0);
+  for (auto& v : p) v = basis.q0;
+  for (int k = 0; k <= k_max; ++k) {
+    double a = 0;
+    for (std::size_t i = 0; i < n; ++i) a += wt[i] * grid.c[i] * grid.c[i] * p[i] * p[i];
+    basis.a[static_cast<std::size_t>(k)] = a;
+    double b = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      next[i] = (grid.c[i] * grid.c[i] - a) * p[i] - (k > 0 ? basis.b[static_cast<std::size_t>(k)] : 0.0) * prev[i];
+      b += wt[i] * next[i] * next[i];
+    }
+    b = std::sqrt(b);
+    basis.b[static_cast<std::size_t>(k + 1)] = b;
+    for (std::size_t i = 0; i < n; ++i) {
+      prev[i] = p[i];
+      p[i] = next[i] / b;
+    }
+  }
+  return basis;
+}
+
+/// One resolution N with the weight's exponent `tail`: the HCS with trial/test degree K = N + 1
+/// (Newton from `start`, φ on the 1-D rule — the previous solution, or the Maxwellian if empty; the
+/// solution is left there), then the three Chapman–Enskog modes with degree N (theory.md (10.12)–(10.14)).
+TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, double tail, int order,
+                                    std::vector<double>& start) {
+  const double d = kDimension, m = d / 2 - 1, nu = frequency_factor();
+  const int k_max = order + 1, n_max = order;
+  const auto kk = static_cast<std::size_t>(k_max + 1);
+  const TrialBasis basis = trial_basis(grid, tail, k_max);
+  TailGalerkinValues out;
+  out.order = order;
+  // 1-D moments over the trial functions: ∫S_p F_k, ∫ x S_p' F_k, ∫F_k, ∫x F_k.
+  Eigen::MatrixXd sonine_moment(kk, kk), drift(kk, kk);
+  Eigen::RowVectorXd mass(kk), energy(kk);
+  sonine_moment.setZero();
+  drift.setZero();
+  mass.setZero();
+  energy.setZero();
+  std::vector<double> q(kk), s(kk);
+  for (std::size_t i = 0; i < grid.c.size(); ++i) {
+    const double x = grid.c[i] * grid.c[i];
+    const double wt = grid.w[i] * 4 * kPi * x * std::exp(log_weight(grid.c[i], tail));
+    basis.values(x, k_max, q.data());
+    sonine_values(k_max, m, x, s.data());
+    for (std::size_t k = 0; k < kk; ++k) {
+      const double f = wt * q[k];
+      mass[static_cast<Eigen::Index>(k)] += f;
+      energy[static_cast<Eigen::Index>(k)] += x * f;
+      for (int p = 0; p <= k_max; ++p) {
+        sonine_moment(p, static_cast<Eigen::Index>(k)) += s[static_cast<std::size_t>(p)] * f;
+        drift(p, static_cast<Eigen::Index>(k)) += x_derivative(s, p, m) * f;
+      }
+    }
+  }
+  // Collision tensors T_p(k, l) = ∫∫ F_k(c1) F_l(c2) ΔS_p (theory.md (9.2)).
+  std::vector<Eigen::MatrixXd> tensor(
+      kk, Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(kk), static_cast<Eigen::Index>(kk)));
+  std::vector<double> q1(kk), q2(kk);
+  for (std::size_t node = 0; node < grid.pairs.size(); ++node) {
+    const auto& r = grid.pairs[node];
+    basis.values(r.c1 * r.c1, k_max, q1.data());
+    basis.values(r.c2 * r.c2, k_max, q2.data());
+    const double w1 = std::exp(log_weight(r.c1, tail)), w2 = std::exp(log_weight(r.c2, tail));
+    const double* ker = kernel.at(node, kScalar);
+    for (std::size_t p = 0; p < kk; ++p)
+      for (std::size_t k = 0; k < kk; ++k) {
+        const double t = ker[p] * w1 * q1[k] * w2;
+        for (std::size_t l = 0; l < kk; ++l)
+          tensor[p](static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l)) += t * q2[l];
+      }
+  }
+  // Newton's method on: ∫φ = 1, ∫c²φ = d/2, R_p + (2/d) R_1 ⟨x S_p'⟩_φ = 0 (p ≥ 2; R_1 = R[S_1] = −R[x]).
+  Eigen::VectorXd b(kk);
+  b.setZero();
+  for (std::size_t i = 0; i < grid.c.size(); ++i) {  // the start projected on the basis: b_k = ∫ φ Q_k
+    const double x = grid.c[i] * grid.c[i];
+    const double phi = start.empty() ? std::pow(kPi, -1.5) * std::exp(-x) : start[i];
+    basis.values(x, k_max, q.data());
+    for (std::size_t k = 0; k < kk; ++k) b[static_cast<Eigen::Index>(k)] += grid.w[i] * 4 * kPi * x * phi * q[k];
+  }
+  auto residual = [&](const Eigen::VectorXd& v, Eigen::MatrixXd* jac) {
+    Eigen::VectorXd f(kk);
+    const double r1 = v.dot(tensor[1] * v);
+    const Eigen::VectorXd grad_r1 = (tensor[1] + tensor[1].transpose()) * v;
+    f[0] = mass.dot(v) - 1;
+    f[1] = energy.dot(v) - d / 2;
+    if (jac) {
+      jac->row(0) = mass;
+      jac->row(1) = energy;
+    }
+    for (int p = 2; p <= k_max; ++p) {
+      const double dp = drift.row(p).dot(v);
+      f[p] = v.dot(tensor[static_cast<std::size_t>(p)] * v) + (2 / d) * r1 * dp;
+      if (jac)
+        jac->row(p) =
+            ((tensor[static_cast<std::size_t>(p)] + tensor[static_cast<std::size_t>(p)].transpose()) * v).transpose() +
+            (2 / d) * (dp * grad_r1.transpose() + r1 * drift.row(p));
+    }
+    return f;
+  };
+  Eigen::MatrixXd jac(kk, kk);
+  bool converged = false;
+  for (int it = 0; it < 100 && !converged; ++it) {
+    const Eigen::VectorXd f = residual(b, &jac);
+    const Eigen::VectorXd step = jac.fullPivLu().solve(f);
+    double lambda = 1;
+    for (int h = 0; h < 30; ++h, lambda /= 2)
+      if (residual(b - lambda * step, nullptr).norm() < f.norm() || f.norm() < 1e-13) break;
+    b -= lambda * step;
+    converged = step.norm() * lambda < 1e-11 * b.norm();
+  }
+  // Accept when every equation holds to 1e-9 of the size of its terms (high Sonine rows are large).
+  const Eigen::VectorXd final_residual = residual(b, nullptr);
+  bool small = std::fabs(final_residual[0]) < 1e-9 && std::fabs(final_residual[1]) < 1e-9;
+  const Eigen::VectorXd ab = b.cwiseAbs();
+  const double r1_size = ab.dot(tensor[1].cwiseAbs() * ab);
+  for (int p = 2; p <= k_max; ++p) {
+    const double size = ab.dot(tensor[static_cast<std::size_t>(p)].cwiseAbs() * ab) +
+                        (2 / d) * r1_size * std::fabs(drift.row(p).cwiseAbs().dot(ab));
+    small = small && std::fabs(final_residual[p]) <= 1e-9 * size;
+  }
+  if (!converged || !small) return out;
+  const double r1 = b.dot(tensor[1] * b), zeta_r = std::max(0.0, (2 / d) * r1);
+  if (!((2 / d) * r1 > -1e-12)) return out;  // a heating "HCS": no solution
+  auto cumulant = [&](int k) {
+    const double norm2 = std::tgamma(d / 2 + k) / (std::tgamma(k + 1.0) * std::tgamma(d / 2));
+    if (k <= k_max) return sonine_moment.row(k).dot(b) / norm2;
+    double sum = 0;  // beyond the test degree: directly on the 1-D rule
+    std::vector<double> sk(static_cast<std::size_t>(k + 1));
+    for (std::size_t i = 0; i < grid.c.size(); ++i) {
+      const double x = grid.c[i] * grid.c[i];
+      basis.values(x, k_max, q.data());
+      sonine_values(k, m, x, sk.data());
+      double phi = 0;
+      for (std::size_t j = 0; j < kk; ++j) phi += b[static_cast<Eigen::Index>(j)] * q[j];
+      sum += grid.w[i] * 4 * kPi * x * std::exp(log_weight(grid.c[i], tail)) * phi * sk[static_cast<std::size_t>(k)];
+    }
+    return sum / norm2;
+  };
+  start.resize(grid.c.size());
+  for (std::size_t i = 0; i < grid.c.size(); ++i) {
+    basis.values(grid.c[i] * grid.c[i], k_max, q.data());
+    double phi = 0;
+    for (std::size_t j = 0; j < kk; ++j) phi += b[static_cast<Eigen::Index>(j)] * q[j];
+    start[i] = phi * std::exp(log_weight(grid.c[i], tail));
+  }
+  out.a2 = cumulant(2);
+  out.a3 = cumulant(3);
+  out.cooling_rate = zeta_r * (d + 2) / (4 * nu);  // theory.md (9.4)
+  out.tail_exponent = zeta_r > 0 ? 2 * loss_rate_factor() / zeta_r : INFINITY;
+
+  // Chapman–Enskog: trial F_q c_i (vector), F_q Y2 (tensor), q = 0 … N; tests c_i S_p^{(d/2)}, Y2 S_p^{(d/2+1)}.
+  const auto nn = static_cast<std::size_t>(n_max + 1);
+  const auto ni = static_cast<Eigen::Index>(nn);
+  Eigen::MatrixXd mv = Eigen::MatrixXd::Zero(ni, ni), dv = mv, dt = mv, lv = mv, lt = mv;
+  Eigen::VectorXd ua = Eigen::VectorXd::Zero(ni), ub = ua, ue = ua, flux = ua;
+  std::vector<double> sv(nn), st(nn);
+  for (std::size_t i = 0; i < grid.c.size(); ++i) {
+    const double x = grid.c[i] * grid.c[i];
+    const double wt = grid.w[i] * 4 * kPi * x * std::exp(log_weight(grid.c[i], tail));
+    basis.values(x, k_max, q.data());
+    sonine_values(n_max, m + 1, x, sv.data());
+    sonine_values(n_max, m + 2, x, st.data());
+    double phi = 0;
+    for (std::size_t j = 0; j < kk; ++j) phi += b[static_cast<Eigen::Index>(j)] * q[j];
+    phi *= wt;
+    for (int p = 0; p <= n_max; ++p) {
+      const auto pu = static_cast<std::size_t>(p);
+      const double xv = x_derivative(sv, p, m + 1), xt = x_derivative(st, p, m + 2);
+      ua[p] += phi * ((d / 2) * sv[pu] + xv - x * sv[pu] - x * xv);  // theory.md (10.5)
+      ub[p] += phi * ((d / 2) * sv[pu] + xv - x * sv[pu]);
+      ue[p] -= phi * x * ((d + 1 - 2 / d) * st[pu] + 2 * ((d - 1) / d) * xt);
+      for (int k = 0; k <= n_max; ++k) {
+        const double f = wt * q[static_cast<std::size_t>(k)];
+        mv(p, k) += f * x * sv[pu];
+        dv(p, k) += f * (x * sv[pu] + 2 * x * xv);
+        dt(p, k) += f * x * x * (st[pu] + 2 * xt);
+      }
+    }
+    for (int k = 0; k <= n_max; ++k) flux[k] += wt * q[static_cast<std::size_t>(k)] * x * x;
+  }
+  for (std::size_t node = 0; node < grid.pairs.size(); ++node) {  // 𝓛*X = −(J*[φ, X] + J*[X, φ])
+    const auto& r = grid.pairs[node];
+    basis.values(r.c1 * r.c1, k_max, q1.data());
+    basis.values(r.c2 * r.c2, k_max, q2.data());
+    const double w1 = std::exp(log_weight(r.c1, tail)), w2 = std::exp(log_weight(r.c2, tail));
+    double phi1 = 0, phi2 = 0;
+    for (std::size_t j = 0; j < kk; ++j) {
+      phi1 += b[static_cast<Eigen::Index>(j)] * q1[j] * w1;
+      phi2 += b[static_cast<Eigen::Index>(j)] * q2[j] * w2;
+    }
+    const double *vs = kernel.at(node, kVectorSelf), *vp = kernel.at(node, kVectorPartner);
+    const double *ts = kernel.at(node, kTensorSelf), *tp = kernel.at(node, kTensorPartner);
+    for (std::size_t p = 0; p < nn; ++p)
+      for (std::size_t k = 0; k < nn; ++k) {
+        const double partner = phi1 * q2[k] * w2, self = q1[k] * w1 * phi2;
+        lv(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(k)) -= partner * vp[p] + self * vs[p];
+        lt(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(k)) -= partner * tp[p] + self * ts[p];
+      }
+  }
+  // Row p = 0 of the vector modes is the solubility condition ∫ c·c X = 0 (no momentum).
+  Eigen::MatrixXd la = lv - (zeta_r / 2) * (dv + mv), lb = lv - (zeta_r / 2) * dv;
+  la.row(0) = mv.row(0);
+  lb.row(0) = mv.row(0);
+  ua[0] = 0;
+  const Eigen::VectorXd heat = la.fullPivLu().solve(ua);
+  Eigen::VectorXd rb = ub + zeta_r * (mv * heat);
+  rb[0] = 0;
+  const Eigen::VectorXd density = lb.fullPivLu().solve(rb);
+  const Eigen::VectorXd shear = (lt - (zeta_r / 2) * ((d - 1) / d) * dt).fullPivLu().solve(ue);
+  const double kappa_factor = -16 * (d - 1) * nu / (d * d * (d + 2) * (d + 2));  // theory.md (10.6)
+  out.thermal_conductivity = kappa_factor * flux.dot(heat);
+  out.density_heat_coefficient = kappa_factor * flux.dot(density);
+  out.shear_viscosity = -8 * nu / (d * (d + 2) * (d + 2)) * flux.dot(shear);  // theory.md (10.7)
+  out.solved = std::isfinite(out.thermal_conductivity) && std::isfinite(out.shear_viscosity) &&
+               std::isfinite(out.density_heat_coefficient);
+  return out;
+}
+
+}  // namespace
+
+std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order) {
+  if (dimension != kDimension)
+    throw std::invalid_argument("dimension: the tail scheme is implemented for 3 only, got " +
+                                std::to_string(dimension));
+  if (!(alpha > 0 && alpha <= 1))
+    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + std::to_string(alpha));
+  if (max_order < 1 || max_order > kTailGalerkinMaxOrder)
+    throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(kTailGalerkinMaxOrder) +
+                                "] for the tail scheme, got " + std::to_string(max_order));
+  const double d = kDimension, nu = frequency_factor();
+  // First guess of A from van Noije–Ernst's a2 and ζ* (theory.md §9.2).
+  const double a2 = 16 * (1 - alpha) * (1 - 2 * alpha * alpha) /
+                    (9 + 24 * d - alpha * (41 - 8 * d) + 30 * alpha * alpha * (1 - alpha));
+  const double zeta0 = (d + 2) / (4 * d) * (1 - alpha * alpha) * (1 + 3 * a2 / 16);
+  const double tail0 = alpha == 1 ? INFINITY : 2 * loss_rate_factor() * (d + 2) / (4 * nu * zeta0);
+  const int p_max = max_order + 1, degree = 2 * p_max + 2 * kDimension + 4;
+  // The grid reaches where (1 + c)^degree w(c) has fallen below e^{−kNegligible} past its peak (with a
+  // tail longer than the first guess's by 25 %, for margin).
+  const double reach = 0.8 * tail0;
+  double c_max = 4, best = -INFINITY;
+  for (double c = 0.25; c < 400; c += 0.25) {
+    const double v = degree * std::log1p(c) + log_weight(c, reach);
+    best = std::max(best, v);
+    if (v < best && v < -kNegligible) {
+      c_max = std::max(c, 4.0);
+      break;
+    }
+  }
+  const Grid grid = make_grid(c_max, reach, degree);
+  const Kernel kernel = collision_kernel(grid, alpha, p_max);
+  std::vector<TailGalerkinValues> out;
+  std::vector<double> start;  // φ of the previous solution on the 1-D rule (empty: the Maxwellian)
+  for (int n = 1; n <= max_order; ++n) {
+    double tail = tail0;
+    TailGalerkinValues v;
+    for (int pass = 0; pass < kWeightPasses; ++pass) {
+      v = solve_resolution(grid, kernel, tail, n, start);
+      if (!v.solved || alpha == 1) break;
+      tail = v.tail_exponent;
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace gkt
