@@ -234,7 +234,7 @@ TEST(CliDsmc, AgreesWithGktTable) {
   fs::remove_all(dir);
 }
 
-// The shear viscosity of the strained HCS (theory.md §21.7) is an extra summary column, after the
+// The shear viscosity of the strained HCS (theory.md §21.6) is an extra summary column, after the
 // usual three, only when viscosity_kicks is given; α = 1: the elastic η* = 1.016034 within 5σ
 // (4 runs × 40 kicks of ε = 0.5, N = 1000: σ ≈ 0.02).
 TEST(CliDsmc, ShearViscosityColumn) {

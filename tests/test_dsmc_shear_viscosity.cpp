@@ -1,5 +1,5 @@
 // The shear viscosity measured by DSMC from the relaxation of a strained homogeneous cooling state
-// (gkt/simulation/shear_viscosity_dsmc.hpp, docs/theory.md §21.7), with no Sonine input, against
+// (gkt/simulation/shear_viscosity_dsmc.hpp, docs/theory.md §21.6), with no Sonine input, against
 // the converged elastic value and the converged Sonine η* at α = 0.8; bad input.
 #include <gtest/gtest.h>
 

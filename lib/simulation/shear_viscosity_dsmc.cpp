@@ -1,5 +1,5 @@
 // The shear viscosity from the relaxation of a strained HCS (shear_viscosity_dsmc.hpp;
-// docs/theory.md §21.7). Same pair selection, majorant, collision rule, clock and rescaling as
+// docs/theory.md §21.6). Same pair selection, majorant, collision rule, clock and rescaling as
 // run_smooth_hcs_dsmc; in addition the running sum S = Σ v_x v_y is kept per collision and the
 // integrand M w = (S/(2NT)) √(T_phys/T_kick) is integrated exactly over the clock τ (it is constant
 // between accepted collisions).
@@ -106,7 +106,7 @@ ShearViscosityDsmcRun run_shear_viscosity_dsmc(int d, const ShearViscosityDsmcPa
   for (int b = 0; b < schedule.batches; ++b) {
     // The kick: a pure strain of sign ±1 (random), V_x += s(ε/2)V_y, V_y += s(ε/2)V_x. It heats the
     // gas by 1 + δ; the scaled stress it makes is (ε/2)/(1 + δ) instead of ε/2, which the estimate
-    // divides out (exact for Maxwell molecules, whose second moments relax linearly; §21.7).
+    // divides out (exact for Maxwell molecules, whose second moments relax linearly; §21.6).
     const double sign = rng.uniform() < 0.5 ? -1.0 : 1.0, half = 0.5 * sign * eps, before = temperature();
     energy = 0;
     for (auto& p : v) {

@@ -49,7 +49,7 @@ struct DsmcScene {
   std::vector<double> alpha;  // s × s
   RoughDsmcParameters rough;
   UniformShearDsmcParameters shear;
-  // smooth-inelastic: the strained-HCS measurement of η* (theory.md §21.7); 0 kicks: none
+  // smooth-inelastic: the strained-HCS measurement of η* (theory.md §21.6); 0 kicks: none
   long viscosity_kicks = 0;
   double viscosity_window = 20;
   ShearViscosityDsmcParameters viscosity;

@@ -2,7 +2,7 @@
 // measured by DSMC, with no Sonine input: the homogeneous DSMC of homogeneous_dsmc.hpp in its
 // scaled homogeneous cooling state (HCS), kicked by a small uniform strain and left to relax.
 //
-// The response formula (docs/theory.md §21.7, derived there from the Chapman–Enskog equation
+// The response formula (docs/theory.md §21.6, derived there from the Chapman–Enskog equation
 // (10.3)): a pure strain V_x += (ε/2)V_y, V_y += (ε/2)V_x changes the HCS distribution φ by
 // δφ = −ε c_y ∂φ/∂c_x, exactly the source of (10.3) times −ε, whatever φ is and whatever the
 // N-particle velocity correlations are. The scaled shear stress M(τ) = ⟨c_x c_y⟩ (c = v/√(2T/m)
@@ -24,11 +24,12 @@ namespace gkt {
 /// The kicked HCS: constant restitution α and the strain amplitude ε of each kick.
 struct ShearViscosityDsmcParameters {
   double alpha = 1;    ///< constant normal restitution in (0, 1]
-  double kick = 0.25;  ///< ε in (0, 0.5]: the bias is O(ε²) (docs/theory.md §21.7)
+  double kick = 0.25;  ///< ε in (0, 0.5]: the bias is O(ε²) (docs/theory.md §21.6)
 };
 
 /// One run: one η* per kick (each from one window of `schedule.per_batch` collisions per particle
-/// after the kick; the window's truncation error is e^{−window/η*-ish}, see docs/theory.md §21.7)
+/// after the kick; the window truncates the integral, relative error ~e^{−τ_window/η*}, τ_window the
+/// window in units 1/ν0: docs/theory.md §21.6)
 /// and the cooling rate ζ* measured over the same window (kicked gas, so O(ε²) off the HCS value).
 struct ShearViscosityDsmcRun {
   /// Per kick: the estimate of η* = η/η0 and of ζ* = ζ/ν0 over its window.
