@@ -144,7 +144,19 @@ INSTANTIATE_TEST_SUITE_P(
         DsmcBadInput{"shear_haff", kShear + "[output]\nhaff = true\n", "",
                      "output.haff: not available for model \"uniform-shear\""},
         DsmcBadInput{"shear_unknown_key", kShear + "beta = 0.5\n", "",
-                     "beta: unknown key for gkt dsmc with model \"uniform-shear\""}));
+                     "beta: unknown key for gkt dsmc with model \"uniform-shear\""},
+        DsmcBadInput{"viscosity_kicks", kSmooth, "--set viscosity_kicks=0",
+                     "viscosity_kicks: must be an integer in [1, 1000000]"},
+        DsmcBadInput{"viscosity_kick", kSmooth + "viscosity_kicks = 2\n", "--set viscosity_kick=0.7",
+                     "viscosity_kick: must be a number in (0, 0.5]"},
+        DsmcBadInput{"viscosity_window", kSmooth + "viscosity_kicks = 2\n", "--set viscosity_window=0",
+                     "viscosity_window: must be a number in (0, 1000]"},
+        DsmcBadInput{"viscosity_without_kicks", kSmooth, "--set viscosity_kick=0.2",
+                     "viscosity_kicks: required with viscosity_window or viscosity_kick"},
+        DsmcBadInput{"viscosity_haff", kSmooth + "viscosity_kicks = 2\n[output]\nhaff = true\n", "",
+                     "viscosity_kicks: the shear viscosity is a summary column"},
+        DsmcBadInput{"viscosity_shear_model", kShear, "--set viscosity_kicks=2",
+                     "viscosity_kicks: unknown key for gkt dsmc with model \"uniform-shear\""}));
 
 // The runs are spread over threads, the table is not: --jobs 1 and --jobs 3 print the same bytes,
 // a second run with the same seed too, another seed something else.
@@ -219,6 +231,32 @@ TEST(CliDsmc, AgreesWithGktTable) {
       EXPECT_NEAR(dsmc[0][2 * k], sonine[0][k], 4 * dsmc[0][2 * k + 1]) << "d = " << d << " column " << k;
     EXPECT_GT(std::abs(dsmc[0][0]), 5 * dsmc[0][1]) << "d = " << d << ": DSMC cannot tell a2 from 0";
   }
+  fs::remove_all(dir);
+}
+
+// The shear viscosity of the strained HCS (theory.md §21.6) is an extra summary column, after the
+// usual three, only when viscosity_kicks is given; α = 1: the elastic η* = 1.016034 within 5σ
+// (4 runs × 40 kicks of ε = 0.5, N = 1000: σ ≈ 0.02).
+TEST(CliDsmc, ShearViscosityColumn) {
+  const fs::path dir = fresh_dir("viscosity");
+  std::ofstream(dir / "scene.toml") << kSmooth;
+  const std::string scene = (dir / "scene.toml").string();
+  const DsmcCliRun plain = run_dsmc(dir, scene + " --set alpha=1"),
+                   kicked = run_dsmc(dir, scene +
+                                              " --set alpha=1 --set viscosity_kicks=40 --set viscosity_window=12 "
+                                              "--set viscosity_kick=0.5");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  ASSERT_EQ(kicked.status, 0) << kicked.err;
+  const std::string usual = "a2,a2_error,a3,a3_error,cooling_rate,cooling_rate_error";
+  EXPECT_EQ(plain.out.substr(0, plain.out.find('\n')), usual);
+  EXPECT_EQ(kicked.out.substr(0, kicked.out.find('\n')), usual + ",shear_viscosity,shear_viscosity_error");
+  const auto row = numbers(kicked.out);
+  ASSERT_EQ(row.size(), 1U);
+  ASSERT_EQ(row[0].size(), 8U);
+  EXPECT_GT(row[0][7], 0);
+  EXPECT_NEAR(row[0][6], 1.016034, 5 * row[0][7]);
+  // the unkicked columns come from the same runs as without the kicks
+  EXPECT_EQ(numbers(plain.out)[0][0], row[0][0]);
   fs::remove_all(dir);
 }
 

@@ -15,6 +15,7 @@
 #include "gkt/operators/viscoelastic_hierarchy.hpp"
 #include "gkt/simulation/homogeneous_dsmc.hpp"
 #include "gkt/simulation/random_stream.hpp"
+#include "gkt/simulation/shear_viscosity_dsmc.hpp"
 #include "gkt/simulation/uniform_shear_dsmc.hpp"
 #include "gkt/transport/closed_forms/uniform_shear_flow.hpp"
 #include "scene.hpp"
@@ -48,6 +49,10 @@ struct DsmcScene {
   std::vector<double> alpha;  // s × s
   RoughDsmcParameters rough;
   UniformShearDsmcParameters shear;
+  // smooth-inelastic: the strained-HCS measurement of η* (theory.md §21.6); 0 kicks: none
+  long viscosity_kicks = 0;
+  double viscosity_window = 20;
+  ShearViscosityDsmcParameters viscosity;
 };
 
 /// Returns the single number `key` of the scene (a list or table is refused); throws if absent.
@@ -127,7 +132,7 @@ DsmcScene read_dsmc_scene(toml::table t) {
                              "runs",  "seed",      "output"};
   switch (s.family) {
     case Family::smooth:
-      keys.insert("alpha");
+      keys.insert({"alpha", "viscosity_kicks", "viscosity_window", "viscosity_kick"});
       break;
     case Family::viscoelastic:
       keys.insert({"delta_prime", "c1"});
@@ -181,6 +186,17 @@ DsmcScene read_dsmc_scene(toml::table t) {
   switch (s.family) {
     case Family::smooth:
       s.restitution.alpha = model_number(t, *model, "alpha");
+      if (t.contains("viscosity_kicks")) {
+        s.viscosity_kicks = required_integer(t, "viscosity_kicks", 1, 1000000);
+        if (s.output != Output::summary)
+          throw error("viscosity_kicks: the shear viscosity is a summary column; not with [output] " +
+                      std::string(s.output == Output::haff ? "haff" : "distribution"));
+      }
+      if (t.contains("viscosity_window")) s.viscosity_window = required_real(t, "viscosity_window", 0, 1000, false);
+      if (t.contains("viscosity_kick")) s.viscosity.kick = required_real(t, "viscosity_kick", 0, 0.5, false);
+      if (s.viscosity_kicks == 0 && (t.contains("viscosity_window") || t.contains("viscosity_kick")))
+        throw error("viscosity_kicks: required with viscosity_window or viscosity_kick (kicks per run, >= 1)");
+      s.viscosity.alpha = s.restitution.alpha;
       break;
     case Family::viscoelastic: {
       double c1 = 0;  // absent: the model's default (the table's c1 too)
@@ -298,6 +314,13 @@ RunResult simulate(const DsmcScene& s, long run) {
       r.values = {a2, a3, batch_mean(out.cooling_rate)};
       r.histogram = out.speed_histogram;
       r.trace = out.trace;
+      if (s.viscosity_kicks > 0) {  // a run of its own, from the same seed: kicks perturb a2, a3, ζ*
+        DsmcSchedule kicked = schedule;
+        kicked.histogram_bins = 0;
+        kicked.batches = static_cast<int>(s.viscosity_kicks);
+        kicked.per_batch = s.viscosity_window;
+        r.values.push_back(batch_mean(run_shear_viscosity_dsmc(d, s.viscosity, kicked).shear_viscosity));
+      }
       break;
     }
     case Family::mixture: {
@@ -332,6 +355,7 @@ std::vector<std::string> summary_names(const DsmcScene& s) {
   switch (s.family) {
     case Family::smooth:
     case Family::viscoelastic:
+      if (s.viscosity_kicks > 0) return {"a2", "a3", "cooling_rate", "shear_viscosity"};
       return {"a2", "a3", "cooling_rate"};
     case Family::mixture: {
       std::vector<std::string> n{"cooling_rate"};
