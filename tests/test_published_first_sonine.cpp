@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "gkt/models/transport_model.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
@@ -220,4 +221,39 @@ TEST(PublishedFirstSonine, DenseBulkViscosityAndCoolingRateAreGdhClosedForms) {
         for (double w : v.temperature_first_order) EXPECT_EQ(w, 0.0);
       }
     }
+}
+
+// The mixture model's `scheme = "published"` (conventions.md) returns the engine's published
+// truncation at order 1, differs from the default "standard", and refuses another order or a tolerance
+// with a one-line error naming the key.
+TEST(PublishedFirstSonine, MixtureModelSchemeKey) {
+  auto model = gkt::make_transport_model("mixture");
+  gkt::ParameterPoint p;
+  p.numbers = {{"species", Rational(2)},       {"mass_1", Rational(1)},        {"mass_2", Rational(4)},
+               {"diameter_1", Rational(1)},    {"diameter_2", Rational(3, 2)}, {"fraction_1", Rational(1, 2)},
+               {"fraction_2", Rational(1, 2)}, {"alpha", Rational(4, 5)},      {"dimension", Rational(3)}};
+  p.choices["scheme"] = "published";
+  const std::vector<std::string> names{"thermal_conductivity", "mutual_diffusion_1_2", "thermal_diffusion_1",
+                                       "heat_mobility_1"};
+  const auto published = model->evaluate(p, names, {1, std::nullopt});
+  const gkt::MixtureNavierStokes engine(binary(3, 4, 1.5, 0.5, 0.8), 1);
+  const auto e = engine.coefficients(1, gkt::MixtureTruncation::published);
+  const double expected[] = {e.thermal_conductivity, e.mutual_diffusion[1], e.thermal_diffusion[0], e.heat_mobility[0]};
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    EXPECT_LT(relative(published[k].value.to_double(), expected[k]), 1e-14) << names[k];
+    EXPECT_EQ(published[k].order, 1);
+  }
+  p.choices["scheme"] = "standard";
+  EXPECT_GT(relative(model->evaluate(p, names, {1, std::nullopt})[0].value.to_double(), expected[0]), 1e-2);
+  p.choices["scheme"] = "published";
+  auto message = [&](const gkt::OrderRequest& order) {
+    try {
+      (void)model->evaluate(p, names, order);
+    } catch (const std::invalid_argument& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message({2, std::nullopt}).rfind("order: scheme = \"published\" exists at order = 1 only", 0), 0U);
+  EXPECT_EQ(message({1, Rational(1, 1000)}).rfind("tolerance: ", 0), 0U);
 }
