@@ -71,7 +71,7 @@ TEST(PublishedFirstSonine, ClosedFormEqualsEngineRestrictedToTheTruncation) {
       const gkt::MixtureNavierStokes engine(m, 1);
       const auto e = engine.coefficients(1, gkt::MixtureTruncation::published);
       const auto c = gkt::published_first_sonine(gkt::mixture_cell(m));
-      expect_equal(c, e, engine.cooling_state(), m.size(), 1e-11,
+      expect_equal(c, e, engine.cooling_state(), m.size(), 1e-12,
                    name + " d=" + std::to_string(d) + " m2=" + std::to_string(m.species[1].mass.value()) +
                        " alpha=" + std::to_string(m.restitution(0, 1)));
     }
@@ -164,6 +164,27 @@ TEST(PublishedFirstSonine, IdenticalSpeciesAndTracerLimits) {
       EXPECT_LT(relative(n.thermal_conductivity, c.thermal_conductivity), 1e-6);
     }
   }
+}
+
+// The closed form's HCS (damped Newton in ln γ) converges where the library's bracketed sweep does:
+// mass ratios 10^±3 with diameter ratios 0.1 and 10, α down to 0.1, tracer to nearly pure, d = 2, 3 —
+// γ_i equal mixture_cooling_state's Maxwellian ratios to 1e-10 and every coefficient is finite.
+TEST(PublishedFirstSonine, CoolingStateConvergesAtExtremeRatios) {
+  for (int d : {2, 3})
+    for (double m2 : {1e-3, 1e3})
+      for (double s2 : {0.1, 10.0})
+        for (double alpha : {0.9, 0.5, 0.1})
+          for (double x1 : {0.0, 0.5, 0.99}) {
+            const gkt::Mixture m = binary(d, m2, s2, x1, alpha);
+            const auto c = gkt::published_first_sonine(gkt::mixture_cell(m));
+            const auto h = gkt::mixture_cooling_state(m, gkt::MixtureHcsScheme::maxwellian);
+            for (std::size_t i = 0; i < 2; ++i)
+              EXPECT_LT(std::abs(c.temperature_ratio[i] / h.temperature_ratio[i] - 1), 1e-10)
+                  << d << " " << m2 << " " << s2 << " " << alpha << " " << x1;
+            EXPECT_LT(relative(c.cooling_rate, h.cooling_rate), 1e-10);
+            EXPECT_TRUE(std::isfinite(c.thermal_conductivity) && std::isfinite(c.shear_viscosity) &&
+                        std::isfinite(c.mutual_diffusion[0]) && std::isfinite(c.heat_mobility[1]));
+          }
 }
 
 // Bad input names the field; the closed form is the dilute gas's.

@@ -1,6 +1,6 @@
 // Garzó–Hrenya–Dufty's published first Sonine approximation for a dilute granular mixture of s ≤ 4
 // smooth inelastic species, in closed form and double precision: one call per state, no allocation
-// (docs/theory.md §17.10; [garzo2002mixture], [garzo2007mixture] at φ = 0).
+// (docs/theory.md §17.10; [garzo2002mixture], [garzo2007mixture] and [garzo2007mixtureII] at φ = 0).
 //
 // The truncation is GDH's, not gkt's default (MixtureTruncation::published of MixtureNavierStokes):
 // each flux keeps its leading Sonine polynomial, the mass-flux equations (trial c S_0) are solved
