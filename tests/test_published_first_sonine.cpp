@@ -202,7 +202,8 @@ TEST(PublishedFirstSonine, RefusesBadInput) {
 // (B_3(d+1)/(2d²)) Σ_ij m_jμ_ij(1+α_ij)χ_ij σ_ij^{d+1} n_in_j ⟨g_ij⟩ and ζ_U GDH's
 // −((d+2)/(dnT)) B_4 Σ_ij (1−α_ij²) μ_ji χ_ij σ_ij^d n_i n_j T_i (PRE 76, 031303; seed 003), both with
 // B_k = π^{(d−1)/2} Γ((k+1)/2)/Γ((k+d)/2) — seed 003 prints Γ((d+1)/2) in the numerator, which
-// fails here for ζ_U (theory.md §17.10). Physical units: T = 1, n from φ.
+// fails here for ζ_U (and, in 2D, for the HCS cooling rate ζ^(0) with B_3; theory.md §17.10).
+// Physical units: T = 1, n from φ.
 TEST(PublishedFirstSonine, DenseBulkViscosityAndCoolingRateAreGdhClosedForms) {
   for (int d : {2, 3})
     for (double phi : {0.1, 0.3}) {
@@ -220,7 +221,7 @@ TEST(PublishedFirstSonine, DenseBulkViscosityAndCoolingRateAreGdhClosedForms) {
         auto b = [&](int k, double numerator) {
           return std::pow(std::numbers::pi, (d - 1) / 2.0) * std::tgamma(numerator) / std::tgamma((k + d) / 2.0);
         };
-        double kappa = 0, zeta_u = 0, zeta_u_printed = 0;
+        double kappa = 0, zeta_u = 0, zeta_u_printed = 0, zeta0 = 0, zeta0_printed = 0;
         for (std::size_t i = 0; i < 2; ++i)
           for (std::size_t j = 0; j < 2; ++j) {
             const double mi = m.species[i].mass.value(), mj = m.species[j].mass.value();
@@ -235,7 +236,21 @@ TEST(PublishedFirstSonine, DenseBulkViscosityAndCoolingRateAreGdhClosedForms) {
                 (d + 2.0) / (d * n * T) * (1 - a * a) * mu_ji * c * std::pow(s, d) * ni * nj * gamma[i] * T;
             zeta_u -= b(4, 2.5) * common;
             zeta_u_printed -= b(4, (d + 1) / 2.0) * common;
+            // ζ^(0) = (B_3/(2dnT)) Σ_ij (1 − α_ij²) (m_im_j/(m_i+m_j)) χ_ij σ_ij^{d−1} n_i n_j ⟨g_ij³⟩ (seed 003),
+            // ⟨g³⟩ = (Γ((d+3)/2)/Γ(d/2)) (2T_i/m_i + 2T_j/m_j)^{3/2}
+            const double g3 = std::tgamma((d + 3) / 2.0) / std::tgamma(d / 2.0) *
+                              std::pow(2 * gamma[i] * T / mi + 2 * gamma[j] * T / mj, 1.5);
+            const double cooling =
+                (1 - a * a) * mi * mj / (mi + mj) * c * std::pow(s, d - 1) * ni * nj * g3 / (2.0 * d * n * T);
+            zeta0 += b(3, 2.0) * cooling;
+            zeta0_printed += b(3, (d + 1) / 2.0) * cooling;
           }
+        // the HCS cooling rate, reduced by ν0 = nT/η0
+        const double nu0 = n * T / eta0, zeta_hcs = engine.cooling_state().cooling_rate;
+        EXPECT_LT(relative(zeta0 / nu0, zeta_hcs), 1e-12) << d << " " << phi;
+        if (d == 2) {
+          EXPECT_GT(std::abs(zeta0_printed / nu0 - zeta_hcs), 0.05 * zeta_hcs) << phi;
+        }
         EXPECT_LT(relative(v.bulk_viscosity, kappa / eta0), 1e-12) << d << " " << phi << " " << variant;
         EXPECT_LT(relative(v.cooling_rate_first_order, zeta_u), 1e-12) << d << " " << phi << " " << variant;
         EXPECT_GT(std::abs(v.cooling_rate_first_order - zeta_u_printed), 0.1 * std::abs(zeta_u)) << d << " " << phi;
