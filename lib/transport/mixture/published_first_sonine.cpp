@@ -111,17 +111,23 @@ void partial_cooling(const Reduced& r, const Vec& gamma, Vec& zeta, Mat& jacobia
     theta[k] = 1 / over[k];
     inverse_gamma[k] = r.inverse_m[k] * theta[k];
   }
+  Mat w{}, inverse_w{};  // w_il = w_li, one square root and one division per unordered pair
+  for (int i = 0; i < S; ++i)
+    for (int l = i; l < S; ++l) {
+      w[i * kMax + l] = w[l * kMax + i] = std::sqrt(over[i] + over[l]);
+      inverse_w[i * kMax + l] = inverse_w[l * kMax + i] = 1 / w[i * kMax + l];
+    }
   zeta = {};
   jacobian = {};
   for (int i = 0; i < S; ++i)
     for (int l = 0; l < S; ++l) {
       const double ma = r.mu_a[i * kMax + l], ratio = over[l] * theta[i];  // θ_i/θ_l
-      const double w = std::sqrt(over[i] + over[l]), e = -2 * ma * (1 - 0.5 * ma * (1 + ratio));
+      const double e = -2 * ma * (1 - 0.5 * ma * (1 + ratio)), wil = w[i * kMax + l];
       const double k = f * r.x[l] * r.area[i * kMax + l];
-      zeta[i] += k * w * e;
+      zeta[i] += k * wil * e;
       // ∂w/∂γ_i = 1/(2m_i w), ∂E/∂(θ_i/θ_l) = μ_li²(1+α)², ∂(θ_i/θ_l)/∂γ_i = −(θ_i/θ_l)/γ_i; the same
       // with l (for l = i they add).
-      const double half_e = 0.5 * e / w, de = w * ma * ma * ratio;
+      const double half_e = 0.5 * e * inverse_w[i * kMax + l], de = wil * ma * ma * ratio;
       jacobian[i * kMax + i] += k * (half_e * r.inverse_m[i] - de * inverse_gamma[i]);
       jacobian[i * kMax + l] += k * (half_e * r.inverse_m[l] + de * inverse_gamma[l]);
     }
