@@ -95,8 +95,9 @@ struct MixtureNavierStokes::Impl {
     std::vector<double> temperature;
   };
   [[nodiscard]] ScalarMode scalar_mode(int order) const;
-  /// The ∇·u mode with 𝒟_i = 0 (GDH's first Sonine drops ϖ_i): ζ_U is the f0 ∂f0 part of (18.7) alone,
-  /// the bulk viscosity has no scalar part and every δ_i1 is zero (theory.md §17.10).
+  /// The ∇·u mode with 𝒟_i = 0 (GDH's first Sonine drops ϖ_i, [garzo2007mixtureII]): ζ_U is the f0 ∂f0
+  /// part of (18.7) alone, GDH's (17.18); the bulk viscosity has no scalar part and every δ_i1 is zero
+  /// (theory.md §17.10).
   [[nodiscard]] ScalarMode scalar_mode_without_partial_temperatures() const;
   [[nodiscard]] std::size_t pair_index(std::size_t i, std::size_t j) const { return i * s_ + j; }
 
@@ -416,7 +417,8 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
   const int n = order + 1;
   Eigen::MatrixXd self = leading_blocks(vector_self_, s, max_order_ + 1, n);
   Eigen::MatrixXd cross = leading_blocks(vector_cross_, s, max_order_ + 1, n);
-  if (published)  // GDH: the mass-flux rows (c S_0) see their own trial function only (theory.md §17.10)
+  // [garzo2007mixtureII] (theory.md §17.10): the mass-flux rows (c S_0) see their own trial function only.
+  if (published)
     for (Eigen::Index i = 0; i < S; ++i)
       for (Eigen::Index k = 0; k < S; ++k)
         for (Eigen::Index q = 1; q < n; ++q) self(i * n, k * n + q) = cross(i * n, k * n + q) = 0;

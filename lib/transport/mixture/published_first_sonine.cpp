@@ -246,14 +246,14 @@ PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
   const double u = 1 + t, v = 1 / u, k = ma * u, st = r.root_theta[i] / r.root_theta[j];
   PairIntegrals p{};
   p.rate = r.c_d * std::sqrt(1 / r.theta[i] + 1 / r.theta[j]) * ma;
-  p.self00 = -1;                                                                                  // (17.16a)
-  p.other00 = st;                                                                                 // (17.16b)
-  p.self10 = (2 * k * k - 0.5 * k * ((d + 2) * t + d + 11) + (d + 2) * t + (2 * d + 7) / 2) * v;  // (17.16c)
-  p.other10 = st * (-2 * k * k + 4.5 * k - 1.5) * v;                                              // (17.16d)
+  p.self00 = -1;                                                                                  // (17.16)
+  p.other00 = st;                                                                                 // (17.16)
+  p.self10 = (2 * k * k - 0.5 * k * ((d + 2) * t + d + 11) + (d + 2) * t + (2 * d + 7) / 2) * v;  // (17.16)
+  p.other10 = st * (-2 * k * k + 4.5 * k - 1.5) * v;                                              // (17.16)
   p.self11 = (-3 * k * k + 0.75 * k * ((d + 8) * t + d + 11) - 1.5 * (d + 2) * t * t - (7 * d + 20) / 2 * t -
               (8 * d + 25) / 4) *
-             v * v;                                            // (17.16e)
-  p.other11 = 3 * t * st * (k * k - 0.75 * k - 0.25) * v * v;  // (17.16f)
+             v * v;                                            // (17.16)
+  p.other11 = 3 * t * st * (k * k - 0.75 * k - 0.25) * v * v;  // (17.16)
   if (r.d == 3) {                                              // (17.17)
     p.shear_self = (k - 10 * t / 3 - 4) * v;
     p.shear_other = t * (k - 2.0 / 3) * v;
