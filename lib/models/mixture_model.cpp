@@ -87,6 +87,11 @@ class MixtureModel final : public TransportModel {
              "g* = rho g/(n dT/dz) of the segregation criterion thermal_diffusion_factor_i "
              "(dp/dz = -rho g)"),
         hcs_spec(),
+        detail::choice_spec("scheme",
+                            "truncation of the Navier-Stokes equations: gkt's Galerkin method at any order "
+                            "(Maxwellian-weighted trial functions, all coupled) or Garzo-Hrenya-Dufty's published "
+                            "first Sonine (order 1: mass flux solved alone, partial temperatures dropped)",
+                            {"standard", "published"}),
         {"hcs_order",
          ParameterSpec::Kind::integer,
          Rational(2),
@@ -208,6 +213,7 @@ class MixtureModel final : public TransportModel {
     std::optional<MixtureCoolingState> chosen, alternative, higher;  // solved once, if an HCS value is asked for
     TransportCache transport;                                        // built once, if a transport value is asked for
     transport.gravity = p.number("reduced_gravity").to_double();
+    transport.published = p.choice("scheme") == "published";
     struct Parsed {
       Kind kind;
       int i, cumulant;  // species from 1 (0: none), cumulant index (0: none)
@@ -385,7 +391,20 @@ class MixtureModel final : public TransportModel {
     };
     std::optional<MixtureNavierStokes> operators;
     std::map<int, AtOrder> by_order;
-    double gravity = 0;  ///< g* of the segregation criterion
+    std::optional<AtOrder> published_values;  ///< GDH's first Sonine (scheme = "published"), solved once
+    double gravity = 0;                       ///< g* of the segregation criterion
+    bool published = false;                   ///< scheme = "published" (theory.md §17.10)
+
+    /// Returns GDH's published first-Sonine values (MixtureTruncation::published) of the point.
+    const AtOrder& at_published(const Mixture& m) {
+      if (published_values) return *published_values;
+      if (!operators) operators.emplace(m, 6);
+      AtOrder a{operators->coefficients(1, MixtureTruncation::published), {NAN, NAN, NAN}};
+      const MixtureTransportValues& v = a.values;
+      if (v.shear_viscosity > 0 && v.thermal_conductivity > 0)
+        a.stability = mixture_hcs_stability(mixture_stability_input(m, *operators, v));
+      return published_values.emplace(std::move(a));
+    }
 
     const AtOrder& at(const Mixture& m, int n) {
       if (const auto it = by_order.find(n); it != by_order.end()) return it->second;
@@ -440,8 +459,24 @@ class MixtureModel final : public TransportModel {
 
     /// Returns the coefficient `name` at the requested order or tolerance, its error from the next
     /// two orders (theory.md §6), undefined (nan) if a value is not finite.
+    /// With scheme = "published" the value is GDH's first Sonine (order 1 only), its error estimated
+    /// from it and gkt's orders 2 and 3 as (6.1) does from orders 1 … 3.
     CoefficientValue value(const Mixture& m, const std::string& name, const OrderRequest& order) {
       const auto pick = reader(m.size(), name);
+      if (published) {
+        if (order.tolerance)
+          throw std::invalid_argument(
+              "tolerance: scheme = \"published\" is GDH's first Sonine truncation, order = 1 only; drop tolerance");
+        if (order.order != 1)
+          throw std::invalid_argument("order: scheme = \"published\" exists at order = 1 only, got " +
+                                      std::to_string(order.order));
+        const double c = pick(at(m, 3)), b = pick(at(m, 2)), a = pick(at_published(m));
+        const detail::OrderValue v = detail::estimate_from_doubles(a, b, c);
+        CoefficientValue out{v.estimate.value, v.estimate.error, 1, v.defined && v.estimate.converging, false,
+                             v.defined};
+        out.infinite = v.infinite;
+        return out;
+      }
       return detail::choose_order(order, kMaxOrder, [&](int n) {
         // Highest order first: the operator is then built once to n + 2, not to n and again larger.
         const double c = pick(at(m, n + 2)), b = pick(at(m, n + 1)), a = pick(at(m, n));

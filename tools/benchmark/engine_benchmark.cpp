@@ -21,6 +21,7 @@
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 #include "gkt/transport/mixture/mixture_transport_table.hpp"
+#include "gkt/transport/mixture/published_first_sonine.hpp"
 #include "gkt/transport/mixture/tracer_diffusion.hpp"
 #include "gkt/transport/monodisperse/hard_spheres.hpp"
 #include "gkt/transport/viscoelastic/viscoelastic_transport.hpp"
@@ -176,6 +177,33 @@ void MixtureNavierStokesSet(benchmark::State& state) {
   }
 }
 BENCHMARK(MixtureNavierStokesSet)->ArgsProduct({{1, 2, 4, 8}, {0, 1}})->Unit(benchmark::kMillisecond);
+
+/// GDH's published first Sonine in closed form (theory.md §17.10), one dilute state per call with
+/// its HCS solved: arg 0 = species (2: the benchmark binary; 3: a ternary with a restitution matrix),
+/// arg 1 = 1 varies x_1 and α from call to call (a new state each time), 0 repeats one state.
+void PublishedFirstSonineState(benchmark::State& state) {
+  const int s = static_cast<int>(state.range(0));
+  gkt::MixtureCell cell;
+  cell.dimension = 3;
+  cell.species = s;
+  cell.mass = {1.0, 2.5, 0.4, 0};
+  cell.diameter = {1.0, 1.5, 0.8, 0};
+  cell.fraction = s == 2 ? std::array<double, 4>{0.4, 0.6, 0, 0} : std::array<double, 4>{0.4, 0.35, 0.25, 0};
+  for (int i = 0; i < s; ++i)
+    for (int j = 0; j < s; ++j) cell.restitution[static_cast<std::size_t>(i * 4 + j)] = i == j ? 0.8 : 0.7;
+  const bool vary = state.range(1) == 1;
+  double x = 0.4;
+  for (auto _ : state) {
+    if (vary) {
+      x = x < 0.6 ? x + 1e-4 : 0.2;
+      cell.fraction[0] = x;
+      cell.fraction[1] = s == 2 ? 1 - x : 0.75 - x;
+      cell.restitution[0] = 0.6 + x / 2;
+    }
+    benchmark::DoNotOptimize(gkt::published_first_sonine(cell));
+  }
+}
+BENCHMARK(PublishedFirstSonineState)->ArgsProduct({{2, 3}, {0, 1}})->Unit(benchmark::kNanosecond);
 
 /// The per-state binary table (theory.md §17.8): arg 0 = Sonine order of the table; the timed loop
 /// evaluates the full physical set at a new (x_1, n, T) each call (the build is outside the loop;

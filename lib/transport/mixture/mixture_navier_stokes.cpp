@@ -65,7 +65,7 @@ Eigen::MatrixXd leading_blocks(const Eigen::MatrixXd& m, std::size_t s, int full
 struct MixtureNavierStokes::Impl {
   Impl(const Mixture& mixture, int max_order);
   /// MixtureNavierStokes::coefficients.
-  [[nodiscard]] MixtureTransportValues coefficients(int order) const;
+  [[nodiscard]] MixtureTransportValues coefficients(int order, MixtureTruncation truncation) const;
   /// The vector modes' solutions: heat = 𝒜 (∇ln T), density[j] = ℬ^j, each as the unknowns φ̃ of
   /// (17.5)–(17.7) (ℬ^j per ∇n_j) or, per_particle, φ = φ̃/x_i of (17.13) (ℬ^j per ∇ln n_j).
   struct VectorModes {
@@ -95,6 +95,10 @@ struct MixtureNavierStokes::Impl {
     std::vector<double> temperature;
   };
   [[nodiscard]] ScalarMode scalar_mode(int order) const;
+  /// The ∇·u mode with 𝒟_i = 0 (GDH's first Sonine drops ϖ_i, [garzo2007mixtureII]): ζ_U is the f0 ∂f0
+  /// part of (18.7) alone, GDH's (17.18); the bulk viscosity has no scalar part and every δ_i1 is zero
+  /// (theory.md §17.10).
+  [[nodiscard]] ScalarMode scalar_mode_without_partial_temperatures() const;
   [[nodiscard]] std::size_t pair_index(std::size_t i, std::size_t j) const { return i * s_ + j; }
 
   int dimension_;
@@ -383,9 +387,25 @@ MixtureNavierStokes::Impl::ScalarMode MixtureNavierStokes::Impl::scalar_mode(int
   return out;
 }
 
-MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order) const {
+MixtureNavierStokes::Impl::ScalarMode MixtureNavierStokes::Impl::scalar_mode_without_partial_temperatures() const {
+  ScalarMode out{0, 0, std::vector<double>(s_, 0.0)};
+  for (std::size_t i = 0; i < s_; ++i)
+    for (std::size_t j = 0; j < s_; ++j) {
+      const std::size_t P = pair_index(i, j);
+      const double w =
+          (1 - alpha_[P] * alpha_[P]) * mass_[i] * mass_[j] / (mass_[i] + mass_[j]) * rate_[P] / dimension_;
+      out.cooling_rate += w * length_[P] * fraction_[i] * fraction_[j] * transfer_[P].cooling_gradient / dimension_;
+    }
+  return out;
+}
+
+MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, MixtureTruncation truncation) const {
   if (order < 1 || order > max_order_)
     throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(max_order_) + "]");
+  const bool published = truncation == MixtureTruncation::published;
+  if (published && order != 1)
+    throw std::invalid_argument("order: the published (GDH) first Sonine truncation exists at order = 1 only, got " +
+                                std::to_string(order));
   const int d = dimension_;
   const std::size_t s = s_;
   const auto S = static_cast<Eigen::Index>(s);
@@ -395,8 +415,13 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order) const 
 
   // Vector modes (theory.md (17.5)–(17.6)): unknowns φ̃_kq, X_k = (f_k/n_k) Σ_q φ̃_kq c_k S_q(θ_k V²).
   const int n = order + 1;
-  const Eigen::MatrixXd self = leading_blocks(vector_self_, s, max_order_ + 1, n);
-  const Eigen::MatrixXd cross = leading_blocks(vector_cross_, s, max_order_ + 1, n);
+  Eigen::MatrixXd self = leading_blocks(vector_self_, s, max_order_ + 1, n);
+  Eigen::MatrixXd cross = leading_blocks(vector_cross_, s, max_order_ + 1, n);
+  // [garzo2007mixtureII] (theory.md §17.10): the mass-flux rows (c S_0) see their own trial function only.
+  if (published)
+    for (Eigen::Index i = 0; i < S; ++i)
+      for (Eigen::Index k = 0; k < S; ++k)
+        for (Eigen::Index q = 1; q < n; ++q) self(i * n, k * n + q) = cross(i * n, k * n + q) = 0;
   const VectorModes modes = vector_modes(order, self, cross, false);
   const Eigen::VectorXd& a = modes.heat;
 
@@ -538,14 +563,16 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order) const 
         gradient -= w * length_[P] * fraction_[i] * fraction_[j] * t.shear_gradient / (4.0 * d * (d + 2));
       }
     eta += gradient;
-    const ScalarMode scalar = scalar_mode(order);
+    const ScalarMode scalar = published ? scalar_mode_without_partial_temperatures() : scalar_mode(order);
     out.bulk_viscosity = ((d + 2.0) / d * gradient + scalar.bulk_viscosity) / eta0;
     out.cooling_rate_first_order = scalar.cooling_rate;
     out.pressure = pressure_;
     // n_i T_i^(1) = (m_i/d) ∫V² 𝒟_i = −(γ_i/2) δ_i1 (T = 1/2), so T_i^(1)/T = −γ_i δ_i1/x_i per unit ∇·u.
     for (std::size_t i = 0; i < s; ++i)
       out.temperature_first_order.push_back(
-          fraction_[i] > 0 ? -state_.temperature_ratio[i] * scalar.temperature[i] / fraction_[i] * nu0_ : std::nan(""));
+          fraction_[i] > 0
+              ? (published ? 0.0 : -state_.temperature_ratio[i] * scalar.temperature[i] / fraction_[i] * nu0_)
+              : std::nan(""));
   }
   out.shear_viscosity = eta / eta0;
   return out;
@@ -603,7 +630,12 @@ MixtureNavierStokes& MixtureNavierStokes::operator=(const MixtureNavierStokes& o
 MixtureNavierStokes::MixtureNavierStokes(MixtureNavierStokes&&) noexcept = default;
 MixtureNavierStokes& MixtureNavierStokes::operator=(MixtureNavierStokes&&) noexcept = default;
 
-MixtureTransportValues MixtureNavierStokes::coefficients(int order) const { return impl_->coefficients(order); }
+MixtureTransportValues MixtureNavierStokes::coefficients(int order) const {
+  return impl_->coefficients(order, MixtureTruncation::complete);
+}
+MixtureTransportValues MixtureNavierStokes::coefficients(int order, MixtureTruncation truncation) const {
+  return impl_->coefficients(order, truncation);
+}
 int MixtureNavierStokes::max_order() const { return impl_->max_order_; }
 const MixtureCoolingState& MixtureNavierStokes::cooling_state() const { return impl_->state_; }
 const MixtureCoolingSensitivity& MixtureNavierStokes::cooling_sensitivity() const { return impl_->sensitivity_; }

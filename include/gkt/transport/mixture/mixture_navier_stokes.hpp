@@ -55,6 +55,17 @@ struct MixtureTransportValues {
   std::vector<double> temperature_first_order;
 };
 
+/// How the first-order Chapman–Enskog equations are truncated (docs/theory.md §17.10).
+enum class MixtureTruncation {
+  /// gkt's Galerkin method: every vector trial function c S_0 … c S_N coupled in one system, the
+  /// first-order partial temperatures ϖ_i solved in the dense gas (the default).
+  complete,
+  /// Garzó–Hrenya–Dufty's published first Sonine ([garzo2007mixture]; [garzo2002mixture] dilute):
+  /// order 1 only; each flux keeps its leading polynomial — the mass-flux rows (c S_0) are solved
+  /// alone and fed into the heat-flux rows (c S_1) — and ϖ_i = 0 (ζ_U and κ without them).
+  published,
+};
+
 /// The linearised Boltzmann operator of a dilute mixture in Sonine polynomials, built once (exact
 /// engine moments rounded to double) and solved at any order up to max_order.
 class MixtureNavierStokes {
@@ -78,6 +89,10 @@ class MixtureNavierStokes {
   /// Returns the coefficients at Sonine order N (vector modes c S_0 … c S_N, shear Y_2 S_0 …
   /// Y_2 S_{N−1}, scalar S_1 … S_{N+1}), 1 ≤ N ≤ max_order.
   [[nodiscard]] MixtureTransportValues coefficients(int order) const;
+  /// Returns the coefficients at order N truncated as `truncation` says: `complete` is
+  /// coefficients(order); `published` (GDH's first Sonine, theory.md §17.10) needs order = 1 and throws
+  /// std::invalid_argument naming `order` otherwise.
+  [[nodiscard]] MixtureTransportValues coefficients(int order, MixtureTruncation truncation) const;
   /// Returns the largest Sonine order N the operator was built for (the constructor's max_order).
   [[nodiscard]] int max_order() const;
   /// Returns the Maxwellian HCS the coefficients are built about.

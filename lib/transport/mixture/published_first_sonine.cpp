@@ -1,0 +1,502 @@
+// GDH's published first Sonine approximation of a dilute mixture in closed form (docs/theory.md
+// §17.10). Units of theory.md (16.11): n = m̄ = σ̄ = 1, velocities in √(2T/m̄) (T = 1/2), θ_k = m_k/γ_k.
+#include "gkt/transport/mixture/published_first_sonine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "gkt/transport/common/reference_gas.hpp"
+
+namespace gkt {
+
+namespace {
+
+constexpr int kMax = 4;
+using Vec = std::array<double, kMax>;
+using Mat = std::array<double, kMax * kMax>;  // row i, column k at i·4 + k
+
+/// Solves m x = b (s ≤ 4 unknowns) by Gaussian elimination with partial pivoting; m and b are consumed.
+template <int S>
+Vec solve(Mat m, Vec b) {
+  for (int c = 0; c < S; ++c) {
+    int pivot = c;
+    for (int r = c + 1; r < S; ++r)
+      if (std::abs(m[r * kMax + c]) > std::abs(m[pivot * kMax + c])) pivot = r;
+    if (pivot != c) {
+      for (int k = 0; k < S; ++k) std::swap(m[c * kMax + k], m[pivot * kMax + k]);
+      std::swap(b[c], b[pivot]);
+    }
+    for (int r = c + 1; r < S; ++r) {
+      const double f = m[r * kMax + c] / m[c * kMax + c];
+      for (int k = c; k < S; ++k) m[r * kMax + k] -= f * m[c * kMax + k];
+      b[r] -= f * b[c];
+    }
+  }
+  Vec x{};
+  for (int r = S - 1; r >= 0; --r) {
+    double v = b[r];
+    for (int k = r + 1; k < S; ++k) v -= m[r * kMax + k] * x[k];
+    x[r] = v / m[r * kMax + r];
+  }
+  return x;
+}
+
+/// LU factors (partial pivoting) of one s × s matrix, reused for every right-hand side of a mode.
+template <int S>
+class Lu {
+ public:
+  explicit Lu(Mat m) : lu_(m) {
+    for (int c = 0; c < S; ++c) {
+      int pivot = c;
+      for (int r = c + 1; r < S; ++r)
+        if (std::abs(lu_[r * kMax + c]) > std::abs(lu_[pivot * kMax + c])) pivot = r;
+      pivot_[c] = pivot;
+      if (pivot != c)
+        for (int k = 0; k < S; ++k) std::swap(lu_[c * kMax + k], lu_[pivot * kMax + k]);
+      for (int r = c + 1; r < S; ++r) {
+        const double f = lu_[r * kMax + c] /= lu_[c * kMax + c];
+        for (int k = c + 1; k < S; ++k) lu_[r * kMax + k] -= f * lu_[c * kMax + k];
+      }
+    }
+  }
+  /// Returns x with m x = b.
+  [[nodiscard]] Vec solve(Vec b) const {
+    for (int c = 0; c < S; ++c) {
+      std::swap(b[c], b[pivot_[c]]);
+      for (int r = c + 1; r < S; ++r) b[r] -= lu_[r * kMax + c] * b[c];
+    }
+    Vec x{};
+    for (int r = S - 1; r >= 0; --r) {
+      double v = b[r];
+      for (int k = r + 1; k < S; ++k) v -= lu_[r * kMax + k] * x[k];
+      x[r] = v / lu_[r * kMax + r];
+    }
+    return x;
+  }
+
+ private:
+  Mat lu_;
+  std::array<int, kMax> pivot_{};
+};
+
+/// The state in the units of (16.11) and its Maxwellian HCS.
+struct Reduced {
+  int d = 3, s = 2, major = 0;  // major: the first most abundant species (its S_0 row carries momentum, (17.7))
+  Vec m{}, x{}, gamma{}, theta{}, root_theta{}, inverse_m{};
+  Mat area{}, alpha{}, mu_a{};  // (σ_ij/σ̄)^{d−1}, α_ij and μ_ji(1 + α_ij)
+  Mat jacobian{};               // ∂ζ_i/∂γ_k at the HCS
+  double c_d = 0, zeta = 0;
+  ReferenceGas ref{};
+};
+
+/// Pair energy change (16.3) E_il = −2μ_li(1+α)[1 − ½μ_li(1+α)(1 + θ_i/θ_l)] with w_il = √(1/θ_i + 1/θ_l)
+/// at the temperature ratios γ (1/θ_k = γ_k/m_k).
+struct PairCooling {
+  double w, e;
+};
+PairCooling pair_cooling(const Reduced& r, const Vec& gamma, int i, int l) {
+  const double ma = r.mu_a[i * kMax + l], wi = gamma[i] * r.inverse_m[i], wl = gamma[l] * r.inverse_m[l];
+  return {std::sqrt(wi + wl), -2 * ma * (1 - 0.5 * ma * (1 + wl / wi))};
+}
+
+/// ζ_i = −(2c_d/d) Σ_l x_l σ_il^{d−1} w_il E_il (16.11) and its Jacobian ∂ζ_i/∂γ_k at i·4 + k.
+template <int S>
+void partial_cooling(const Reduced& r, const Vec& gamma, Vec& zeta, Mat& jacobian) {
+  const double f = -2 * r.c_d / r.d;
+  Vec over{}, theta{}, inverse_gamma{};  // 1/θ_k = γ_k/m_k, θ_k, 1/γ_k
+  for (int k = 0; k < S; ++k) {
+    over[k] = gamma[k] * r.inverse_m[k];
+    theta[k] = 1 / over[k];
+    inverse_gamma[k] = r.inverse_m[k] * theta[k];
+  }
+  Mat w{}, inverse_w{};  // w_il = w_li, one square root and one division per unordered pair
+  for (int i = 0; i < S; ++i)
+    for (int l = i; l < S; ++l) {
+      w[i * kMax + l] = w[l * kMax + i] = std::sqrt(over[i] + over[l]);
+      inverse_w[i * kMax + l] = inverse_w[l * kMax + i] = 1 / w[i * kMax + l];
+    }
+  zeta = {};
+  jacobian = {};
+  for (int i = 0; i < S; ++i)
+    for (int l = 0; l < S; ++l) {
+      const double ma = r.mu_a[i * kMax + l], ratio = over[l] * theta[i];  // θ_i/θ_l
+      const double e = -2 * ma * (1 - 0.5 * ma * (1 + ratio)), wil = w[i * kMax + l];
+      const double k = f * r.x[l] * r.area[i * kMax + l];
+      zeta[i] += k * wil * e;
+      // ∂w/∂γ_i = 1/(2m_i w), ∂E/∂(θ_i/θ_l) = μ_li²(1+α)², ∂(θ_i/θ_l)/∂γ_i = −(θ_i/θ_l)/γ_i; the same
+      // with l (for l = i they add).
+      const double half_e = 0.5 * e * inverse_w[i * kMax + l], de = wil * ma * ma * ratio;
+      jacobian[i * kMax + i] += k * (half_e * r.inverse_m[i] - de * inverse_gamma[i]);
+      jacobian[i * kMax + l] += k * (half_e * r.inverse_m[l] + de * inverse_gamma[l]);
+    }
+}
+
+/// The Maxwellian HCS (theory.md §16.2): ζ_i equal and Σ x_i γ_i = 1, by damped Newton from equipartition.
+template <int S>
+void cooling_state(Reduced& r) {
+  Vec gamma{}, zeta{}, scale{};
+  Mat jac{};
+  for (int i = 0; i < S; ++i) gamma[i] = 1;
+  // Each equal-rate row is divided by the size of its gain and loss terms at equipartition,
+  // (2c_d/d) Σ_l x_l σ_il^{d−1} w_il 2μ_li(1+α_il) (> 0 also where ζ = 0, α = 1), held fixed.
+  const int last = S - 1;
+  for (int i = 0; i < S; ++i)
+    for (int l = 0; l < S; ++l)
+      scale[i] +=
+          4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * pair_cooling(r, gamma, i, l).w * r.mu_a[i * kMax + l];
+  for (int i = 0; i < last; ++i) scale[i] += scale[last];
+  auto residual = [&](const Vec& g, Vec& res, Mat& j) {
+    partial_cooling<S>(r, g, zeta, j);
+    double norm = 0, sum = 0;
+    for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) / scale[i];
+    for (int i = 0; i < S; ++i) sum += r.x[i] * g[i];
+    res[last] = sum - 1;
+    for (int i = 0; i < S; ++i) norm += res[i] * res[i];
+    return norm;
+  };
+  Vec res{};
+  double norm = residual(gamma, res, jac);
+  // Quadratic convergence: once |res| < 1e-11 the next full step reaches round-off; no search beyond it.
+  for (int iteration = 0; iteration < 200 && norm > 1e-30; ++iteration) {
+    const bool last_step = norm < 1e-22;
+    // Newton in ln γ keeps every γ > 0: Σ_k J_ik γ_k du_k = −res_i.
+    Mat m{};
+    for (int i = 0; i < S; ++i)
+      for (int k = 0; k < S; ++k)
+        m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) / scale[i] : r.x[k]);
+    Vec rhs{};
+    for (int i = 0; i < S; ++i) rhs[i] = -res[i];
+    const Vec du = solve<S>(m, rhs);
+    double step = 1;
+    for (int halving = 0; halving < (last_step ? 1 : 40); ++halving, step /= 2) {
+      Vec trial = gamma, trial_res{};
+      Mat trial_jac{};
+      // γ_k e^{δ}; near the root 1 + δ + δ²/2 suffices (the map u → γ only has to be right to first order).
+      for (int k = 0; k < S; ++k) {
+        const double delta = std::clamp(step * du[k], -5.0, 5.0);
+        trial[k] = gamma[k] * (std::abs(delta) < 1e-2 ? 1 + delta * (1 + 0.5 * delta) : std::exp(delta));
+      }
+      const double trial_norm = residual(trial, trial_res, trial_jac);
+      if (std::isfinite(trial_norm) && trial_norm < norm) {
+        gamma = trial, res = trial_res, jac = trial_jac, norm = trial_norm;
+        break;
+      }
+    }
+    if (step < 1e-11 || last_step) break;
+  }
+  if (!(norm < 1e-22))
+    throw std::invalid_argument(std::string("temperature_ratio: the Maxwellian HCS did not converge (residual ")
+                                    .append(std::to_string(std::sqrt(norm)))
+                                    .append(")"));
+  r.jacobian = jac;  // zeta and jac belong to the accepted γ
+  r.gamma = gamma;
+  for (int k = 0; k < S; ++k) {
+    r.theta[k] = r.m[k] / gamma[k];
+    r.root_theta[k] = std::sqrt(r.theta[k]);
+  }
+  r.zeta = zeta[last];
+}
+
+/// n ∂ln γ_i/∂n_j at i·4 + j and ∂ζ/∂n_j (theory.md §16.6): differentiate ζ_i − ζ_s = 0 and Σ_k n_k γ_k = n.
+struct Sensitivity {
+  Mat log_gamma{};
+  Vec zeta{};
+};
+template <int S>
+Sensitivity cooling_sensitivity(const Reduced& r) {
+  const Mat& jac = r.jacobian;
+  const int last = S - 1;
+  Mat m{};
+  for (int i = 0; i < S; ++i)
+    for (int k = 0; k < S; ++k) m[i * kMax + k] = i < last ? jac[i * kMax + k] - jac[last * kMax + k] : r.x[k];
+  Sensitivity out;
+  const double f = -2 * r.c_d / r.d;
+  for (int j = 0; j < S; ++j) {
+    Vec explicit_part{}, rhs{};  // ∂ζ_i/∂n_j at fixed γ
+    for (int i = 0; i < S; ++i) {
+      const PairCooling p = pair_cooling(r, r.gamma, i, j);
+      explicit_part[i] = f * r.area[i * kMax + j] * p.w * p.e;
+    }
+    for (int i = 0; i < last; ++i) rhs[i] = -(explicit_part[i] - explicit_part[last]);
+    rhs[last] = 1 - r.gamma[j];
+    const Vec dgamma = solve<S>(m, rhs);
+    double dz = explicit_part[last];
+    for (int k = 0; k < S; ++k) {
+      out.log_gamma[k * kMax + j] = dgamma[k] / r.gamma[k];
+      dz += jac[last * kMax + k] * dgamma[k];
+    }
+    out.zeta[j] = dz;
+  }
+  return out;
+}
+
+/// The first-Sonine collision integrals of the pair (i, j) with Maxwellians at θ_i, θ_j (derived in
+/// theory.md §17.10, (17.16)–(17.17)), each divided by R = c_d w_ij μ_ji (1 + α_ij):
+/// self_pq = ∫∫ f̂_i f̂_j c_1S_q(c_1²)·Δ[c_1S_p(c_1²)], other_pq the same with c_2S_q(c_2²) (c_k = √θ_k v_k),
+/// Δψ = ∫dσ̂ Θ(σ̂·g)(σ̂·g)[ψ(v_1') − ψ(v_1)]; shear_* likewise with Y_2(c) = cc − c²I/d.
+struct PairIntegrals {
+  double rate;  // R (without σ_ij^{d−1})
+  double self00, other00, self10, other10, self11, other11, shear_self, shear_other;
+};
+PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
+  // t = θ_i/θ_j, k = μ_ji(1 + α_ij)(1 + t); with u = 1 + t the integrals are polynomials in k and t over u, u².
+  const double d = r.d, t = r.theta[i] / r.theta[j], ma = r.mu_a[i * kMax + j];
+  const double u = 1 + t, v = 1 / u, k = ma * u, st = r.root_theta[i] / r.root_theta[j];
+  PairIntegrals p{};
+  p.rate = r.c_d * std::sqrt(1 / r.theta[i] + 1 / r.theta[j]) * ma;
+  p.self00 = -1;                                                                                  // (17.16)
+  p.other00 = st;                                                                                 // (17.16)
+  p.self10 = (2 * k * k - 0.5 * k * ((d + 2) * t + d + 11) + (d + 2) * t + (2 * d + 7) / 2) * v;  // (17.16)
+  p.other10 = st * (-2 * k * k + 4.5 * k - 1.5) * v;                                              // (17.16)
+  p.self11 = (-3 * k * k + 0.75 * k * ((d + 8) * t + d + 11) - 1.5 * (d + 2) * t * t - (7 * d + 20) / 2 * t -
+              (8 * d + 25) / 4) *
+             v * v;                                            // (17.16)
+  p.other11 = 3 * t * st * (k * k - 0.75 * k - 0.25) * v * v;  // (17.16)
+  if (r.d == 3) {                                              // (17.17)
+    p.shear_self = (k - 10 * t / 3 - 4) * v;
+    p.shear_other = t * (k - 2.0 / 3) * v;
+  } else {
+    p.shear_self = (0.75 * k - 2 * t - 2.5) * v;
+    p.shear_other = t * (0.75 * k - 0.5) * v;
+  }
+  return p;
+}
+
+/// The linearised operator (17.4) of the published truncation: the S_0–S_0 block l00 (mass flux), the
+/// S_1–S_0 block l10 that feeds the mass flux into the heat flux, the S_1–S_1 block l11, and the shear block.
+struct Operator {
+  Mat l00{}, l10{}, l11{}, shear{};
+};
+template <int S>
+Operator first_sonine_operator(const Reduced& r) {
+  Operator op;
+  for (int i = 0; i < S; ++i)
+    for (int j = 0; j < S; ++j) {
+      const PairIntegrals p = pair_integrals(r, i, j);
+      const double rate = r.area[i * kMax + j] * p.rate;
+      const double self = rate * r.x[j], other = rate * r.x[i];
+      // −Σ_j [x_j ∫ψ_i J_ij[X_i, f_j] + x_i ∫ψ_i J_ij[f_i, X_j]] (17.4)
+      op.l00[i * kMax + i] -= self * p.self00;
+      op.l00[i * kMax + j] -= other * p.other00;
+      op.l10[i * kMax + i] -= self * p.self10;
+      op.l10[i * kMax + j] -= other * p.other10;
+      op.l11[i * kMax + i] -= self * p.self11;
+      op.l11[i * kMax + j] -= other * p.other11;
+      op.shear[i * kMax + i] -= self * p.shear_self;
+      op.shear[i * kMax + j] -= other * p.shear_other;
+    }
+  return op;
+}
+
+/// One vector mode (𝒜, ℬ^j or the force mode), factored once for all its sources: the mass-flux system
+/// alone, then the heat flux with it fed in. shift0/shift10/shift11 are the ζ pieces of the mode
+/// (ζ(D − ½M), ζD or ζ(D + M) at order 1).
+struct VectorSolution {
+  Vec s0{}, s1{};  // φ̃_i0, φ̃_i1
+};
+template <int S>
+class VectorMode {
+ public:
+  VectorMode(const Reduced& r, const Operator& op, double shift0, double shift10, double shift11)
+      : op_(op),
+        major_(r.major),
+        shift10_(shift10),
+        mass_(mass_matrix(r, op, shift0)),
+        heat_(heat_matrix(op, shift11)) {}
+  /// Returns the solution for the S_0 and S_1 sources (the major species' S_0 source is replaced by 0).
+  [[nodiscard]] VectorSolution solve(Vec source0, const Vec& source1) const {
+    VectorSolution out;
+    source0[major_] = 0;
+    out.s0 = mass_.solve(source0);
+    Vec c = source1;
+    for (int i = 0; i < S; ++i) {
+      c[i] -= shift10_ * out.s0[i];
+      for (int k = 0; k < S; ++k) c[i] -= op_.l10[i * kMax + k] * out.s0[k];
+    }
+    out.s1 = heat_.solve(c);
+    return out;
+  }
+
+ private:
+  static Mat mass_matrix(const Reduced& r, const Operator& op, double shift0) {
+    Mat m = op.l00;
+    for (int i = 0; i < S; ++i) m[i * kMax + i] += shift0;
+    // Σ_k m_k ∫V X_k = 0 replaces the most abundant species' row (17.7).
+    for (int k = 0; k < S; ++k) m[r.major * kMax + k] = r.m[k] / r.root_theta[k];
+    return m;
+  }
+  static Mat heat_matrix(const Operator& op, double shift11) {
+    Mat h = op.l11;
+    for (int i = 0; i < S; ++i) h[i * kMax + i] += shift11;
+    return h;
+  }
+  const Operator& op_;
+  int major_;
+  double shift10_;
+  Lu<S> mass_, heat_;
+};
+
+/// Returns "<base>[i]: <what>" (built by appending: GCC 12 misreports "a" + std::string as overlapping).
+std::string field(const char* base, int i, const char* what) {
+  return std::string(base).append("[").append(std::to_string(i)).append("]: ").append(what);
+}
+
+Reduced reduce(const MixtureCell& cell) {
+  if (cell.dimension != 2 && cell.dimension != 3)
+    throw std::invalid_argument(std::string("dimension: must be 2 or 3, got ").append(std::to_string(cell.dimension)));
+  if (cell.species < 2 || cell.species > kMax)
+    throw std::invalid_argument(std::string("species: must be 2 to 4, got ").append(std::to_string(cell.species)));
+  Reduced r;
+  r.d = cell.dimension;
+  r.s = cell.species;
+  double mean_mass = 0, mean_diameter = 0, total = 0;
+  for (int i = 0; i < r.s; ++i) {
+    if (!(cell.mass[i] > 0) || !std::isfinite(cell.mass[i]))
+      throw std::invalid_argument(field("mass", i, "must be finite and > 0"));
+    if (!(cell.diameter[i] > 0) || !std::isfinite(cell.diameter[i]))
+      throw std::invalid_argument(field("diameter", i, "must be finite and > 0"));
+    if (!(cell.fraction[i] >= 0 && cell.fraction[i] <= 1))
+      throw std::invalid_argument(field("fraction", i, "must be in [0, 1]"));
+    for (int j = 0; j < r.s; ++j) {
+      const double a = cell.restitution[i * kMax + j];
+      if (!(a > 0 && a <= 1) || a != cell.restitution[j * kMax + i])
+        throw std::invalid_argument(
+            field("restitution", i * kMax + j, "alpha_ij at i*4 + j must be in (0, 1] and symmetric"));
+    }
+    mean_mass += cell.fraction[i] * cell.mass[i];
+    mean_diameter += cell.fraction[i] * cell.diameter[i];
+    total += cell.fraction[i];
+  }
+  if (std::abs(total - 1) > 1e-12) throw std::invalid_argument("fraction: the mole fractions must sum to 1");
+  for (int i = 0; i < r.s; ++i) {
+    r.m[i] = cell.mass[i] / mean_mass;
+    r.inverse_m[i] = mean_mass / cell.mass[i];
+    r.x[i] = cell.fraction[i];
+    if (r.x[i] > r.x[r.major]) r.major = i;
+    for (int j = 0; j < r.s; ++j) {
+      const double sigma = 0.5 * (cell.diameter[i] + cell.diameter[j]) / mean_diameter;
+      r.area[i * kMax + j] = r.d == 3 ? sigma * sigma : sigma;
+      r.mu_a[i * kMax + j] = cell.mass[j] / (cell.mass[i] + cell.mass[j]) * (1 + cell.restitution[i * kMax + j]);
+      r.alpha[i * kMax + j] = cell.restitution[i * kMax + j];
+    }
+  }
+  // c_d and the reference gas per dimension, computed once (tgamma and pow are the slow part of a call).
+  static const std::array<double, 2> c_d{geometric_factor(2), geometric_factor(3)};
+  static const std::array<ReferenceGas, 2> ref{unit_reference_gas(2), unit_reference_gas(3)};
+  r.c_d = c_d[static_cast<std::size_t>(r.d - 2)];
+  r.ref = ref[static_cast<std::size_t>(r.d - 2)];
+  return r;
+}
+
+template <int S>
+PublishedFirstSonine first_sonine(Reduced& r) {
+  cooling_state<S>(r);
+  const Sensitivity sens = cooling_sensitivity<S>(r);
+  const Operator op = first_sonine_operator<S>(r);
+  const double d = r.d, z = r.zeta;
+  // Maxwell averages of the order-1 pieces (galerkin_pieces): M(0,0) = d/2, M(1,1) = F_0 = −F_1 =
+  // d(d+2)/4; D(0,0) = −d/4, D(1,0) = d(d+2)/4, D(1,1) = −3d(d+2)/8; shear D = −(d−1)(d+2)/8.
+  const double m00 = d / 2, m11 = d * (d + 2) / 4, d00 = -d / 4, d10 = m11, d11 = -3 * m11 / 2;
+  PublishedFirstSonine out;
+  out.cooling_rate = z / r.ref.collision_frequency;
+  for (int i = 0; i < S; ++i) out.temperature_ratio[i] = r.gamma[i];
+
+  // 𝒜 (∇ln T), sources (17.5): −x_i θ_i^{−1/2}[(1 − θ_i) M(p,0) − M(p,1)].
+  Vec a0{}, a1{};
+  for (int i = 0; i < S; ++i) {
+    a0[i] = -r.x[i] / r.root_theta[i] * (1 - r.theta[i]) * m00;
+    a1[i] = r.x[i] / r.root_theta[i] * m11;
+  }
+  const VectorSolution heat = VectorMode<S>(r, op, z * (d00 - m00 / 2), z * d10, z * (d11 - m11 / 2)).solve(a0, a1);
+  const VectorMode<S> density_mode(r, op, z * d00, z * d10, z * d11),
+      force_mode(r, op, z * (d00 + m00), z * d10, z * (d11 + m11));
+  // Number flux ∫V·X_i/d = φ̃_i0/(2√θ_i); kinetic heat flux ∫½m_iV²V·X_i/d = (m_i/(2d))θ_i^{−3/2}(F_0φ̃_i0 + F_1φ̃_i1)
+  // (17.9)–(17.10).
+  auto number_flux = [&](const VectorSolution& v, int i) { return v.s0[i] / (2 * r.root_theta[i]); };
+  auto heat_flux = [&](const VectorSolution& v, int i) {
+    return r.m[i] / (2 * d * r.theta[i] * r.root_theta[i]) * m11 * (v.s0[i] - v.s1[i]);
+  };
+  const double temperature = 0.5;
+  for (int i = 0; i < S; ++i) {
+    out.thermal_diffusion[i] = -r.m[i] * number_flux(heat, i) / r.ref.self_diffusion;
+    out.thermal_conductivity_species[i] = -heat_flux(heat, i) / temperature / r.ref.conductivity;
+    out.thermal_conductivity += out.thermal_conductivity_species[i];
+  }
+  // ℬ^j (∇n_j), sources (17.6): −θ_i^{−1/2}[δ_ij M(p,0) + x_i(∂_j ln γ_i (M(p,0) − M(p,1)) − θ_i M(p,0))] + ∂ζ/∂n_j M
+  // φ̃^𝒜_i.
+  for (int j = 0; j < S; ++j) {
+    Vec b0{}, b1{};
+    for (int i = 0; i < S; ++i) {
+      const double g = sens.log_gamma[i * kMax + j], root = r.root_theta[i];
+      b0[i] = -m00 / root * ((i == j ? 1.0 : 0.0) + r.x[i] * (g - r.theta[i])) + sens.zeta[j] * m00 * heat.s0[i];
+      b1[i] = m11 / root * r.x[i] * g + sens.zeta[j] * m11 * heat.s1[i];
+    }
+    const VectorSolution density = density_mode.solve(b0, b1);
+    for (int i = 0; i < S; ++i) {
+      out.mutual_diffusion[i * kMax + j] = -number_flux(density, i) / (r.m[j] * r.ref.self_diffusion);
+      out.dufour_species[i * kMax + j] = -r.x[j] * heat_flux(density, i) / (temperature * r.ref.conductivity);
+      out.dufour[j] += out.dufour_species[i * kMax + j];
+    }
+    // External force on species j (18.14): source 2√θ_i x_i M(0,0)(δ_ij/m_i − x_j), operator ζ(D + M).
+    Vec f0{};
+    for (int i = 0; i < S; ++i) f0[i] = 2 * r.root_theta[i] * r.x[i] * ((i == j ? 1 / r.m[i] : 0.0) - r.x[j]) * m00;
+    const VectorSolution force = force_mode.solve(f0, Vec{});
+    for (int i = 0; i < S; ++i) {
+      out.mobility[i * kMax + j] = -r.m[i] * number_flux(force, i) * temperature / r.ref.self_diffusion;
+      out.heat_mobility_species[i * kMax + j] = -heat_flux(force, i) / r.ref.conductivity;
+      out.heat_mobility[j] += out.heat_mobility_species[i * kMax + j];
+    }
+  }
+  for (int i = 0; i < S; ++i)
+    for (int j = 0; j < S; ++j)
+      out.pressure_diffusion[i] += r.m[i] * r.m[j] * r.x[j] * out.mutual_diffusion[i * kMax + j];
+  // Shear (17.11) with Y_2 S_0 alone: (ℒ + ζD) φ̃ = −2x_i((d−1)/d)F_0, η_i = −(m_i/θ_i) F_0 φ̃_i/(d(d+2)).
+  Mat shear = op.shear;
+  Vec source{};
+  for (int i = 0; i < S; ++i) {
+    shear[i * kMax + i] -= z * (d - 1) * (d + 2) / 8;
+    source[i] = -r.x[i] * (d - 1) * (d + 2) / 2;
+  }
+  const Vec c = solve<S>(shear, source);
+  for (int i = 0; i < S; ++i) {
+    out.shear_viscosity_species[i] = -r.m[i] / r.theta[i] * c[i] / 4 / r.ref.viscosity;
+    out.shear_viscosity += out.shear_viscosity_species[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+MixtureCell mixture_cell(const Mixture& mixture) {
+  mixture.validate();
+  if (mixture.size() > kMax) throw std::invalid_argument("species: the closed form takes at most 4 species");
+  if (mixture.packing_fraction > 0)
+    throw std::invalid_argument("packing_fraction: the published first-Sonine closed form is the dilute gas's (0)");
+  MixtureCell cell;
+  cell.dimension = mixture.dimension;
+  cell.species = static_cast<int>(mixture.size());
+  for (std::size_t i = 0; i < mixture.size(); ++i) {
+    cell.mass[i] = mixture.species[i].mass.value();
+    cell.diameter[i] = mixture.species[i].diameter;
+    cell.fraction[i] = mixture.species[i].fraction;
+    for (std::size_t j = 0; j < mixture.size(); ++j) cell.restitution[i * kMax + j] = mixture.restitution(i, j);
+  }
+  return cell;
+}
+
+PublishedFirstSonine published_first_sonine(const MixtureCell& cell) {
+  Reduced r = reduce(cell);
+  // The species count is a template argument: every loop and the small solves unroll (theory.md §17.10 gives the cost).
+  switch (r.s) {
+    case 2:
+      return first_sonine<2>(r);
+    case 3:
+      return first_sonine<3>(r);
+    default:
+      return first_sonine<4>(r);
+  }
+}
+
+}  // namespace gkt
