@@ -55,15 +55,25 @@ struct MixtureTransportValues {
   std::vector<double> temperature_first_order;
 };
 
+/// The species distributions f_i^(0) the Chapman–Enskog solution is built about (theory.md §17.10).
+struct MixtureReference {
+  /// maxwellian: every f_i^(0) Maxwellian at T_i, as [garzo2002mixture] and [garzo2007mixture] (the
+  /// default); linear or nonlinear: f_i^(0) = f_M,i (1 + Σ_{k=2}^K a_k,i S_k(X_i)) with the a_k,i, T_i and ζ
+  /// of mixture_cooling_state(mixture, scheme, hcs_order) in the operator, the sources and ζ.
+  MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian;
+  /// K: the cumulants a_2 … a_K (an integer in [2, 6]); ignored by the Maxwellian reference.
+  int hcs_order = 2;
+};
+
 /// The linearised Boltzmann operator of a dilute mixture in Sonine polynomials, built once (exact
 /// engine moments rounded to double) and solved at any order up to max_order.
 class MixtureNavierStokes {
  public:
-  /// Builds the operator for `mixture` (validated) about its Maxwellian HCS, with vector trial
-  /// functions c S_0 … c S_max_order, tensor ones Y_2 S_0 … Y_2 S_{max_order−1} and, for φ > 0,
-  /// scalar ones S_1 … S_{max_order+1} per species. Throws std::invalid_argument naming the field
-  /// on bad input.
-  MixtureNavierStokes(const Mixture& mixture, int max_order);
+  /// Builds the operator for `mixture` (validated) about its HCS in the `reference` (Maxwellian by
+  /// default), with vector trial functions c S_0 … c S_max_order, tensor ones Y_2 S_0 … Y_2 S_{max_order−1}
+  /// and, for φ > 0, scalar ones S_1 … S_{max_order+1} per species. Throws std::invalid_argument naming
+  /// the field on bad input, and for a cumulant reference with φ > 0 (implemented for the dilute gas only).
+  MixtureNavierStokes(const Mixture& mixture, int max_order, MixtureReference reference = {});
   /// Copies carry the built operator (deep copy); a moved-from solver may only be assigned to or destroyed.
   ~MixtureNavierStokes();
   /// Deep copy, including the built operator.
@@ -80,10 +90,13 @@ class MixtureNavierStokes {
   [[nodiscard]] MixtureTransportValues coefficients(int order) const;
   /// Returns the largest Sonine order N the operator was built for (the constructor's max_order).
   [[nodiscard]] int max_order() const;
-  /// Returns the Maxwellian HCS the coefficients are built about.
+  /// Returns the HCS the coefficients are built about (its cumulants are those in f^(0)).
   [[nodiscard]] const MixtureCoolingState& cooling_state() const;
-  /// Returns the HCS density derivatives used in the sources (theory.md §16.6).
+  /// Returns the HCS density derivatives used in the sources (theory.md §16.6; §17.10 for a cumulant reference).
   [[nodiscard]] const MixtureCoolingSensitivity& cooling_sensitivity() const;
+  /// Returns n ∂a_k,i/∂n_j at [i·s + j][k] (k = 0 … K; empty for the Maxwellian reference): the
+  /// cumulants' density derivatives in the ∇n_j sources (theory.md §17.10).
+  [[nodiscard]] const std::vector<std::vector<double>>& cumulant_sensitivity() const;
 
  private:
   struct Impl;  // the operator blocks (Eigen) and the dense gas's pair tables (mixture_navier_stokes.cpp)
