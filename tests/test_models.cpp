@@ -288,3 +288,33 @@ TEST(ModelFacade, ToleranceDrivesTheMixtureHcsOrder) {
   EXPECT_DOUBLE_EQ(k2[0].value.to_double(), ratio[0]);
   EXPECT_GT(k2[0].error.to_double(), 1e-3);
 }
+
+// reference_state = "hcs" (theory.md §17.10): a mixture of identical species gives the smooth-inelastic
+// model's η* and κ* (its first order keeps a2 of the nonlinear HCS in f0) to round-off; the default
+// (Maxwellian, GDH) does not; a dense mixture with the cumulant reference is refused naming the key.
+TEST(ModelFacade, MixtureReferenceStateHcsIsTheOneComponentGas) {
+  auto mixture = gkt::make_transport_model("mixture");
+  auto one = gkt::make_transport_model("smooth-inelastic");
+  ParameterPoint p = binary();
+  p.numbers["mass_2"] = Rational(1);
+  p.numbers["fraction_1"] = Rational(3, 10);
+  p.numbers["fraction_2"] = Rational(7, 10);
+  p.numbers["alpha"] = Rational(4, 5);
+  p.choices["hcs"] = "nonlinear";
+  ParameterPoint q;
+  q.numbers["alpha"] = Rational(4, 5);
+  const auto expected = one->evaluate(q, {"shear_viscosity", "thermal_conductivity"}, {1, std::nullopt});
+  const auto gdh = mixture->evaluate(p, {"shear_viscosity", "thermal_conductivity"}, {1, std::nullopt});
+  p.choices["reference_state"] = "hcs";
+  const auto got = mixture->evaluate(p, {"shear_viscosity", "thermal_conductivity"}, {1, std::nullopt});
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double e = expected[k].value.to_double();
+    EXPECT_NEAR(got[k].value.to_double(), e, 1e-12 * e) << k;
+  }
+  EXPECT_GT(std::abs(gdh[1].value.to_double() / expected[1].value.to_double() - 1), 0.02);
+  p.numbers["packing_fraction"] = Rational(1, 5);
+  EXPECT_TRUE(contains(refusal([&] {
+                         mixture->evaluate(p, {"shear_viscosity"}, {1, std::nullopt});
+                       }),
+                       "reference_state:"));
+}

@@ -87,6 +87,10 @@ class MixtureModel final : public TransportModel {
              "g* = rho g/(n dT/dz) of the segregation criterion thermal_diffusion_factor_i "
              "(dp/dz = -rho g)"),
         hcs_spec(),
+        detail::choice_spec("reference_state",
+                            "species distributions f0 of the Navier-Stokes coefficients: Maxwellian at T_i (GDH) or "
+                            "the HCS of `hcs` with its cumulants a_2 ... a_K (K = hcs_order; dilute only)",
+                            {"maxwellian", "hcs"}),
         {"hcs_order",
          ParameterSpec::Kind::integer,
          Rational(2),
@@ -128,7 +132,7 @@ class MixtureModel final : public TransportModel {
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     std::vector<ParameterSpec> specs;
     for (const auto& spec : parameters())
-      if (spec.name != "reduced_gravity") specs.push_back(spec);
+      if (spec.name != "reduced_gravity" && spec.name != "reference_state") specs.push_back(spec);
     const ParameterSpec a2 = detail::evolution_a2_spec(2);  // the union of both dimensions' ranges; evolve() checks d's
     for (int i = 1; i <= kMaxSpecies; ++i) {
       specs.push_back(real(index_name("temperature_ratio", i), Rational(0), false, Rational(1000000L), true,
@@ -208,6 +212,11 @@ class MixtureModel final : public TransportModel {
     std::optional<MixtureCoolingState> chosen, alternative, higher;  // solved once, if an HCS value is asked for
     TransportCache transport;                                        // built once, if a transport value is asked for
     transport.gravity = p.number("reduced_gravity").to_double();
+    const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                    : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                        : MixtureHcsScheme::nonlinear;
+    // f0 of the transport coefficients: Maxwellian (GDH) or this HCS with a_2 … a_K (theory.md §17.10).
+    if (p.choice("reference_state") == "hcs") transport.reference = {scheme, hcs_k};
     struct Parsed {
       Kind kind;
       int i, cumulant;  // species from 1 (0: none), cumulant index (0: none)
@@ -222,9 +231,6 @@ class MixtureModel final : public TransportModel {
       }
       return q;
     };
-    const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
-                                    : hcs == "linear"   ? MixtureHcsScheme::linear
-                                                        : MixtureHcsScheme::nonlinear;
     // `tolerance` without `hcs_order` (first Sonine or more): one cumulant order K for every HCS value
     // of the call, the smallest at which successive K agree within it (theory.md §16.3).
     const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
@@ -385,12 +391,14 @@ class MixtureModel final : public TransportModel {
     };
     std::optional<MixtureNavierStokes> operators;
     std::map<int, AtOrder> by_order;
-    double gravity = 0;  ///< g* of the segregation criterion
+    double gravity = 0;          ///< g* of the segregation criterion
+    MixtureReference reference;  ///< f0 of the coefficients (Maxwellian unless reference_state = "hcs")
 
     const AtOrder& at(const Mixture& m, int n) {
       if (const auto it = by_order.find(n); it != by_order.end()) return it->second;
       if (!operators || operators->max_order() < n)
-        operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)));
+        operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)),
+                          reference);
       AtOrder a{operators->coefficients(n), {NAN, NAN, NAN}};
       const MixtureTransportValues& v = a.values;
       if (v.shear_viscosity > 0 && v.thermal_conductivity > 0)
