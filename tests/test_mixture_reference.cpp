@@ -9,6 +9,7 @@
 #include "gkt/transport/mixture/mixture.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
+#include "gkt/transport/mixture/tracer_diffusion.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
 #include "mixture_test_helpers.hpp"
 
@@ -133,4 +134,65 @@ TEST(MixtureReference, DenseCumulantReferenceIsRefused) {
   gkt::Mixture m = binary(3, 2, 1, 0.5, 0.8);
   m.packing_fraction = 0.2;
   EXPECT_THROW(gkt::MixtureNavierStokes(m, 1, {MixtureHcsScheme::linear, 2}), std::invalid_argument);
+}
+
+// An inelastic ternary with a restitution matrix about the HCS with cumulants: the fluxes still sum
+// to zero (Σ_i D^T_i = 0, Σ_i m_i D_ij = 0: the sources carry −∇p only, so the momentum constraint that
+// replaces a row stays exact), uniform gravity drives no diffusion (Σ_j D^F_ij m_j = 0) and Σ_i D^F_ij = 0.
+TEST(MixtureReference, FluxesOfATernarySumToZero) {
+  for (int d : {2, 3}) {
+    gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.5, ""}, {1.5, 0.8, 0.3, ""}, {4, 2, 0.2, ""}}, 0.7);
+    m.alpha = {0.7, 0.8, 0.6, 0.8, 0.9, 0.75, 0.6, 0.75, 0.65};
+    const gkt::MixtureNavierStokes ns(m, 2, {MixtureHcsScheme::linear, 3});
+    const gkt::MixtureNavierStokes gdh(m, 2);
+    const double mass[3] = {1, 1.5, 4};
+    const double m_bar = 0.5 * 1 + 0.3 * 1.5 + 0.2 * 4;
+    const auto v = ns.coefficients(2), g = gdh.coefficients(2);
+    double heat = 0, scale = 0;
+    for (std::size_t i = 0; i < 3; ++i) heat += v.thermal_diffusion[i], scale += std::abs(v.thermal_diffusion[i]);
+    EXPECT_LT(std::abs(heat), 1e-12 * scale) << d;
+    for (std::size_t j = 0; j < 3; ++j) {
+      double flux = 0, size = 0, force = 0, force_size = 0, gravity = 0;
+      for (std::size_t i = 0; i < 3; ++i) {
+        flux += mass[i] / m_bar * v.mutual_diffusion[i * 3 + j];
+        size += std::abs(mass[i] / m_bar * v.mutual_diffusion[i * 3 + j]);
+        force += v.mobility[i * 3 + j];
+        force_size += std::abs(v.mobility[i * 3 + j]);
+        gravity += v.mobility[j * 3 + i] * mass[i];
+      }
+      EXPECT_LT(std::abs(flux), 1e-12 * size) << d << " " << j;
+      EXPECT_LT(std::abs(force), 1e-12 * force_size) << d << " " << j;
+      EXPECT_LT(std::abs(gravity), 1e-12 * force_size * 4) << d << " " << j;
+    }
+    EXPECT_GT(relative(v.thermal_conductivity, g.thermal_conductivity), 1e-4);  // the cumulants do act
+  }
+}
+
+// Self-diffusion: the tagged particle of the one-component gas with its a_k in the host's f and in
+// its own f⁰ (TracerDiffusion with the same reference: the Lorentz operator alone, no constraint row,
+// the tracer's units) equals D_self of the identical-species mixture; and a tracer of unequal mass,
+// size and restitution at x_1 = 0 of the mixture equals the Boltzmann–Lorentz solution at every
+// order (theory.md §16.5 with (17.16)).
+TEST(MixtureReference, SelfAndTracerDiffusionEqualTheLorentzSolution) {
+  for (int d : {2, 3}) {
+    for (int K : {2, 3}) {
+      const gkt::MixtureReference reference{MixtureHcsScheme::nonlinear, K};
+      const double alpha = 0.5;
+      const gkt::MixtureNavierStokes ns(binary(d, 1, 1, 0.3, alpha), 3, reference);
+      const gkt::TracerDiffusion tagged({d, 1, 1, alpha, alpha}, 5, reference);
+      const gkt::TracerDiffusion maxwellian({d, 1, 1, alpha, alpha}, 5);
+      for (int order = 1; order <= 3; ++order) {
+        EXPECT_LT(relative(ns.coefficients(order).mutual_diffusion[0], 0.7 * tagged.coefficient(order + 1)), 1e-12)
+            << d << " K " << K << " N " << order;
+        EXPECT_GT(relative(tagged.coefficient(order + 1), maxwellian.coefficient(order + 1)), 1e-4);
+      }
+      gkt::Mixture m = gkt::make_mixture(d, {{3.0, 1.5, 0.0, "tracer"}, {1, 1, 1.0, "host"}}, 0.8);
+      m.alpha = {0.8, 0.72, 0.72, 0.8};
+      const gkt::MixtureNavierStokes host(m, 4, reference);
+      const gkt::TracerDiffusion tracer({d, 3.0, 1.5, 0.72, 0.8}, 5, reference);
+      for (int order = 1; order <= 4; ++order)
+        EXPECT_LT(relative(host.coefficients(order).mutual_diffusion[0] * 3.0, tracer.coefficient(order + 1)), 1e-11)
+            << d << " K " << K << " N " << order;
+    }
+  }
 }

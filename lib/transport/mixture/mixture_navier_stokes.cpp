@@ -16,6 +16,7 @@
 #include "gkt/operators/mixture_collisional_transfer.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "transport/common/galerkin_pieces.hpp"
+#include "transport/mixture/cumulant_sources.hpp"
 
 namespace gkt {
 
@@ -80,69 +81,6 @@ void add_weighted_pair(Eigen::MatrixXd& self, Eigen::MatrixXd& cross, const Coll
       self(I + p, I + q) -= weight_self * s_self;
       cross(I + p, J + q) -= weight_other * s_cross;
     }
-}
-
-/// Maxwellian averages over the reduced speed x = c² with weight x^{d/2−1}e^{−x}/Γ(d/2) of the
-/// source polynomials of a reference with cumulants, at [p][k] (vector S_p, tensor S_p; scalar S_k,
-/// k = 0 … K; theory.md (17.17)):
-///   weight      ⟨x S_p S_k⟩,   temperature ⟨x S_p ((x − d/2) S_k − x S_k')⟩,
-///   drift       ⟨x S_p (S_k' − S_k)⟩,   shear ⟨x² S_p^tensor (S_k − S_k')⟩.
-struct CumulantSources {
-  std::vector<std::vector<double>> weight, temperature, drift, shear;
-};
-
-CumulantSources cumulant_sources(int d, int n_vector, int n_tensor, int k_max) {
-  using Poly = std::vector<Rational>;
-  auto multiply = [](const Poly& a, const Poly& b) {
-    Poly out(a.size() + b.size() - 1, Rational(0));
-    for (std::size_t i = 0; i < a.size(); ++i)
-      for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
-    return out;
-  };
-  auto add = [](Poly a, const Poly& b, const Rational& scale) {
-    if (a.size() < b.size()) a.resize(b.size(), Rational(0));
-    for (std::size_t i = 0; i < b.size(); ++i) a[i] += scale * b[i];
-    return a;
-  };
-  auto derivative = [](const Poly& a) {
-    Poly out(a.size() > 1 ? a.size() - 1 : 1, Rational(0));
-    for (std::size_t i = 1; i < a.size(); ++i) out[i - 1] = Rational(static_cast<long>(i)) * a[i];
-    return out;
-  };
-  const Rational half_d(d, 2);
-  auto average = [&](const Poly& a) {  // ⟨x^n⟩ = (d/2)_n
-    Rational acc(0), moment(1);
-    for (std::size_t n = 0; n < a.size(); ++n) {
-      acc += a[n] * moment;
-      moment *= half_d + Rational(static_cast<long>(n));
-    }
-    return acc.to_double();
-  };
-  const Poly x{Rational(0), Rational(1)}, x_minus{-half_d, Rational(1)};
-  const auto vec = sonine_table(sonine_twice_m(d, 1), n_vector);
-  const auto ten = sonine_table(sonine_twice_m(d, 2), n_tensor);
-  const auto sca = sonine_table(sonine_twice_m(d, 0), k_max);
-  CumulantSources out;
-  for (const auto& sp : vec) {
-    std::vector<double> w, t, f;
-    const Poly xs = multiply(x, sp);
-    for (const auto& sk : sca) {
-      const Poly dk = derivative(sk);
-      w.push_back(average(multiply(xs, sk)));
-      t.push_back(average(multiply(xs, add(multiply(x_minus, sk), multiply(x, dk), Rational(-1)))));
-      f.push_back(average(multiply(xs, add(dk, sk, Rational(-1)))));
-    }
-    out.weight.push_back(std::move(w));
-    out.temperature.push_back(std::move(t));
-    out.drift.push_back(std::move(f));
-  }
-  for (const auto& sp : ten) {
-    std::vector<double> v;
-    const Poly xxs = multiply(multiply(x, x), sp);
-    for (const auto& sk : sca) v.push_back(average(multiply(xxs, add(sk, derivative(sk), Rational(-1)))));
-    out.shear.push_back(std::move(v));
-  }
-  return out;
 }
 
 /// The HCS density derivatives of a cumulant reference at fixed T (theory.md §17.10): n ∂ln γ_i/∂n_j,
@@ -229,7 +167,7 @@ struct MixtureNavierStokes::Impl {
   // Cumulant reference (theory.md §17.10): a_k,i at [i][k] (empty when Maxwellian), n ∂a_k,i/∂n_j at
   // [i·s + j][k], and the source averages of the k ≥ 2 terms.
   std::vector<std::vector<double>> cumulants_, cumulant_sensitivity_;
-  CumulantSources cumulant_sources_;
+  detail::CumulantSources cumulant_sources_;
   int max_order_;
   std::size_t s_;
   std::size_t major_ = 0;  // the first most abundant species: its rows carry the conservation constraints
@@ -267,7 +205,7 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
     if (!state_.solved) throw std::invalid_argument("reference_state: the HCS with cumulants did not converge");
     cumulants_ = state_.cumulants;
     sensitivity_ = stencil_sensitivity(mixture, reference, cumulant_sensitivity_);
-    cumulant_sources_ = cumulant_sources(mixture.dimension, max_order, max_order - 1, reference.hcs_order);
+    cumulant_sources_ = detail::cumulant_sources(mixture.dimension, max_order, max_order - 1, reference.hcs_order);
   } else {
     sensitivity_ = mixture_cooling_sensitivity(mixture, state_);
   }
@@ -405,7 +343,7 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
     for (std::size_t k = 2; k < a.size(); ++k) acc += a[k] * table[static_cast<std::size_t>(p)][k];
     return acc;
   };
-  const CumulantSources& cs = cumulant_sources_;
+  const detail::CumulantSources& cs = cumulant_sources_;
   if (!cumulants_.empty())
     for (std::size_t i = 0; i < s_; ++i)
       for (int p = 0; p < n; ++p)

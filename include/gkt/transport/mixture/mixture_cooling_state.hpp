@@ -31,6 +31,17 @@ enum class MixtureHcsScheme {
   nonlinear,   ///< the same f_i with the products a_k,i a_l,j (and ζ_i a_k,i) kept
 };
 
+/// The species distributions f_i^(0) a Chapman–Enskog solution is built about (theory.md §17.10):
+/// MixtureNavierStokes and TracerDiffusion.
+struct MixtureReference {
+  /// maxwellian: every f_i^(0) Maxwellian at T_i, as [garzo2002mixture] and [garzo2007mixture] (the
+  /// default); linear or nonlinear: f_i^(0) = f_M,i (1 + Σ_{k=2}^K a_k,i S_k(X_i)) with the a_k,i, T_i and ζ
+  /// of mixture_cooling_state(mixture, scheme, hcs_order) in the operator, the sources and ζ.
+  MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian;
+  /// K: the cumulants a_2 … a_K (an integer in [2, 6]); ignored by the Maxwellian reference.
+  int hcs_order = 2;
+};
+
 /// The mixture HCS.
 struct MixtureCoolingState {
   std::vector<double> temperature_ratio;       ///< γ_i = T_i/T

@@ -55,16 +55,6 @@ struct MixtureTransportValues {
   std::vector<double> temperature_first_order;
 };
 
-/// The species distributions f_i^(0) the Chapman–Enskog solution is built about (theory.md §17.10).
-struct MixtureReference {
-  /// maxwellian: every f_i^(0) Maxwellian at T_i, as [garzo2002mixture] and [garzo2007mixture] (the
-  /// default); linear or nonlinear: f_i^(0) = f_M,i (1 + Σ_{k=2}^K a_k,i S_k(X_i)) with the a_k,i, T_i and ζ
-  /// of mixture_cooling_state(mixture, scheme, hcs_order) in the operator, the sources and ζ.
-  MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian;
-  /// K: the cumulants a_2 … a_K (an integer in [2, 6]); ignored by the Maxwellian reference.
-  int hcs_order = 2;
-};
-
 /// The linearised Boltzmann operator of a dilute mixture in Sonine polynomials, built once (exact
 /// engine moments rounded to double) and solved at any order up to max_order.
 class MixtureNavierStokes {
