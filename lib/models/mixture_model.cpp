@@ -255,7 +255,7 @@ class MixtureModel final : public TransportModel {
       }
       const auto k = static_cast<std::size_t>(i > 0 ? i - 1 : 0);
       if (kind == Kind::tracer_diffusion) {
-        out.push_back(tracer_diffusion(mixture, k, order));
+        out.push_back(tracer_diffusion(mixture, k, order, transport.reference));
         continue;
       }
       // The HCS carries a_2 … a_K (K = hcs_order) whatever the transport order. The errors of ζ* and
@@ -354,9 +354,10 @@ class MixtureModel final : public TransportModel {
     return best;
   }
 
-  /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the
-  /// requested order or tolerance; error from the next two orders.
-  static CoefficientValue tracer_diffusion(const Mixture& m, std::size_t k, const OrderRequest& order) {
+  /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5) about the
+  /// `reference` (§17.10), at the requested order or tolerance; error from the next two orders.
+  static CoefficientValue tracer_diffusion(const Mixture& m, std::size_t k, const OrderRequest& order,
+                                           const MixtureReference& reference) {
     const std::string name = "tracer_diffusion_" + std::to_string(k + 1);
     if (m.size() != 2) throw std::invalid_argument("coefficients: " + name + " needs exactly 2 species");
     if (m.packing_fraction > 0)
@@ -369,7 +370,8 @@ class MixtureModel final : public TransportModel {
     std::optional<TracerDiffusion> diffusion;
     return detail::choose_order(order, kMaxOrder, [&](int n) {
       if (!diffusion || diffusion->max_order() < n + 2)
-        diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(n + 2, diffusion ? 2 * diffusion->max_order() : 6)));
+        diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(n + 2, diffusion ? 2 * diffusion->max_order() : 6)),
+                          reference);
       detail::OrderValue v;
       v.exact = false;
       // Undefined (no positive D*, e.g. a heavy tracer at strong dissipation) unless orders n … n+2
