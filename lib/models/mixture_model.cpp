@@ -215,8 +215,7 @@ class MixtureModel final : public TransportModel {
     const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
                                     : hcs == "linear"   ? MixtureHcsScheme::linear
                                                         : MixtureHcsScheme::nonlinear;
-    // f0 of the transport coefficients: Maxwellian (GDH) or this HCS with a_2 … a_K (theory.md §17.10).
-    if (p.choice("reference_state") == "hcs") transport.reference = {scheme, hcs_k};
+
     struct Parsed {
       Kind kind;
       int i, cumulant;  // species from 1 (0: none), cumulant index (0: none)
@@ -241,6 +240,18 @@ class MixtureModel final : public TransportModel {
         picks.push_back({q.kind == Kind::cooling_rate ? -1 : q.i - 1, q.cumulant});
     const std::string memo = scan ? memo_key(point) : std::string();
     const int scan_k = picks.empty() ? 0 : common_hcs_order(mixture, scheme, memo, picks, *tolerance);
+    // f0 of the transport coefficients: Maxwellian (GDH) or this HCS with a_2 … a_K (theory.md §17.10), K =
+    // hcs_order or, with a tolerance and no hcs_order, the smallest K at which ζ*, every T_i/T and every
+    // a2,i differ from their values at K + 1 by less than the tolerance (the scan above).
+    if (p.choice("reference_state") == "hcs") {
+      int k = hcs_k;
+      if (scan) {
+        std::vector<HcsPick> all{{-1, 0}};
+        for (int i = 0; i < s; ++i) all.push_back({i, 0}), all.push_back({i, 2});
+        k = common_hcs_order(mixture, scheme, memo_key(point), all, *tolerance);
+      }
+      transport.reference = {scheme, k};
+    }
     for (const auto& c : coefficients) {
       const Parsed parsed = parse(c);
       const Kind kind = parsed.kind;
