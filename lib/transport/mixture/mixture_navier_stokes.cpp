@@ -10,7 +10,6 @@
 #include <Eigen/Dense>
 
 #include "algebra/nearby_rational.hpp"
-#include "gkt/algebra/sonine.hpp"
 #include "gkt/collision/collision_moments.hpp"
 #include "gkt/operators/linearized_operator.hpp"
 #include "gkt/operators/mixture_collisional_transfer.hpp"
