@@ -1,4 +1,4 @@
-// The mixture's Navier–Stokes solution about an HCS with cumulants in f⁰ (theory.md §17.10):
+// The mixture's Navier–Stokes solution about an HCS with cumulants in f⁰ (theory.md §17.11):
 // identical species equal the one-component gas of §10 (which keeps the a_k in f⁰) at every
 // Sonine order and HCS order; α = 1 and the Maxwellian reference are unchanged; the cumulant
 // reference's density derivatives against the exact Maxwellian ones; the tracer limit.
@@ -97,7 +97,7 @@ TEST(MixtureReference, ElasticGasIsUnchanged) {
   }
 }
 
-// The stencil derivatives of the reference (theory.md §17.10): for the Maxwellian scheme they equal the
+// The stencil derivatives of the reference (theory.md §17.11): for the Maxwellian scheme they equal the
 // exact implicit derivatives of §16.6 (the stencil and its ν0 ∝ n σ̄^{d−1} m̄^{−1/2} scaling, ternary with a
 // restitution matrix, d = 2, 3; a tracer takes the one-sided stencil); with cumulants they obey Euler's
 // relations for a function of the composition times n (Σ_j x_j n∂_j ln γ_i = 0, Σ_j x_j n∂_j a_k,i = 0,
@@ -195,7 +195,7 @@ TEST(MixtureReference, FluxesOfATernarySumToZero) {
 // its own f⁰ (TracerDiffusion with the same reference: the Lorentz operator alone, no constraint row,
 // the tracer's units) equals D_self of the identical-species mixture; and a tracer of unequal mass,
 // size and restitution at x_1 = 0 of the mixture equals the Boltzmann–Lorentz solution at every
-// order (theory.md §16.5 with (17.16)).
+// order (theory.md §16.5 with (17.19)).
 TEST(MixtureReference, SelfAndTracerDiffusionEqualTheLorentzSolution) {
   for (int d : {2, 3}) {
     for (int K : {2, 3}) {

@@ -289,7 +289,7 @@ TEST(ModelFacade, ToleranceDrivesTheMixtureHcsOrder) {
   EXPECT_GT(k2[0].error.to_double(), 1e-3);
 }
 
-// reference_state = "hcs" (theory.md §17.10): a mixture of identical species gives the smooth-inelastic
+// reference_state = "hcs" (theory.md §17.11): a mixture of identical species gives the smooth-inelastic
 // model's η* and κ* (its first order keeps a2 of the nonlinear HCS in f0) to round-off; the default
 // (Maxwellian, GDH) does not; a dense mixture with the cumulant reference is refused naming the key.
 TEST(ModelFacade, MixtureReferenceStateHcsIsTheOneComponentGas) {

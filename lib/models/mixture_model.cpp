@@ -240,7 +240,7 @@ class MixtureModel final : public TransportModel {
         picks.push_back({q.kind == Kind::cooling_rate ? -1 : q.i - 1, q.cumulant});
     const std::string memo = scan ? memo_key(point) : std::string();
     const int scan_k = picks.empty() ? 0 : common_hcs_order(mixture, scheme, memo, picks, *tolerance);
-    // f0 of the transport coefficients: Maxwellian (GDH) or this HCS with a_2 … a_K (theory.md §17.10), K =
+    // f0 of the transport coefficients: Maxwellian (GDH) or this HCS with a_2 … a_K (theory.md §17.11), K =
     // hcs_order or, with a tolerance and no hcs_order, the smallest K at which ζ*, every T_i/T and every
     // a2,i differ from their values at K + 1 by less than the tolerance (the scan above).
     if (p.choice("reference_state") == "hcs") {
@@ -366,7 +366,7 @@ class MixtureModel final : public TransportModel {
   }
 
   /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5) about the
-  /// `reference` (§17.10), at the requested order or tolerance; error from the next two orders.
+  /// `reference` (§17.11), at the requested order or tolerance; error from the next two orders.
   static CoefficientValue tracer_diffusion(const Mixture& m, std::size_t k, const OrderRequest& order,
                                            const MixtureReference& reference) {
     const std::string name = "tracer_diffusion_" + std::to_string(k + 1);

@@ -40,7 +40,7 @@ std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, c
                                                                 int k_max, const Rational& power = Rational(0));
 
 /// The weighted gain − loss moments of one collision pair (species i at v1, j at v2) for a
-/// reference f_i, f_j carrying Sonine cumulants (docs/theory.md §17.10), k = 0..k_max, p, q = 0..n_max:
+/// reference f_i, f_j carrying Sonine cumulants (docs/theory.md §17.11), k = 0..k_max, p, q = 0..n_max:
 ///   self[k](p, q)  = ⟨S_k(X2) ψ_q(c1) · [ψ_p(c1') − ψ_p(c1)]⟩/J0  (the unknown at v1, the partner weighted),
 ///   cross[k](p, q) = ⟨S_k(X1) ψ_q(c2) · [ψ_p(c1') − ψ_p(c1)]⟩/J0  (the unknown at v2, the test's own species
 ///   weighted),

@@ -521,7 +521,7 @@ MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, co
   return out;
 }
 
-/// The HCS density derivatives of a cumulant reference at fixed T (theory.md §17.10): n ∂ln γ_i/∂n_j,
+/// The HCS density derivatives of a cumulant reference at fixed T (theory.md §17.11): n ∂ln γ_i/∂n_j,
 /// n (∂ζ/∂n_j)/ν0 (ν0 held at the state) and n ∂a_k,i/∂n_j, by a five-point stencil in n_j (step 10⁻³ n;
 /// one-sided when x_j < 2·10⁻³) of the solved HCS. In the dilute gas the reduced HCS depends on the
 /// composition only, and ζ = ζ*(x) ν0 with ν0 ∝ n σ̄^{d−1} (T/m̄)^{1/2}.

@@ -60,7 +60,7 @@ Eigen::MatrixXd leading_blocks(const Eigen::MatrixXd& m, std::size_t s, int full
   return out;
 }
 
-/// The weighted version of add_pair for a reference with cumulants (theory.md §17.10): the partner's
+/// The weighted version of add_pair for a reference with cumulants (theory.md §17.11): the partner's
 /// f_j carries Σ_k a_k,j S_k(X_j) in the self part, particle 1's f_i carries Σ_k a_k,i S_k(X_i) in the cross part.
 void add_weighted_pair(Eigen::MatrixXd& self, Eigen::MatrixXd& cross, const CollisionPair& pair, const Rational& alpha,
                        int rank, int n_max, std::size_t i, std::size_t j, double weight_self, double weight_other,
@@ -124,7 +124,7 @@ struct MixtureNavierStokes::Impl {
   int dimension_;
   MixtureCoolingState state_;
   MixtureCoolingSensitivity sensitivity_;
-  // Cumulant reference (theory.md §17.10): a_k,i at [i][k] (empty when Maxwellian), n ∂a_k,i/∂n_j at
+  // Cumulant reference (theory.md §17.11): a_k,i at [i][k] (empty when Maxwellian), n ∂a_k,i/∂n_j at
   // [i·s + j][k], and the source averages of the k ≥ 2 terms.
   std::vector<std::vector<double>> cumulants_, cumulant_sensitivity_;
   detail::CumulantSources cumulant_sources_;
@@ -297,7 +297,7 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
   for (std::size_t i = 0; i < s_; ++i)  // (17.5), (18.4): −x_i θ_i^{−1/2} ⟨x S_p (x − d/2 − θ_i p*)⟩, x − d/2 = 1 − S_1
     sa.segment(static_cast<Eigen::Index>(i) * n, n) = -(per_particle ? 1.0 : fraction_[i]) / std::sqrt(theta_[i]) *
                                                       ((1 - theta_[i] * pressure_) * mv.col(0) - mv.col(1));
-  // Cumulant reference (theory.md (17.17)): the k ≥ 2 terms of f_i^(0) = f_M,i Σ_k a_k,i S_k(X_i).
+  // Cumulant reference (theory.md (17.20)): the k ≥ 2 terms of f_i^(0) = f_M,i Σ_k a_k,i S_k(X_i).
   auto cumulant_term = [&](const std::vector<std::vector<double>>& table, const std::vector<double>& a, int p) {
     double acc = 0;
     for (std::size_t k = 2; k < a.size(); ++k) acc += a[k] * table[static_cast<std::size_t>(p)][k];
@@ -579,7 +579,7 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order) const 
     const auto I = static_cast<Eigen::Index>(i) * nt;
     kc.block(I, I, nt, nt) += zeta_ * tensor_d_.topLeftCorner(nt, nt);
     sc.segment(I, nt) = -2 * fraction_[i] * (d - 1.0) / d * ft;
-    if (!cumulants_.empty())  // (17.17): ⟨x² S_p (S_k − S_k')⟩ of the k ≥ 2 terms
+    if (!cumulants_.empty())  // (17.20): ⟨x² S_p (S_k − S_k')⟩ of the k ≥ 2 terms
       for (int p = 0; p < nt; ++p)
         for (std::size_t k = 2; k < cumulants_[i].size(); ++k)
           sc(I + p) -= 2 * fraction_[i] * (d - 1.0) / d * cumulants_[i][k] *

@@ -74,7 +74,7 @@ TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order, MixtureRef
         matrix_[p][q] = zeta * pieces.d[p][q].to_double() + w * (loss(p, q) - gain(p, q)).to_double();
     return;
   }
-  // Cumulant reference (theory.md §17.10): the host's f carries Σ_k a_k,h S_k(X2) in the Lorentz
+  // Cumulant reference (theory.md §17.11): the host's f carries Σ_k a_k,h S_k(X2) in the Lorentz
   // operator, the tracer's f⁰ = f_M,0 Σ_k a_k,0 S_k(X1) in the source −v·∇f⁰ = −(v/n0) f⁰ ∇n0.
   const std::vector<double>&host = hcs.cumulants[1], &own = hcs.cumulants[0];
   // The weighted moments also hold the cross part, whose contraction needs √θ0 rational: the width

@@ -31,7 +31,7 @@ enum class MixtureHcsScheme {
   nonlinear,   ///< the same f_i with the products a_k,i a_l,j (and ζ_i a_k,i) kept
 };
 
-/// The species distributions f_i^(0) a Chapman–Enskog solution is built about (theory.md §17.10):
+/// The species distributions f_i^(0) a Chapman–Enskog solution is built about (theory.md §17.11):
 /// MixtureNavierStokes and TracerDiffusion.
 struct MixtureReference {
   /// maxwellian: every f_i^(0) Maxwellian at T_i, as [garzo2002mixture] and [garzo2007mixture] (the
@@ -112,7 +112,7 @@ MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, co
 /// Returns the derivatives of the dilute mixture's HCS in the `reference` scheme (K = hcs_order) with respect
 /// to the partial densities at fixed T — n ∂ln γ_i/∂n_j and n (∂ζ/∂n_j)/ν0 as above — and, if
 /// `cumulant_derivatives` is given, n ∂a_k,i/∂n_j at [i·s + j][k] (k = 0 … K), by a five-point stencil in n_j
-/// of the solved HCS (step 10⁻³ n, one-sided when x_j < 2·10⁻³; theory.md §17.10). Throws
+/// of the solved HCS (step 10⁻³ n, one-sided when x_j < 2·10⁻³; theory.md §17.11). Throws
 /// std::invalid_argument naming the field for φ > 0 or bad input, or if a stencil state does not converge.
 MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureReference& reference,
                                                       std::vector<std::vector<double>>* cumulant_derivatives = nullptr);

@@ -82,10 +82,10 @@ class MixtureNavierStokes {
   [[nodiscard]] int max_order() const;
   /// Returns the HCS the coefficients are built about (its cumulants are those in f^(0)).
   [[nodiscard]] const MixtureCoolingState& cooling_state() const;
-  /// Returns the HCS density derivatives used in the sources (theory.md §16.6; §17.10 for a cumulant reference).
+  /// Returns the HCS density derivatives used in the sources (theory.md §16.6; §17.11 for a cumulant reference).
   [[nodiscard]] const MixtureCoolingSensitivity& cooling_sensitivity() const;
   /// Returns n ∂a_k,i/∂n_j at [i·s + j][k] (k = 0 … K; empty for the Maxwellian reference): the
-  /// cumulants' density derivatives in the ∇n_j sources (theory.md §17.10).
+  /// cumulants' density derivatives in the ∇n_j sources (theory.md §17.11).
   [[nodiscard]] const std::vector<std::vector<double>>& cumulant_sensitivity() const;
 
  private:

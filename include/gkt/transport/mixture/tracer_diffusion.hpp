@@ -29,7 +29,7 @@ class TracerDiffusion {
  public:
   /// Builds the operator for `tracer` (validated) up to `max_order` Sonine polynomials
   /// (c S_0 … c S_{N−1}), about the host's HCS in the `reference` (Maxwellian tracer and host by
-  /// default; with cumulants, the host's f carries its a_k and the tracer's f⁰ its own, theory.md §17.10).
+  /// default; with cumulants, the host's f carries its a_k and the tracer's f⁰ its own, theory.md §17.11).
   TracerDiffusion(const Tracer& tracer, int max_order, MixtureReference reference = {});
   /// Returns D0* = D0/D_ref at order N ≤ max_order, D_ref = (dΓ(d/2)/(4π^{(d−1)/2}))√(T/m)/(nσ^{d−1})
   /// the host's first-approximation self-diffusion coefficient (flux of tracer number −D0 ∇n0).
