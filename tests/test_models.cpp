@@ -329,3 +329,72 @@ TEST(ModelFacade, TailSchemeThroughTheModel) {
   EXPECT_TRUE(contains(refusal([&] { (void)model->closed_form(p, "shear_viscosity", 1); }),
                        "scheme: \"tail\" is numerical and has no closed forms"));
 }
+
+// reference_state = "hcs" (theory.md §17.11): a mixture of identical species gives the smooth-inelastic
+// model's η* and κ* (its first order keeps a2 of the nonlinear HCS in f0) to round-off; the default
+// (Maxwellian, GDH) does not; a dense mixture with the cumulant reference is refused naming the key.
+TEST(ModelFacade, MixtureReferenceStateHcsIsTheOneComponentGas) {
+  auto mixture = gkt::make_transport_model("mixture");
+  auto one = gkt::make_transport_model("smooth-inelastic");
+  ParameterPoint p = binary();
+  p.numbers["mass_2"] = Rational(1);
+  p.numbers["fraction_1"] = Rational(3, 10);
+  p.numbers["fraction_2"] = Rational(7, 10);
+  p.numbers["alpha"] = Rational(4, 5);
+  p.choices["hcs"] = "nonlinear";
+  ParameterPoint q;
+  q.numbers["alpha"] = Rational(4, 5);
+  const auto expected = one->evaluate(q, {"shear_viscosity", "thermal_conductivity"}, {1, std::nullopt});
+  const auto gdh = mixture->evaluate(p, {"shear_viscosity", "thermal_conductivity"}, {1, std::nullopt});
+  p.choices["reference_state"] = "hcs";
+  const auto got = mixture->evaluate(p, {"shear_viscosity", "thermal_conductivity"}, {1, std::nullopt});
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double e = expected[k].value.to_double();
+    EXPECT_NEAR(got[k].value.to_double(), e, 1e-12 * e) << k;
+  }
+  EXPECT_GT(std::abs(gdh[1].value.to_double() / expected[1].value.to_double() - 1), 0.02);
+  p.numbers["packing_fraction"] = Rational(1, 5);
+  EXPECT_TRUE(contains(refusal([&] {
+                         mixture->evaluate(p, {"shear_viscosity"}, {1, std::nullopt});
+                       }),
+                       "reference_state:"));
+  p.numbers["packing_fraction"] = Rational(0);
+  p.choices["scheme"] = "published";  // GDH's truncation is about Maxwellians: refused, not mixed
+  EXPECT_TRUE(contains(refusal([&] {
+                         mixture->evaluate(p, {"shear_viscosity"}, {1, std::nullopt});
+                       }),
+                       "reference_state: \"hcs\" cannot be combined with scheme = \"published\""));
+}
+
+// With reference_state = "hcs", a tolerance and no hcs_order, the reference's K is the smallest at which
+// ζ*, every T_i/T and every a2,i differ from their values at K + 1 by less than the tolerance; the
+// transport value is then the one with that hcs_order given.
+TEST(ModelFacade, ToleranceDrivesTheMixtureReferenceOrder) {
+  auto model = gkt::make_transport_model("mixture");
+  ParameterPoint p = binary();
+  p.numbers["mass_2"] = Rational(4);
+  p.numbers["alpha"] = Rational(4, 5);
+  p.choices["reference_state"] = "hcs";
+  gkt::Mixture m = gkt::make_mixture(3, {{1, 1, 0.5, ""}, {4, 1, 0.5, ""}}, 0.8);
+  auto state = [&](int k) { return gkt::mixture_cooling_state(m, gkt::MixtureHcsScheme::linear, k); };
+  const double tolerance = 1e-4;
+  int chosen = 2;
+  for (;; ++chosen) {
+    const auto here = state(chosen), next = state(chosen + 1);
+    double worst = std::abs(here.cooling_rate - next.cooling_rate);
+    for (std::size_t i = 0; i < 2; ++i)
+      worst = std::max({worst, std::abs(here.temperature_ratio[i] - next.temperature_ratio[i]),
+                        std::abs(here.cumulants[i][2] - next.cumulants[i][2])});
+    if (worst < tolerance) break;
+  }
+  ASSERT_GT(chosen, 2);  // K = 2 does not meet the tolerance: the scan has work to do
+  ParameterPoint fixed = p;
+  fixed.numbers["hcs_order"] = Rational(chosen);
+  const gkt::OrderRequest request{1, std::nullopt};
+  gkt::OrderRequest scanned = request;
+  scanned.row_tolerance = Rational(1, 10000);
+  const double expected = model->evaluate(fixed, {"thermal_conductivity"}, request)[0].value.to_double();
+  EXPECT_DOUBLE_EQ(model->evaluate(p, {"thermal_conductivity"}, scanned)[0].value.to_double(), expected);
+  fixed.numbers["hcs_order"] = Rational(2);
+  EXPECT_NE(model->evaluate(fixed, {"thermal_conductivity"}, request)[0].value.to_double(), expected);
+}

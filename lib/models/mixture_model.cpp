@@ -92,6 +92,10 @@ class MixtureModel final : public TransportModel {
                             "(Maxwellian-weighted trial functions, all coupled) or Garzo-Hrenya-Dufty's published "
                             "first Sonine (order 1: mass flux solved alone, partial temperatures dropped)",
                             {"standard", "published"}),
+        detail::choice_spec("reference_state",
+                            "species distributions f0 of the Navier-Stokes coefficients: Maxwellian at T_i (GDH) or "
+                            "the HCS of `hcs` with its cumulants a_2 ... a_K (K = hcs_order; dilute only)",
+                            {"maxwellian", "hcs"}),
         {"hcs_order",
          ParameterSpec::Kind::integer,
          Rational(2),
@@ -133,7 +137,7 @@ class MixtureModel final : public TransportModel {
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     std::vector<ParameterSpec> specs;
     for (const auto& spec : parameters())
-      if (spec.name != "reduced_gravity") specs.push_back(spec);
+      if (spec.name != "reduced_gravity" && spec.name != "reference_state") specs.push_back(spec);
     const ParameterSpec a2 = detail::evolution_a2_spec(2);  // the union of both dimensions' ranges; evolve() checks d's
     for (int i = 1; i <= kMaxSpecies; ++i) {
       specs.push_back(real(index_name("temperature_ratio", i), Rational(0), false, Rational(1000000L), true,
@@ -214,6 +218,10 @@ class MixtureModel final : public TransportModel {
     TransportCache transport;                                        // built once, if a transport value is asked for
     transport.gravity = p.number("reduced_gravity").to_double();
     transport.published = p.choice("scheme") == "published";
+    const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
+                                    : hcs == "linear"   ? MixtureHcsScheme::linear
+                                                        : MixtureHcsScheme::nonlinear;
+
     struct Parsed {
       Kind kind;
       int i, cumulant;  // species from 1 (0: none), cumulant index (0: none)
@@ -228,9 +236,6 @@ class MixtureModel final : public TransportModel {
       }
       return q;
     };
-    const MixtureHcsScheme scheme = hcs == "maxwellian" ? MixtureHcsScheme::maxwellian
-                                    : hcs == "linear"   ? MixtureHcsScheme::linear
-                                                        : MixtureHcsScheme::nonlinear;
     // `tolerance` without `hcs_order` (first Sonine or more): one cumulant order K for every HCS value
     // of the call, the smallest at which successive K agree within it (theory.md §16.3).
     const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
@@ -241,6 +246,22 @@ class MixtureModel final : public TransportModel {
         picks.push_back({q.kind == Kind::cooling_rate ? -1 : q.i - 1, q.cumulant});
     const std::string memo = scan ? memo_key(point) : std::string();
     const int scan_k = picks.empty() ? 0 : common_hcs_order(mixture, scheme, memo, picks, *tolerance);
+    // f0 of the transport coefficients: Maxwellian (GDH) or this HCS with a_2 … a_K (theory.md §17.11), K =
+    // hcs_order or, with a tolerance and no hcs_order, the smallest K at which ζ*, every T_i/T and every
+    // a2,i differ from their values at K + 1 by less than the tolerance (the scan above).
+    if (p.choice("reference_state") == "hcs") {
+      if (transport.published)
+        throw std::invalid_argument(
+            "reference_state: \"hcs\" cannot be combined with scheme = \"published\" (GDH's first Sonine is "
+            "about Maxwellians); use reference_state = \"maxwellian\" or scheme = \"standard\"");
+      int k = hcs_k;
+      if (scan) {
+        std::vector<HcsPick> all{{-1, 0}};
+        for (int i = 0; i < s; ++i) all.push_back({i, 0}), all.push_back({i, 2});
+        k = common_hcs_order(mixture, scheme, memo_key(point), all, *tolerance);
+      }
+      transport.reference = {scheme, k};
+    }
     for (const auto& c : coefficients) {
       const Parsed parsed = parse(c);
       const Kind kind = parsed.kind;
@@ -255,7 +276,7 @@ class MixtureModel final : public TransportModel {
       }
       const auto k = static_cast<std::size_t>(i > 0 ? i - 1 : 0);
       if (kind == Kind::tracer_diffusion) {
-        out.push_back(tracer_diffusion(mixture, k, order));
+        out.push_back(tracer_diffusion(mixture, k, order, transport.reference));
         continue;
       }
       // The HCS carries a_2 … a_K (K = hcs_order) whatever the transport order. The errors of ζ* and
@@ -354,9 +375,10 @@ class MixtureModel final : public TransportModel {
     return best;
   }
 
-  /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5), at the
-  /// requested order or tolerance; error from the next two orders.
-  static CoefficientValue tracer_diffusion(const Mixture& m, std::size_t k, const OrderRequest& order) {
+  /// D* of species k as a tracer in the other species of a dilute binary (theory.md §16.5) about the
+  /// `reference` (§17.11), at the requested order or tolerance; error from the next two orders.
+  static CoefficientValue tracer_diffusion(const Mixture& m, std::size_t k, const OrderRequest& order,
+                                           const MixtureReference& reference) {
     const std::string name = "tracer_diffusion_" + std::to_string(k + 1);
     if (m.size() != 2) throw std::invalid_argument("coefficients: " + name + " needs exactly 2 species");
     if (m.packing_fraction > 0)
@@ -369,7 +391,8 @@ class MixtureModel final : public TransportModel {
     std::optional<TracerDiffusion> diffusion;
     return detail::choose_order(order, kMaxOrder, [&](int n) {
       if (!diffusion || diffusion->max_order() < n + 2)
-        diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(n + 2, diffusion ? 2 * diffusion->max_order() : 6)));
+        diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(n + 2, diffusion ? 2 * diffusion->max_order() : 6)),
+                          reference);
       detail::OrderValue v;
       v.exact = false;
       // Undefined (no positive D*, e.g. a heavy tracer at strong dissipation) unless orders n … n+2
@@ -394,6 +417,7 @@ class MixtureModel final : public TransportModel {
     std::optional<AtOrder> published_values;  ///< GDH's first Sonine (scheme = "published"), solved once
     double gravity = 0;                       ///< g* of the segregation criterion
     bool published = false;                   ///< scheme = "published" (theory.md §17.10)
+    MixtureReference reference;               ///< f0 of the coefficients (Maxwellian unless reference_state = "hcs")
 
     /// Returns GDH's published first-Sonine values (MixtureTruncation::published) of the point.
     const AtOrder& at_published(const Mixture& m) {
@@ -409,7 +433,8 @@ class MixtureModel final : public TransportModel {
     const AtOrder& at(const Mixture& m, int n) {
       if (const auto it = by_order.find(n); it != by_order.end()) return it->second;
       if (!operators || operators->max_order() < n)
-        operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)));
+        operators.emplace(m, std::min(kMaxOrder + 2, std::max(n, operators ? 2 * operators->max_order() : 6)),
+                          reference);
       AtOrder a{operators->coefficients(n), {NAN, NAN, NAN}};
       const MixtureTransportValues& v = a.values;
       if (v.shear_viscosity > 0 && v.thermal_conductivity > 0)

@@ -86,10 +86,12 @@ std::vector<DenseMatrix<Ring>> contract_weighted(const std::vector<std::vector<R
 }  // namespace
 
 template <class Ring>
-std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, const Ring& alpha, int rank, int n_max,
-                                                                int k_max, const Rational& power) {
+WeightedPairOperator<Ring> weighted_pair_operator_matrices(const CollisionPair& pair, const Ring& alpha, int rank,
+                                                           int n_max, int k_max, const Rational& power) {
   if (rank < 0 || rank > 2) throw std::invalid_argument("rank: must be 0, 1 or 2");
-  const CollisionPair pair{dimension, Rational(1), Rational(1), Rational(1), Rational(1)};
+  if (n_max < 0) throw std::invalid_argument("n_max: must be >= 0");
+  if (k_max < 0) throw std::invalid_argument("k_max: must be >= 0");
+  const int dimension = pair.dimension;
   const auto w = sonine_table(sonine_twice_m(dimension, 0), k_max);
   const auto s = sonine_table(sonine_twice_m(dimension, rank), n_max);
   const int e = rank == 2 ? 1 : 0;  // the trace term of Y_2·Y_2 needs one more power
@@ -97,7 +99,7 @@ std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, c
   const Rational self_factor = rank == 2 ? Rational(dimension - 1, static_cast<unsigned long>(dimension)) : Rational(1);
   const std::optional<std::pair<Slot, Slot>> none;
 
-  // Partner-weighted gain/loss with the unknown at a ∈ {v1, v2} and the test at b ∈ {v1', v1}.
+  // Weighted gain/loss with the unknown at a ∈ {v1, v2} and the test at b ∈ {v1', v1}.
   // (a) weight at v2, unknown v1, test v1'      (b) weight v2, unknown v1, test v1
   // (c) weight at v1, unknown v2, test v1'      (d) weight v1, unknown v2, test v1 (shares the X1 slot)
   const CollisionMomentTable<Ring> ta(pair, alpha, {Slot::v2, Slot::v1, Slot::v1_post}, {k_max, n_max + e, n_max + e},
@@ -138,16 +140,45 @@ std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, c
     v -= trace;
     return v;
   });
+  WeightedPairOperator<Ring> out;
+  for (int k = 0; k <= k_max; ++k) {
+    DenseMatrix<Ring> self(n_max + 1, n_max + 1), cross(n_max + 1, n_max + 1);
+    for (int p = 0; p <= n_max; ++p)
+      for (int q = 0; q <= n_max; ++q) {
+        self(p, q) = ma[k](p, q) - mb[k](p, q);
+        cross(p, q) = mc[k](p, q) - md[k](p, q);
+      }
+    out.self.push_back(std::move(self));
+    out.cross.push_back(std::move(cross));
+  }
+  return out;
+}
+
+template <class Ring>
+std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, const Ring& alpha, int rank, int n_max,
+                                                                int k_max, const Rational& power) {
+  if (rank < 0 || rank > 2) throw std::invalid_argument("rank: must be 0, 1 or 2");
+  const CollisionPair pair{dimension, Rational(1), Rational(1), Rational(1), Rational(1)};
+  // One species: L^(k) = (loss − gain) with the partner weighted, plus the same with the unknown at v2.
+  const auto m = weighted_pair_operator_matrices<Ring>(pair, alpha, rank, n_max, k_max, power);
   std::vector<DenseMatrix<Ring>> out;
   for (int k = 0; k <= k_max; ++k) {
     DenseMatrix<Ring> l(n_max + 1, n_max + 1);
     for (int p = 0; p <= n_max; ++p)
-      for (int q = 0; q <= n_max; ++q) l(p, q) = mb[k](p, q) + md[k](p, q) - ma[k](p, q) - mc[k](p, q);
+      for (int q = 0; q <= n_max; ++q) {
+        l(p, q) = Ring(0L);
+        l(p, q) -= m.self[k](p, q);
+        l(p, q) -= m.cross[k](p, q);
+      }
     out.push_back(std::move(l));
   }
   return out;
 }
 
+template WeightedPairOperator<Rational> weighted_pair_operator_matrices<Rational>(const CollisionPair&, const Rational&,
+                                                                                  int, int, int, const Rational&);
+template WeightedPairOperator<RationalPolynomial> weighted_pair_operator_matrices<RationalPolynomial>(
+    const CollisionPair&, const RationalPolynomial&, int, int, int, const Rational&);
 template std::vector<DenseMatrix<Rational>> hcs_linearized_operator_matrices<Rational>(int, const Rational&, int, int,
                                                                                        int, const Rational&);
 template std::vector<DenseMatrix<RationalPolynomial>> hcs_linearized_operator_matrices<RationalPolynomial>(

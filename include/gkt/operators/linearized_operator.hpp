@@ -14,6 +14,7 @@
 #include "gkt/algebra/dense_matrix.hpp"
 #include "gkt/algebra/rational.hpp"
 #include "gkt/algebra/rational_polynomial.hpp"
+#include "gkt/collision/collision_rule.hpp"
 
 namespace gkt {
 
@@ -38,9 +39,38 @@ template <class Ring>
 std::vector<DenseMatrix<Ring>> hcs_linearized_operator_matrices(int dimension, const Ring& alpha, int rank, int n_max,
                                                                 int k_max, const Rational& power = Rational(0));
 
+/// The weighted gain − loss moments of one collision pair (species i at v1, j at v2) for a
+/// reference f_i, f_j carrying Sonine cumulants (docs/theory.md §17.11), k = 0..k_max, p, q = 0..n_max:
+///   self[k](p, q)  = ⟨S_k(X2) ψ_q(c1) · [ψ_p(c1') − ψ_p(c1)]⟩/J0  (the unknown at v1, the partner weighted),
+///   cross[k](p, q) = ⟨S_k(X1) ψ_q(c2) · [ψ_p(c1') − ψ_p(c1)]⟩/J0  (the unknown at v2, the test's own species
+///   weighted),
+/// ψ_n = S_m^(n)(X) Y_rank(c) at each slot's width (X = θu², c = √θ u), S_k = S_{d/2−1}^(k), J0 the
+/// pair's reference_collision_integral. One species: L^(k) = −(self[k] + cross[k]).
+template <class Ring>
+struct WeightedPairOperator {
+  /// Per weight index k: the unknown at v1 with the partner weighted by S_k(X2).
+  std::vector<DenseMatrix<Ring>> self;
+  /// Per weight index k: the unknown at v2 with particle 1 weighted by S_k(X1).
+  std::vector<DenseMatrix<Ring>> cross;
+};
+
+/// Returns the weighted pair moments above, exact (Ring = Rational or RationalPolynomial in α). The
+/// contractions of odd rank need √(θ_iθ_j) rational, as in sonine_collision_moments. Throws
+/// std::invalid_argument on a bad rank, n_max or k_max.
+template <class Ring>
+WeightedPairOperator<Ring> weighted_pair_operator_matrices(const CollisionPair& pair, const Ring& alpha, int rank,
+                                                           int n_max, int k_max, const Rational& power = Rational(0));
+
 /// Returns ν = √(2π) π^{d/2−1}/Γ(d/2), the factor between L and ⟨ψ_p, 𝓛ψ_q⟩/(nσ^{d−1}v0).
 double linearized_operator_prefactor(int dimension);
 
+/// Explicit instantiation for a numeric α (compiled once in the library).
+extern template WeightedPairOperator<Rational> weighted_pair_operator_matrices<Rational>(const CollisionPair&,
+                                                                                         const Rational&, int, int, int,
+                                                                                         const Rational&);
+/// Explicit instantiation for a symbolic α (compiled once in the library).
+extern template WeightedPairOperator<RationalPolynomial> weighted_pair_operator_matrices<RationalPolynomial>(
+    const CollisionPair&, const RationalPolynomial&, int, int, int, const Rational&);
 /// Explicit instantiation for a numeric α (compiled once in the library).
 extern template std::vector<DenseMatrix<Rational>> hcs_linearized_operator_matrices<Rational>(int, const Rational&, int,
                                                                                               int, int,

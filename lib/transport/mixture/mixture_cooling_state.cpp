@@ -521,4 +521,49 @@ MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, co
   return out;
 }
 
+/// The HCS density derivatives of a cumulant reference at fixed T (theory.md §17.11): n ∂ln γ_i/∂n_j,
+/// n (∂ζ/∂n_j)/ν0 (ν0 held at the state) and n ∂a_k,i/∂n_j, by a five-point stencil in n_j (step 10⁻³ n;
+/// one-sided when x_j < 2·10⁻³) of the solved HCS. In the dilute gas the reduced HCS depends on the
+/// composition only, and ζ = ζ*(x) ν0 with ν0 ∝ n σ̄^{d−1} (T/m̄)^{1/2}.
+MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureReference& reference,
+                                                      std::vector<std::vector<double>>* cumulant_derivatives) {
+  mixture.validate();
+  if (mixture.packing_fraction > 0)
+    throw std::invalid_argument("packing_fraction: the stencil HCS derivatives are for the dilute gas (0), got " +
+                                std::to_string(mixture.packing_fraction));
+  std::vector<std::vector<double>> local;
+  std::vector<std::vector<double>>& cumulants = cumulant_derivatives ? *cumulant_derivatives : local;
+  const std::size_t s = mixture.size();
+  const int d = mixture.dimension;
+  const auto K = static_cast<std::size_t>(reference.scheme == MixtureHcsScheme::maxwellian ? 2 : reference.hcs_order);
+  const double m_bar = mixture.mean_mass(), sigma_bar = mixture.mean_diameter(), h = 1e-3;
+  MixtureCoolingSensitivity out;
+  out.temperature_ratio.assign(s * s, 0.0);
+  out.cooling_rate.assign(s, 0.0);
+  cumulants.assign(s * s, std::vector<double>(K + 1, 0.0));
+  for (std::size_t j = 0; j < s; ++j) {
+    const bool central = mixture.species[j].fraction >= 2 * h;
+    const std::vector<int> steps = central ? std::vector<int>{-2, -1, 1, 2} : std::vector<int>{0, 1, 2, 3, 4};
+    const std::vector<double> weights =
+        central ? std::vector<double>{1, -8, 8, -1} : std::vector<double>{-25, 48, -36, 16, -3};
+    for (std::size_t m = 0; m < steps.size(); ++m) {
+      const double dn = steps[m] * h, w = weights[m] / (12 * h);
+      Mixture moved = mixture;
+      for (std::size_t k = 0; k < s; ++k)
+        moved.species[k].fraction = (mixture.species[k].fraction + (k == j ? dn : 0.0)) / (1 + dn);
+      const MixtureCoolingState state = mixture_cooling_state(moved, reference.scheme, reference.hcs_order);
+      if (!state.solved) throw std::invalid_argument("reference_state: the HCS did not converge near the state");
+      const double scale =
+          (1 + dn) * std::pow(moved.mean_diameter() / sigma_bar, d - 1) * std::sqrt(m_bar / moved.mean_mass());
+      out.cooling_rate[j] += w * state.cooling_rate * scale;
+      for (std::size_t i = 0; i < s; ++i) {
+        out.temperature_ratio[i * s + j] += w * std::log(state.temperature_ratio[i]);
+        for (std::size_t k = 2; k <= K && k < state.cumulants[i].size(); ++k)
+          cumulants[i * s + j][k] += w * state.cumulants[i][k];
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace gkt

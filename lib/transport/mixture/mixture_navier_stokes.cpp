@@ -11,9 +11,11 @@
 
 #include "algebra/nearby_rational.hpp"
 #include "gkt/collision/collision_moments.hpp"
+#include "gkt/operators/linearized_operator.hpp"
 #include "gkt/operators/mixture_collisional_transfer.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "transport/common/galerkin_pieces.hpp"
+#include "transport/mixture/cumulant_sources.hpp"
 
 namespace gkt {
 
@@ -58,12 +60,34 @@ Eigen::MatrixXd leading_blocks(const Eigen::MatrixXd& m, std::size_t s, int full
   return out;
 }
 
+/// The weighted version of add_pair for a reference with cumulants (theory.md §17.11): the partner's
+/// f_j carries Σ_k a_k,j S_k(X_j) in the self part, particle 1's f_i carries Σ_k a_k,i S_k(X_i) in the cross part.
+void add_weighted_pair(Eigen::MatrixXd& self, Eigen::MatrixXd& cross, const CollisionPair& pair, const Rational& alpha,
+                       int rank, int n_max, std::size_t i, std::size_t j, double weight_self, double weight_other,
+                       const std::vector<double>& a_i, const std::vector<double>& a_j) {
+  const auto block = static_cast<Eigen::Index>(n_max + 1);
+  const int k_max = static_cast<int>(a_i.size()) - 1;
+  const auto m = weighted_pair_operator_matrices<Rational>(pair, alpha, rank, n_max, k_max);
+  const auto I = static_cast<Eigen::Index>(i) * block, J = static_cast<Eigen::Index>(j) * block;
+  for (int p = 0; p <= n_max; ++p)
+    for (int q = 0; q <= n_max; ++q) {
+      double s_self = 0, s_cross = 0;
+      for (int k = 0; k <= k_max; ++k) {
+        const auto K = static_cast<std::size_t>(k);
+        if (a_j[K] != 0) s_self += a_j[K] * m.self[K](p, q).to_double();
+        if (a_i[K] != 0) s_cross += a_i[K] * m.cross[K](p, q).to_double();
+      }
+      self(I + p, I + q) -= weight_self * s_self;
+      cross(I + p, J + q) -= weight_other * s_cross;
+    }
+}
+
 }  // namespace
 
 /// The solver's state: the operator of every mode in Sonine blocks, built once, and what the sources
 /// need (HCS, masses, fractions; the dense gas's pair tables).
 struct MixtureNavierStokes::Impl {
-  Impl(const Mixture& mixture, int max_order);
+  Impl(const Mixture& mixture, int max_order, const MixtureReference& reference);
   /// MixtureNavierStokes::coefficients.
   [[nodiscard]] MixtureTransportValues coefficients(int order, MixtureTruncation truncation) const;
   /// The vector modes' solutions: heat = 𝒜 (∇ln T), density[j] = ℬ^j, each as the unknowns φ̃ of
@@ -104,6 +128,10 @@ struct MixtureNavierStokes::Impl {
   int dimension_;
   MixtureCoolingState state_;
   MixtureCoolingSensitivity sensitivity_;
+  // Cumulant reference (theory.md §17.11): a_k,i at [i][k] (empty when Maxwellian), n ∂a_k,i/∂n_j at
+  // [i·s + j][k], and the source averages of the k ≥ 2 terms.
+  std::vector<std::vector<double>> cumulants_, cumulant_sensitivity_;
+  detail::CumulantSources cumulant_sources_;
   int max_order_;
   std::size_t s_;
   std::size_t major_ = 0;  // the first most abundant species: its rows carry the conservation constraints
@@ -127,12 +155,24 @@ struct MixtureNavierStokes::Impl {
   double pressure_ = 1;
 };
 
-MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order)
+MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const MixtureReference& reference)
     : dimension_(mixture.dimension), max_order_(max_order), s_(mixture.size()) {
   mixture.validate();
   if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
-  state_ = mixture_cooling_state(mixture, MixtureHcsScheme::maxwellian);
-  sensitivity_ = mixture_cooling_sensitivity(mixture, state_);
+  const bool with_cumulants = reference.scheme != MixtureHcsScheme::maxwellian;
+  if (with_cumulants && mixture.packing_fraction > 0)
+    throw std::invalid_argument(
+        "reference_state: the HCS cumulants in f0 are implemented for the dilute gas only (packing_fraction = 0); "
+        "use the Maxwellian reference for the dense mixture");
+  state_ = mixture_cooling_state(mixture, reference.scheme, reference.hcs_order);
+  if (with_cumulants) {
+    if (!state_.solved) throw std::invalid_argument("reference_state: the HCS with cumulants did not converge");
+    cumulants_ = state_.cumulants;
+    sensitivity_ = mixture_cooling_sensitivity(mixture, reference, &cumulant_sensitivity_);
+    cumulant_sources_ = detail::cumulant_sources(mixture.dimension, max_order, max_order - 1, reference.hcs_order);
+  } else {
+    sensitivity_ = mixture_cooling_sensitivity(mixture, state_);
+  }
   const int d = mixture.dimension;
   const double c_d = geometric_factor(d);
   // Units n = 1, m̄ = 1, σ̄ = 1, velocity √(2T/m̄) = 1 (so T = 1/2): θ_k = m_k/γ_k. Lengths along a
@@ -173,9 +213,16 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order)
       rate_.push_back(rate);
       length_.push_back(n_star * sigma);
       alpha_.push_back(mixture.restitution(i, j));
-      add_pair(vector_self_, vector_cross_, pair, alpha, 1, nv - 1, i, j, rate * fraction_[j], rate);
-      add_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
-               rate * fraction_[i]);
+      if (with_cumulants) {
+        add_weighted_pair(vector_self_, vector_cross_, pair, alpha, 1, nv - 1, i, j, rate * fraction_[j], rate,
+                          cumulants_[i], cumulants_[j]);
+        add_weighted_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
+                          rate * fraction_[i], cumulants_[i], cumulants_[j]);
+      } else {
+        add_pair(vector_self_, vector_cross_, pair, alpha, 1, nv - 1, i, j, rate * fraction_[j], rate);
+        add_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
+                 rate * fraction_[i]);
+      }
       if (dense_) {
         add_pair(scalar_operator_, scalar_operator_, pair, alpha, 0, ns - 1, i, j, rate * fraction_[j],
                  rate * fraction_[i]);
@@ -254,6 +301,19 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
   for (std::size_t i = 0; i < s_; ++i)  // (17.5), (18.4): −x_i θ_i^{−1/2} ⟨x S_p (x − d/2 − θ_i p*)⟩, x − d/2 = 1 − S_1
     sa.segment(static_cast<Eigen::Index>(i) * n, n) = -(per_particle ? 1.0 : fraction_[i]) / std::sqrt(theta_[i]) *
                                                       ((1 - theta_[i] * pressure_) * mv.col(0) - mv.col(1));
+  // Cumulant reference (theory.md (17.20)): the k ≥ 2 terms of f_i^(0) = f_M,i Σ_k a_k,i S_k(X_i).
+  auto cumulant_term = [&](const std::vector<std::vector<double>>& table, const std::vector<double>& a, int p) {
+    double acc = 0;
+    for (std::size_t k = 2; k < a.size(); ++k) acc += a[k] * table[static_cast<std::size_t>(p)][k];
+    return acc;
+  };
+  const detail::CumulantSources& cs = cumulant_sources_;
+  if (!cumulants_.empty())
+    for (std::size_t i = 0; i < s_; ++i)
+      for (int p = 0; p < n; ++p)
+        sa(static_cast<Eigen::Index>(i) * n + p) -= (per_particle ? 1.0 : fraction_[i]) / std::sqrt(theta_[i]) *
+                                                    (cumulant_term(cs.temperature, cumulants_[i], p) +
+                                                     theta_[i] * pressure_ * cumulant_term(cs.drift, cumulants_[i], p));
   if (dense_) sa += transfer.heat;
   sa(major * n) = 0;
   out.heat = ka.partialPivLu().solve(sa);
@@ -271,6 +331,17 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
           -1 / std::sqrt(theta_[i]) *
               ((i == j ? 1.0 : 0.0) * mv.col(0) + x * (g * (mv.col(0) - mv.col(1)) - theta_[i] * dp * mv.col(0))) +
           dzeta * (mv * out.heat.segment(I, n));
+      if (!cumulants_.empty())
+        for (int p = 0; p < n; ++p) {
+          const std::vector<double>& a = cumulants_[i];
+          double da = 0;  // n ∂a_k,i/∂n_j ⟨x S_p S_k⟩
+          for (std::size_t k = 2; k < a.size(); ++k)
+            da += cumulant_sensitivity_[i * s_ + j][k] * cs.weight[static_cast<std::size_t>(p)][k];
+          sb(I + p) -=
+              1 / std::sqrt(theta_[i]) *
+              ((i == j ? 1.0 : 0.0) * cumulant_term(cs.weight, a, p) +
+               x * (g * cumulant_term(cs.temperature, a, p) + da + theta_[i] * dp * cumulant_term(cs.drift, a, p)));
+        }
     }
     if (dense_) sb += transfer.density[j];
     sb(major * n) = 0;
@@ -285,6 +356,12 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
     for (std::size_t i = 0; i < s_; ++i)
       sf.segment(static_cast<Eigen::Index>(i) * n, n) =
           2 * std::sqrt(theta_[i]) * fraction_[i] * ((i == j ? 1 / mass_[i] : 0.0) - fraction_[j]) * mv.col(0);
+    if (!cumulants_.empty())
+      for (std::size_t i = 0; i < s_; ++i)
+        for (int p = 0; p < n; ++p)
+          sf(static_cast<Eigen::Index>(i) * n + p) -= 2 * std::sqrt(theta_[i]) * fraction_[i] *
+                                                      ((i == j ? 1 / mass_[i] : 0.0) - fraction_[j]) *
+                                                      cumulant_term(cs.drift, cumulants_[i], p);
     sf(major * n) = 0;
     out.force.push_back(lf.solve(sf));
   }
@@ -527,6 +604,11 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
     const auto I = static_cast<Eigen::Index>(i) * nt;
     kc.block(I, I, nt, nt) += zeta_ * tensor_d_.topLeftCorner(nt, nt);
     sc.segment(I, nt) = -2 * fraction_[i] * (d - 1.0) / d * ft;
+    if (!cumulants_.empty())  // (17.20): ⟨x² S_p (S_k − S_k')⟩ of the k ≥ 2 terms
+      for (int p = 0; p < nt; ++p)
+        for (std::size_t k = 2; k < cumulants_[i].size(); ++k)
+          sc(I + p) -= 2 * fraction_[i] * (d - 1.0) / d * cumulants_[i][k] *
+                       cumulant_sources_.shear[static_cast<std::size_t>(p)][k];
   }
   if (dense_)  // (18.5): L R x_i x_j 2√θ_j ⟨⟨Δ[Y(c1) S_p] : σ̂c2⟩⟩
     for (std::size_t i = 0; i < s; ++i)
@@ -618,8 +700,8 @@ void MixtureNavierStokes::Impl::species_drift(int order, const Eigen::MatrixXd& 
   }
 }
 
-MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order)
-    : impl_(std::make_unique<Impl>(mixture, max_order)) {}
+MixtureNavierStokes::MixtureNavierStokes(const Mixture& mixture, int max_order, MixtureReference reference)
+    : impl_(std::make_unique<Impl>(mixture, max_order, reference)) {}
 MixtureNavierStokes::~MixtureNavierStokes() = default;
 MixtureNavierStokes::MixtureNavierStokes(const MixtureNavierStokes& other)
     : impl_(other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr) {}
@@ -639,5 +721,8 @@ MixtureTransportValues MixtureNavierStokes::coefficients(int order, MixtureTrunc
 int MixtureNavierStokes::max_order() const { return impl_->max_order_; }
 const MixtureCoolingState& MixtureNavierStokes::cooling_state() const { return impl_->state_; }
 const MixtureCoolingSensitivity& MixtureNavierStokes::cooling_sensitivity() const { return impl_->sensitivity_; }
+const std::vector<std::vector<double>>& MixtureNavierStokes::cumulant_sensitivity() const {
+  return impl_->cumulant_sensitivity_;
+}
 
 }  // namespace gkt

@@ -7,11 +7,14 @@
 
 #include <Eigen/Dense>
 
+#include "algebra/nearby_rational.hpp"
 #include "gkt/collision/collision_moments.hpp"
+#include "gkt/operators/linearized_operator.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "transport/common/alpha_polynomial.hpp"
 #include "transport/common/galerkin_pieces.hpp"
+#include "transport/mixture/cumulant_sources.hpp"
 
 namespace gkt {
 
@@ -36,10 +39,14 @@ void Tracer::validate() const {
   detail::require_restitution(alpha_host, "alpha_host");
 }
 
-TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order) : max_order_(max_order) {
+TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order, MixtureReference reference)
+    : max_order_(max_order) {
   tracer.validate();
   if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
-  const MixtureCoolingState hcs = mixture_cooling_state(as_mixture(tracer));
+  const MixtureCoolingState hcs = mixture_cooling_state(as_mixture(tracer), reference.scheme, reference.hcs_order);
+  const bool with_cumulants = reference.scheme != MixtureHcsScheme::maxwellian;
+  if (with_cumulants && !hcs.solved)
+    throw std::invalid_argument("reference_state: the HCS with cumulants did not converge");
   const int d = tracer.dimension;
   gamma_ = hcs.temperature_ratio[0];
   theta0_ = tracer.mass_ratio.value() / gamma_;  // θ = m/(2T) in units of the host's √(2T/m)
@@ -59,9 +66,34 @@ TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order) : max_orde
   // D0* = (√2 π^{(d−1)/2}/(θ0 Γ(d/2))) (M⁻¹)_00 (16.10); the tracer's velocity unit is 1/√θ0.
   prefactor_ = std::sqrt(2.0) * c / theta0_;
   matrix_.assign(static_cast<std::size_t>(max_order), std::vector<double>(static_cast<std::size_t>(max_order)));
+  source_.assign(static_cast<std::size_t>(max_order), 0.0);
+  source_[0] = 1;
+  if (!with_cumulants) {
+    for (int p = 0; p < max_order; ++p)
+      for (int q = 0; q < max_order; ++q)
+        matrix_[p][q] = zeta * pieces.d[p][q].to_double() + w * (loss(p, q) - gain(p, q)).to_double();
+    return;
+  }
+  // Cumulant reference (theory.md §17.11): the host's f carries Σ_k a_k,h S_k(X2) in the Lorentz
+  // operator, the tracer's f⁰ = f_M,0 Σ_k a_k,0 S_k(X1) in the source −v·∇f⁰ = −(v/n0) f⁰ ∇n0.
+  const std::vector<double>&host = hcs.cumulants[1], &own = hcs.cumulants[0];
+  // The weighted moments also hold the cross part, whose contraction needs √θ0 rational: the width
+  // becomes the square of a continued-fraction convergent of √θ0 (within 1e-12, as in MixtureNavierStokes).
+  const Rational root = detail::nearby_rational(std::sqrt(theta0_), 1L << 26);
+  const CollisionPair rational_pair{d, tracer.mass_ratio.exact(), Rational(1), root * root, Rational(1)};
+  const auto weighted =
+      weighted_pair_operator_matrices<Rational>(rational_pair, alpha, 1, n, static_cast<int>(host.size()) - 1);
   for (int p = 0; p < max_order; ++p)
-    for (int q = 0; q < max_order; ++q)
-      matrix_[p][q] = zeta * pieces.d[p][q].to_double() + w * (loss(p, q) - gain(p, q)).to_double();
+    for (int q = 0; q < max_order; ++q) {
+      double lorentz = 0;
+      for (std::size_t k = 0; k < host.size(); ++k)
+        if (host[k] != 0) lorentz -= host[k] * weighted.self[k](p, q).to_double();
+      matrix_[p][q] = zeta * pieces.d[p][q].to_double() + w * lorentz;
+    }
+  const auto averages = detail::cumulant_sources(d, n, 0, static_cast<int>(own.size()) - 1);
+  for (int p = 0; p < max_order; ++p)
+    for (std::size_t k = 2; k < own.size(); ++k)
+      source_[static_cast<std::size_t>(p)] += own[k] * averages.weight[static_cast<std::size_t>(p)][k] / (0.5 * d);
 }
 
 double TracerDiffusion::coefficient(int order) const {
@@ -70,8 +102,8 @@ double TracerDiffusion::coefficient(int order) const {
   Eigen::MatrixXd m(order, order);
   for (int p = 0; p < order; ++p)
     for (int q = 0; q < order; ++q) m(p, q) = matrix_[p][q];
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(order);
-  e(0) = 1;
+  Eigen::VectorXd e(order);
+  for (int p = 0; p < order; ++p) e(p) = source_[static_cast<std::size_t>(p)];
   const double inverse00 = m.partialPivLu().solve(e)(0);
   return prefactor_ * inverse00;
 }

@@ -31,6 +31,17 @@ enum class MixtureHcsScheme {
   nonlinear,   ///< the same f_i with the products a_k,i a_l,j (and ζ_i a_k,i) kept
 };
 
+/// The species distributions f_i^(0) a Chapman–Enskog solution is built about (theory.md §17.11):
+/// MixtureNavierStokes and TracerDiffusion.
+struct MixtureReference {
+  /// maxwellian: every f_i^(0) Maxwellian at T_i, as [garzo2002mixture] and [garzo2007mixture] (the
+  /// default); linear or nonlinear: f_i^(0) = f_M,i (1 + Σ_{k=2}^K a_k,i S_k(X_i)) with the a_k,i, T_i and ζ
+  /// of mixture_cooling_state(mixture, scheme, hcs_order) in the operator, the sources and ζ.
+  MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian;
+  /// K: the cumulants a_2 … a_K (an integer in [2, 6]); ignored by the Maxwellian reference.
+  int hcs_order = 2;
+};
+
 /// The mixture HCS.
 struct MixtureCoolingState {
   std::vector<double> temperature_ratio;       ///< γ_i = T_i/T
@@ -97,5 +108,13 @@ struct MixtureCoolingSensitivity {
 /// ζ_1 = … = ζ_s, Σ_k n_k γ_k = n (theory.md (16.11)), with the contact values' own density
 /// dependence in the dense gas (theory.md (18.1)); exact up to rounding.
 MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureCoolingState& state);
+
+/// Returns the derivatives of the dilute mixture's HCS in the `reference` scheme (K = hcs_order) with respect
+/// to the partial densities at fixed T — n ∂ln γ_i/∂n_j and n (∂ζ/∂n_j)/ν0 as above — and, if
+/// `cumulant_derivatives` is given, n ∂a_k,i/∂n_j at [i·s + j][k] (k = 0 … K), by a five-point stencil in n_j
+/// of the solved HCS (step 10⁻³ n, one-sided when x_j < 2·10⁻³; theory.md §17.11). Throws
+/// std::invalid_argument naming the field for φ > 0 or bad input, or if a stencil state does not converge.
+MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureReference& reference,
+                                                      std::vector<std::vector<double>>* cumulant_derivatives = nullptr);
 
 }  // namespace gkt

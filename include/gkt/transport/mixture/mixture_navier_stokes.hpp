@@ -70,11 +70,11 @@ enum class MixtureTruncation {
 /// engine moments rounded to double) and solved at any order up to max_order.
 class MixtureNavierStokes {
  public:
-  /// Builds the operator for `mixture` (validated) about its Maxwellian HCS, with vector trial
-  /// functions c S_0 … c S_max_order, tensor ones Y_2 S_0 … Y_2 S_{max_order−1} and, for φ > 0,
-  /// scalar ones S_1 … S_{max_order+1} per species. Throws std::invalid_argument naming the field
-  /// on bad input.
-  MixtureNavierStokes(const Mixture& mixture, int max_order);
+  /// Builds the operator for `mixture` (validated) about its HCS in the `reference` (Maxwellian by
+  /// default), with vector trial functions c S_0 … c S_max_order, tensor ones Y_2 S_0 … Y_2 S_{max_order−1}
+  /// and, for φ > 0, scalar ones S_1 … S_{max_order+1} per species. Throws std::invalid_argument naming
+  /// the field on bad input, and for a cumulant reference with φ > 0 (implemented for the dilute gas only).
+  MixtureNavierStokes(const Mixture& mixture, int max_order, MixtureReference reference = {});
   /// Copies carry the built operator (deep copy); a moved-from solver may only be assigned to or destroyed.
   ~MixtureNavierStokes();
   /// Deep copy, including the built operator.
@@ -95,10 +95,13 @@ class MixtureNavierStokes {
   [[nodiscard]] MixtureTransportValues coefficients(int order, MixtureTruncation truncation) const;
   /// Returns the largest Sonine order N the operator was built for (the constructor's max_order).
   [[nodiscard]] int max_order() const;
-  /// Returns the Maxwellian HCS the coefficients are built about.
+  /// Returns the HCS the coefficients are built about (its cumulants are those in f^(0)).
   [[nodiscard]] const MixtureCoolingState& cooling_state() const;
-  /// Returns the HCS density derivatives used in the sources (theory.md §16.6).
+  /// Returns the HCS density derivatives used in the sources (theory.md §16.6; §17.11 for a cumulant reference).
   [[nodiscard]] const MixtureCoolingSensitivity& cooling_sensitivity() const;
+  /// Returns n ∂a_k,i/∂n_j at [i·s + j][k] (k = 0 … K; empty for the Maxwellian reference): the
+  /// cumulants' density derivatives in the ∇n_j sources (theory.md §17.11).
+  [[nodiscard]] const std::vector<std::vector<double>>& cumulant_sensitivity() const;
 
  private:
   struct Impl;  // the operator blocks (Eigen) and the dense gas's pair tables (mixture_navier_stokes.cpp)

@@ -7,6 +7,7 @@
 
 #include "gkt/algebra/exact_value.hpp"
 #include "gkt/transport/common/sonine_solution.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
 
 namespace gkt {
 
@@ -27,14 +28,15 @@ struct Tracer {
 class TracerDiffusion {
  public:
   /// Builds the operator for `tracer` (validated) up to `max_order` Sonine polynomials
-  /// (c S_0 … c S_{N−1}).
-  TracerDiffusion(const Tracer& tracer, int max_order);
+  /// (c S_0 … c S_{N−1}), about the host's HCS in the `reference` (Maxwellian tracer and host by
+  /// default; with cumulants, the host's f carries its a_k and the tracer's f⁰ its own, theory.md §17.11).
+  TracerDiffusion(const Tracer& tracer, int max_order, MixtureReference reference = {});
   /// Returns D0* = D0/D_ref at order N ≤ max_order, D_ref = (dΓ(d/2)/(4π^{(d−1)/2}))√(T/m)/(nσ^{d−1})
   /// the host's first-approximation self-diffusion coefficient (flux of tracer number −D0 ∇n0).
   [[nodiscard]] double coefficient(int order) const;
   /// Returns D0* at `order` with its truncation error from orders +1, +2 (order ≤ max_order − 2).
   [[nodiscard]] TruncationEstimate estimate(int order) const;
-  /// Returns γ0 = T0/T of the tracer in the host's HCS (both Maxwellian; ζ0 = ζ_host, (16.4) with x0 = 0).
+  /// Returns γ0 = T0/T of the tracer in the host's HCS (ζ0 = ζ_host; (16.4) with x0 = 0 when Maxwellian).
   [[nodiscard]] double temperature_ratio() const { return gamma_; }
   /// Returns the largest Sonine order the operator was built for (the constructor's max_order).
   [[nodiscard]] int max_order() const { return max_order_; }
@@ -43,6 +45,7 @@ class TracerDiffusion {
   int max_order_;
   double gamma_ = 1, theta0_ = 1, prefactor_ = 1;
   std::vector<std::vector<double>> matrix_;  // M(p, q), p, q < max_order: (16.9)
+  std::vector<double> source_;               // the tracer's ⟨x S_p φ_0⟩/(d/2): (1, 0, …) when Maxwellian
 };
 
 }  // namespace gkt
