@@ -21,10 +21,10 @@ struct RoughSonineCoolingState {
   int order = 1;                 ///< N: the cumulants a_pq with 2 ≤ p + q ≤ N + 1
   double temperature_ratio = 1;  ///< θ = T_r/T_t (+inf when the spin decouples, β = −1)
   double cooling_rate = 0;       ///< ζ* = ζ/ν0 (conventions.md; the smooth gas's reduction)
-  /// The indices (p, q) and values of the cumulants, in the same order (q = 0 only at β = −1).
+  /// The indices (p, q) of the cumulants (q = 0 only at β = −1).
   std::vector<std::array<int, 2>> indices;
-  std::vector<double> cumulants;
-  bool spin_decoupled = false;  ///< β = −1: only a_p0; spin cumulants undefined
+  std::vector<double> cumulants;  ///< a_pq, in the order of `indices`
+  bool spin_decoupled = false;    ///< β = −1: only a_p0; spin cumulants undefined
   /// False when no real root with realizable fourth-degree cumulants was found (every field NaN).
   bool solved = true;
   /// Returns a_pq: 0 beyond the order (the truncation), NaN for a spin cumulant at β = −1 or when
