@@ -102,6 +102,10 @@ const std::string kShear =
     "model = \"uniform-shear\"\ndimension = 2\nalpha = 0.7\nparticles = 2000\ncollisions_per_particle = 40\n"
     "runs = 8\nseed = 23\n";
 
+const std::string kColumn =
+    "model = \"gravity-column\"\ndimension = 3\nalpha = 0.99\nparticles_per_area = 5\nfloor_value = 50\n"
+    "lid_height = 150\nsettle_time = 150\nsample_time = 150\nparticles = 3000\nruns = 4\nseed = 3\n";
+
 INSTANTIATE_TEST_SUITE_P(
     Cases, CliDsmcBadInput,
     ::testing::Values(
@@ -156,7 +160,26 @@ INSTANTIATE_TEST_SUITE_P(
         DsmcBadInput{"viscosity_haff", kSmooth + "viscosity_kicks = 2\n[output]\nhaff = true\n", "",
                      "viscosity_kicks: the shear viscosity is a summary column"},
         DsmcBadInput{"viscosity_shear_model", kShear, "--set viscosity_kicks=2",
-                     "viscosity_kicks: unknown key for gkt dsmc with model \"uniform-shear\""}));
+                     "viscosity_kicks: unknown key for gkt dsmc with model \"uniform-shear\""},
+        DsmcBadInput{"column_heat_flux_floor", kColumn, "--set floor=heat_flux",
+                     "floor: must be \"temperature\" for gkt dsmc with model \"gravity-column\""},
+        DsmcBadInput{"column_collisions", kColumn, "--set collisions_per_particle=10",
+                     "collisions_per_particle: unknown key for gkt dsmc with model \"gravity-column\""},
+        DsmcBadInput{"column_height", kColumn, "--set height=10", "height: unknown key for gkt dsmc"},
+        DsmcBadInput{"column_alpha", kColumn, "--set alpha=0", "alpha: must be a number in (0, 1]"},
+        DsmcBadInput{"column_lid", kColumn, "--set lid_height=-1", "lid_height: must be"},
+        DsmcBadInput{"column_floor_value", kColumn, "--set floor_value=0", "floor_value: must be"},
+        DsmcBadInput{"column_particles", kColumn, "--set particles=50", "particles: must be an integer in [100, "},
+        DsmcBadInput{"column_cells", kColumn, "--set cell_height=100",
+                     "cell_height: must give between 2 and 100000 cells"},
+        DsmcBadInput{"column_time_step", kColumn, "--set time_step=2", "time_step: must be a number in (0, 1]"},
+        DsmcBadInput{"column_sample_time", kColumn, "--set sample_time=0.05", "sample_time: must be at least 5"},
+        DsmcBadInput{"column_missing_sample_time",
+                     "model = \"gravity-column\"\ndimension = 3\nalpha = 0.99\nparticles_per_area = 5\n"
+                     "floor_value = 50\nlid_height = 150\nparticles = 3000\nruns = 4\nseed = 3\n",
+                     "", "sample_time: required"},
+        DsmcBadInput{"column_haff", kColumn + "[output]\nhaff = true\n", "",
+                     "output.haff: not available for model \"gravity-column\""}));
 
 // The runs are spread over threads, the table is not: --jobs 1 and --jobs 3 print the same bytes,
 // a second run with the same seed too, another seed something else.
@@ -321,6 +344,52 @@ TEST(CliDsmc, UniformShearAgreesWithTheDocumentedSteadyState) {
       EXPECT_NEAR(mean, doc.value[k], 4 * std::hypot(error, doc.error[k])) << "d = " << doc.d << " column " << k;
     }
     EXPECT_GT(rows[0][0] - doc.grad_gamma, 5 * rows[0][1]) << "d = " << doc.d << ": DSMC cannot tell γ from Grad's";
+  }
+  fs::remove_all(dir);
+}
+
+// The column in gravity (theory.md §23.3): one row per cell with n, T, q and their errors over the
+// runs, the same bytes for --jobs 1 and 2; below the Knudsen height (z ≈ 36σ) the profile follows
+// `gkt table` with model gravity-column given the DSMC's lowest-cell temperature as its floor (the
+// wall's Knudsen layer, theory.md §23.3), at 10.5, 20.5 and 30.5σ within 4 standard errors plus 4 %:
+// the documented deviation of the long runs (1–2 % in n, 1–2.5 % in T) plus ≈ 1.2 % from putting
+// the cell centred at 0.5σ at z = 0 (hydrodynamics' T falls that much in half a cell); an elastic
+// DSMC, isothermal at the wall's 50 mgσ, would miss T ≈ 28 at 30σ by more than half. The mass
+// N = ∫n dz = 5 within 0.5 %; the heat flux falls with height (the gas dissipates what the floor
+// gives it).
+TEST(CliDsmc, GravityColumnFollowsHydrodynamicsBelowTheKnudsenHeight) {
+  const fs::path dir = fresh_dir("column");
+  std::ofstream(dir / "scene.toml") << kColumn;
+  const std::string scene = (dir / "scene.toml").string();
+  const DsmcCliRun one = run_dsmc(dir, scene + " --jobs 1"), two = run_dsmc(dir, scene + " --jobs 2");
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_EQ(one.out, two.out);
+  EXPECT_EQ(one.out.substr(0, one.out.find('\n')),
+            "height,number_density,number_density_error,temperature,temperature_error,heat_flux,heat_flux_error");
+  const auto dsmc = numbers(one.out);
+  ASSERT_EQ(dsmc.size(), 150U);
+  double mass = 0;
+  for (const auto& r : dsmc) mass += r[1];
+  EXPECT_NEAR(mass, 5, 0.025);
+  EXPECT_GT(dsmc[0][5], 4 * dsmc[0][6]);
+  EXPECT_GT(dsmc[0][5], dsmc[30][5] + 4 * std::hypot(dsmc[0][6], dsmc[30][6]));
+  std::ofstream(dir / "table.toml") << "model = \"gravity-column\"\ndimension = 3\nalpha = 0.99\norder = 2\n"
+                                       "particles_per_area = 5\nlid_height = 150\nfloor = \"temperature\"\n"
+                                       "floor_value = "
+                                    << dsmc[0][3] << "\nheight = [10.5, 20.5, 30.5]\n"
+                                    << "coefficients = [\"number_density\", \"temperature\"]\n";
+  const std::string table_cmd =
+      std::string(GKT_CLI_PATH) + " table " + (dir / "table.toml").string() + " > " + (dir / "table.csv").string();
+  ASSERT_EQ(std::system(table_cmd.c_str()), 0);
+  const auto hydro = numbers(slurp(dir / "table.csv"));
+  ASSERT_EQ(hydro.size(), 3U);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto& r = dsmc[10 * (k + 1)];
+    ASSERT_DOUBLE_EQ(r[0], 10.5 + 10.0 * static_cast<double>(k));
+    EXPECT_GT(r[2], 0);
+    ASSERT_DOUBLE_EQ(hydro[k][0], r[0]);  // table: height, number_density, temperature, errors, order
+    EXPECT_NEAR(r[1], hydro[k][1], 4 * r[2] + 0.04 * hydro[k][1]) << "n at z = " << r[0];
+    EXPECT_NEAR(r[3], hydro[k][2], 4 * r[4] + 0.04 * hydro[k][2]) << "T at z = " << r[0];
   }
   fs::remove_all(dir);
 }

@@ -100,6 +100,29 @@ TEST(GravityColumn, ConvergesAtSecondOrder) {
   EXPECT_LT(fine.temperature[fine.z.size() / 2], fine.temperature.front() / 5);
 }
 
+// No lid is the limit H → ∞ (theory.md §23.3): below a fixed height the column stops moving as the
+// lid recedes — doubling H from 80σ to 160σ changes q(0), n and T at 20σ and 40σ at least tenfold
+// less than from 40σ to 80σ, and by under 1e-4 — while the lid's own pressure falls.
+TEST(GravityColumn, NoLidIsTheLimitOfARecedingLid) {
+  std::vector<gkt::GravityColumnProfile> columns;
+  for (double lid : {40.0, 80.0, 160.0}) {
+    auto p = inelastic_problem(4000);
+    p.lid_height = lid;
+    columns.push_back(solve_gravity_column(p));
+  }
+  std::vector<std::vector<double>> values;  // q(0), n(20), T(20), n(40), T(40) per lid
+  for (const auto& c : columns) {
+    const auto low = gkt::column_at(c, 20), high = gkt::column_at(c, 40);
+    values.push_back({c.floor_heat_flux, low.number_density, low.temperature, high.number_density, high.temperature});
+  }
+  for (std::size_t k = 0; k < values[0].size(); ++k) {
+    const double first = std::abs(values[1][k] - values[0][k]), second = std::abs(values[2][k] - values[1][k]);
+    EXPECT_LT(second, first / 10) << "quantity " << k;
+    EXPECT_LT(second, 1e-4 * std::abs(values[2][k])) << "quantity " << k;
+  }
+  EXPECT_LT(columns[2].lid_pressure, columns[1].lid_pressure / 100);
+}
+
 TEST(GravityColumn, RejectsBadInput) {
   auto p = inelastic_problem(100);
   p.particles_per_area = 0;

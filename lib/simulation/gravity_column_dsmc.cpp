@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -142,8 +143,9 @@ GravityColumnDsmcProfile run_gravity_column_dsmc(const GravityColumnDsmcParamete
     out.z.push_back((static_cast<double>(c) + 0.5) * dz);
     out.number_density.push_back(count[c] / samples * weight / dz);
     const double u = count[c] > 0 ? drift[c] / count[c] : 0;
-    out.temperature.push_back(count[c] > 0 ? (energy[c] / count[c] - u * u) / d : 0);
-    out.vertical_temperature.push_back(count[c] > 0 ? vertical[c] / count[c] - u * u : 0);
+    const double empty = std::numeric_limits<double>::quiet_NaN();  // no particle ever sampled there
+    out.temperature.push_back(count[c] > 0 ? (energy[c] / count[c] - u * u) / d : empty);
+    out.vertical_temperature.push_back(count[c] > 0 ? vertical[c] / count[c] - u * u : empty);
     out.heat_flux.push_back(flux[c] / samples * weight / dz);
   }
   return out;

@@ -13,6 +13,7 @@
 
 #include "gkt/models/transport_model.hpp"
 #include "gkt/operators/viscoelastic_hierarchy.hpp"
+#include "gkt/simulation/gravity_column_dsmc.hpp"
 #include "gkt/simulation/homogeneous_dsmc.hpp"
 #include "gkt/simulation/random_stream.hpp"
 #include "gkt/simulation/shear_viscosity_dsmc.hpp"
@@ -28,11 +29,13 @@ constexpr int kHistogramBins = 50;  // c = v/v0 in [0, 5)
 constexpr double kHistogramWidth = 0.1;
 constexpr long kMaxParticles = 10000000;  // 10^7 particles: ~0.25 GB of velocities
 constexpr long kMaxRuns = 100000;
-constexpr double kMaxCollisions = 1e6;  // collisions per particle (sampled or relaxation)
+constexpr double kMaxCollisions = 1e6;    // collisions per particle (sampled or relaxation)
+constexpr double kMaxColumnTime = 1e6;    // gravity-column: settle_time, sample_time (√(σ/g))
+constexpr long kMaxColumnCells = 100000;  // gravity-column: lid_height / cell_height
 
 std::invalid_argument error(const std::string& message) { return std::invalid_argument(message); }
 
-enum class Family { smooth, viscoelastic, mixture, rough, walton, shear };
+enum class Family { smooth, viscoelastic, mixture, rough, walton, shear, column };
 enum class Output { summary, distribution, haff };
 
 /// A validated DSMC scene.
@@ -49,6 +52,7 @@ struct DsmcScene {
   std::vector<double> alpha;  // s × s
   RoughDsmcParameters rough;
   UniformShearDsmcParameters shear;
+  GravityColumnDsmcParameters column;  // gravity-column: the seed is set per run
   // smooth-inelastic: the strained-HCS measurement of η* (theory.md §21.6); 0 kicks: none
   long viscosity_kicks = 0;
   double viscosity_window = 20;
@@ -113,11 +117,49 @@ Output read_output(const toml::table& t) {
   return distribution ? Output::distribution : (haff ? Output::haff : Output::summary);
 }
 
+/// Reads the gravity-column keys (docs/conventions.md "gkt dsmc contract"; theory.md §23.3) into
+/// s.column; the model's own keys are checked against the gravity-column schema.
+void read_column_scene(const toml::table& t, const TransportModel& model, DsmcScene& s) {
+  GravityColumnDsmcParameters& c = s.column;
+  c.dimension = s.dimension;
+  c.alpha = model_number(t, model, "alpha");
+  c.particles_per_area = model_number(t, model, "particles_per_area");
+  if (t.contains("floor")) {
+    const auto* floor = t.get("floor");
+    if (!floor->is_string() || floor->as_string()->get() != "temperature")
+      throw error(
+          "floor: must be \"temperature\" for gkt dsmc with model \"gravity-column\" (the simulated floor is a "
+          "thermal wall at floor_value; compare with a heat-flux floor through the printed heat_flux)");
+  }
+  c.floor_temperature = model_number(t, model, "floor_value");
+  if (!std::isfinite(c.floor_temperature)) throw error("floor_value: must be finite");
+  c.lid_height = model_number(t, model, "lid_height");
+  if (!std::isfinite(c.lid_height)) throw error("lid_height: must be finite");
+  if (t.contains("cell_height")) c.cell_height = required_real(t, "cell_height", 0, 1e6, false);
+  const double cells = c.lid_height / c.cell_height;
+  if (cells < 2 || cells > static_cast<double>(kMaxColumnCells))
+    throw error("cell_height: must give between 2 and " + std::to_string(kMaxColumnCells) +
+                " cells below the lid (lid_height / cell_height), got " + format_number(cells));
+  if (t.contains("time_step")) c.time_step = required_real(t, "time_step", 0, 1, false);
+  if (t.contains("settle_time")) c.settle_time = required_real(t, "settle_time", 0, kMaxColumnTime, true);
+  c.sample_time = required_real(t, "sample_time", 0, kMaxColumnTime, false);
+  if (c.sample_time < 5 * c.time_step)
+    throw error("sample_time: must be at least 5 time_step (one sample every 5 steps), got " +
+                format_number(c.sample_time));
+  c.particles = static_cast<int>(required_integer(t, "particles", 100, kMaxParticles));
+  s.runs = required_integer(t, "runs", 2, kMaxRuns);
+  s.seed = static_cast<std::uint64_t>(required_integer(t, "seed", 0, 9007199254740991L));  // 2^53 − 1
+  s.output = read_output(t);
+  if (s.output != Output::summary)
+    throw error(std::string(s.output == Output::haff ? "output.haff" : "output.distribution") +
+                ": not available for model \"gravity-column\" (the output is the profile, one row per cell)");
+}
+
 DsmcScene read_dsmc_scene(toml::table t) {
   DsmcScene s;
   const auto* model_node = t.get("model");
-  const std::vector<std::string> models{"smooth-inelastic", "viscoelastic", "mixture", "rough",
-                                        "rough-walton",     "uniform-shear"};
+  const std::vector<std::string> models{"smooth-inelastic", "viscoelastic",  "mixture",       "rough",
+                                        "rough-walton",     "uniform-shear", "gravity-column"};
   if (model_node == nullptr || !model_node->is_string())
     throw error("model: required string; gkt dsmc simulates " + join(models, "\""));
   s.model = model_node->as_string()->get();
@@ -128,8 +170,8 @@ DsmcScene read_dsmc_scene(toml::table t) {
   if (s.family == Family::mixture) flatten_mixture(t);
   const auto model = make_transport_model(s.model);
 
-  std::set<std::string> keys{"model", "dimension", "particles", "collisions_per_particle", "relaxation", "batches",
-                             "runs",  "seed",      "output"};
+  std::set<std::string> keys{"model", "dimension", "particles", "runs", "seed", "output"};
+  if (s.family != Family::column) keys.insert({"collisions_per_particle", "relaxation", "batches"});
   switch (s.family) {
     case Family::smooth:
       keys.insert({"alpha", "viscosity_kicks", "viscosity_window", "viscosity_kick"});
@@ -149,6 +191,10 @@ DsmcScene read_dsmc_scene(toml::table t) {
     case Family::shear:
       keys.insert({"alpha", "shear_rate"});
       break;
+    case Family::column:  // the model's keys (no `height`: every cell is a row) and the column's schedule in time
+      keys.insert({"alpha", "particles_per_area", "floor", "floor_value", "lid_height", "cell_height", "time_step",
+                   "settle_time", "sample_time"});
+      break;
   }
   for (const auto& [key, value] : t) {
     const std::string k(key.str());
@@ -167,6 +213,10 @@ DsmcScene read_dsmc_scene(toml::table t) {
     s.dimension = 3;
   } else {
     s.dimension = static_cast<int>(model_number(t, *model, "dimension"));
+  }
+  if (s.family == Family::column) {
+    read_column_scene(t, *model, s);
+    return s;
   }
   s.schedule.particles = static_cast<int>(required_integer(t, "particles", 2, kMaxParticles));
   const double sampled = required_real(t, "collisions_per_particle", 0, kMaxCollisions, false);
@@ -253,6 +303,8 @@ DsmcScene read_dsmc_scene(toml::table t) {
         s.rough.initial_temperature_ratio = required_real(t, "temperature_ratio", 0, 1e6, false);
       break;
     }
+    case Family::column:
+      break;
     case Family::shear: {
       s.shear.alpha = model_number(t, *model, "alpha");
       if (s.shear.alpha == 1)
@@ -282,6 +334,7 @@ struct RunResult {
   std::vector<double> values;  ///< in the order of the summary columns
   std::vector<double> histogram;
   DsmcTrace trace;
+  GravityColumnDsmcProfile column;  ///< gravity-column: the run's profile
 };
 
 double batch_mean(const std::vector<double>& x) { return mean_and_error(x).mean; }
@@ -340,6 +393,12 @@ RunResult simulate(const DsmcScene& s, long run) {
       r.trace = out.trace;
       break;
     }
+    case Family::column: {
+      GravityColumnDsmcParameters p = s.column;
+      p.seed = dsmc_run_seed(s.seed, static_cast<std::uint64_t>(run));
+      r.column = run_gravity_column_dsmc(p);
+      break;
+    }
     case Family::shear: {
       const auto out = run_uniform_shear_dsmc(d, s.shear, schedule);
       r.values = {batch_mean(out.reduced_shear_rate), batch_mean(out.stress_xx), batch_mean(out.stress_yy)};
@@ -369,6 +428,8 @@ std::vector<std::string> summary_names(const DsmcScene& s) {
     case Family::shear:  // the columns of `gkt table` for uniform-shear (stress_zz in 3D only)
       if (s.dimension == 3) return {"reduced_shear_rate", "stress_xx", "stress_yy", "stress_zz", "stress_xy"};
       return {"reduced_shear_rate", "stress_xx", "stress_yy", "stress_xy"};
+    case Family::column:  // the profile's columns besides `height` (the names of `gkt table`, gravity-column)
+      return {"number_density", "temperature", "heat_flux"};
   }
   return {};
 }
@@ -446,6 +507,24 @@ Table dsmc(toml::table scene, const DsmcRunOptions& options, bool& interrupted) 
     return x;
   };
   std::vector<std::string> row;
+  if (s.family == Family::column) {  // one row per cell: the height of its centre, then n, T, q over the runs
+    table.columns = {"height"};
+    for (const auto& name : summary_names(s)) {
+      table.columns.push_back(name);
+      table.columns.push_back(name + "_error");
+    }
+    const auto& z = results.front().column.z;
+    for (std::size_t c = 0; c < z.size(); ++c) {
+      row = {format_number(z[c])};
+      add_estimate(row, column([c](const RunResult& r) { return r.column.number_density[c]; }));
+      add_estimate(row, column([c](const RunResult& r) { return r.column.temperature[c]; }));
+      add_estimate(row, column([c](const RunResult& r) { return r.column.heat_flux[c]; }));
+      table.rows.push_back(row);
+    }
+    table.numeric.assign(table.columns.size(), true);
+    table.planned_rows = table.rows.size();
+    return table;
+  }
   switch (s.output) {
     case Output::summary: {
       const auto names = summary_names(s);

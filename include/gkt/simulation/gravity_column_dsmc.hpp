@@ -37,7 +37,8 @@ struct GravityColumnDsmcParameters {
 };
 
 /// The sampled column: cell centres z, n σ^d, T = m⟨V²⟩/d, T_z = m⟨V_z²⟩ (mgσ), the upward energy
-/// flux q (m g^{3/2} σ^{5/2−d}), and the energy per unit time and area the floor gave the gas.
+/// flux q (m g^{3/2} σ^{5/2−d}), and the energy per unit time and area the floor gave the gas; T and
+/// T_z are NaN in a cell no sampled particle was ever in.
 struct GravityColumnDsmcProfile {
   /// Per cell: centre z (σ), n σ^d, T = m⟨V²⟩/d and T_z = m⟨V_z²⟩ (mgσ), upward energy flux q (m g^{3/2} σ^{5/2−d}).
   /// @{
