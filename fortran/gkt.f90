@@ -55,6 +55,19 @@ module gkt
     real(c_double) :: cooling_rate_first_order
   end type
 
+  !> A dilute ternary's Navier-Stokes set (physical or reduced, as in gkt.h; D_ij at 3(i-1) + j).
+  type, bind(C), public :: gkt_ternary_transport
+    real(c_double) :: cooling_rate
+    real(c_double) :: temperature_ratio(3)
+    real(c_double) :: shear_viscosity
+    real(c_double) :: thermal_conductivity
+    real(c_double) :: mutual_diffusion(9)
+    real(c_double) :: thermal_diffusion(3)
+    real(c_double) :: pressure_diffusion(3)
+    real(c_double) :: dufour(3)
+    real(c_double) :: pressure
+  end type
+
   !> A registry model (gkt_model*); free it with gkt_model_destroy.
   type, public :: gkt_model
     type(c_ptr) :: handle = c_null_ptr
@@ -62,6 +75,11 @@ module gkt
 
   !> A binary's transport table (gkt_binary_table*); free it with gkt_binary_table_destroy.
   type, public :: gkt_binary_table
+    type(c_ptr) :: handle = c_null_ptr
+  end type
+
+  !> A dilute ternary's transport table (gkt_ternary_table*); free it with gkt_ternary_table_destroy.
+  type, public :: gkt_ternary_table
     type(c_ptr) :: handle = c_null_ptr
   end type
 
@@ -73,6 +91,8 @@ module gkt
   public :: gkt_binary_table_create, gkt_binary_table_destroy, gkt_binary_table_interpolation_error
   public :: gkt_binary_table_create_to_tolerance, gkt_binary_table_build_cost
   public :: gkt_binary_table_evaluate, gkt_binary_table_evaluate_reduced, gkt_binary_table_evaluate_cells
+  public :: gkt_ternary_table_create, gkt_ternary_table_destroy, gkt_ternary_table_interpolation_error
+  public :: gkt_ternary_table_build_cost, gkt_ternary_table_evaluate, gkt_ternary_table_evaluate_reduced
 
   ! The per-cell calls bind directly: no conversion on the way.
   interface
@@ -199,6 +219,51 @@ module gkt
       type(c_ptr), intent(in) :: names(*)
       integer(c_int), value :: order
       type(gkt_coefficient), intent(out) :: out(*)
+      integer(c_int) :: status
+    end function
+    function c_ternary_table_create(dimension, mass, diameter, alpha, order, nodes, tolerance, out) &
+        bind(C, name="gkt_ternary_table_create") result(status)
+      import :: c_int, c_double, c_ptr
+      integer(c_int), value :: dimension
+      real(c_double), intent(in) :: mass(3), diameter(3), alpha(9)
+      integer(c_int), value :: order, nodes
+      real(c_double), value :: tolerance
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_ternary_table_build_cost(table, pieces, solves, seconds) &
+        bind(C, name="gkt_ternary_table_build_cost") result(status)
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table
+      integer(c_int), intent(out) :: pieces, solves
+      real(c_double), intent(out) :: seconds
+      integer(c_int) :: status
+    end function
+    subroutine c_ternary_table_destroy(table) bind(C, name="gkt_ternary_table_destroy")
+      import :: c_ptr
+      type(c_ptr), value :: table
+    end subroutine
+    function c_ternary_table_interpolation_error(table, out) bind(C, name="gkt_ternary_table_interpolation_error") &
+        result(status)
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table
+      real(c_double), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_ternary_table_evaluate(table, fraction_1, fraction_2, number_density, temperature, out) &
+        bind(C, name="gkt_ternary_table_evaluate") result(status)
+      import :: c_ptr, c_double, c_int, gkt_ternary_transport
+      type(c_ptr), value :: table
+      real(c_double), value :: fraction_1, fraction_2, number_density, temperature
+      type(gkt_ternary_transport), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_ternary_table_evaluate_reduced(table, fraction_1, fraction_2, out) &
+        bind(C, name="gkt_ternary_table_evaluate_reduced") result(status)
+      import :: c_ptr, c_double, c_int, gkt_ternary_transport
+      type(c_ptr), value :: table
+      real(c_double), value :: fraction_1, fraction_2
+      type(gkt_ternary_transport), intent(out) :: out
       integer(c_int) :: status
     end function
     function c_binary_table_create(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction, &
@@ -420,6 +485,61 @@ contains
     integer(c_int) :: status
     status = c_binary_table_evaluate_cells(table%handle, int(size(fraction_1), c_size_t), fraction_1, number_density, &
                                            temperature, out)
+  end function
+
+  !> Builds the dilute ternary's table: masses (converted as for the binary), diameters, the
+  !> symmetric restitution matrix alpha(3, 3), Sonine order, nodes per axis to start from and the
+  !> interpolation error `tolerance` in (0, 1] it meets or is refused (gkt.h).
+  function gkt_ternary_table_create(dimension, mass, diameter, alpha, order, nodes, tolerance, table) result(status)
+    integer(c_int), intent(in) :: dimension, order, nodes
+    real(c_double), intent(in) :: mass(3), diameter(3), alpha(3, 3), tolerance
+    type(gkt_ternary_table), intent(out) :: table
+    integer(c_int) :: status
+    status = c_ternary_table_create(dimension, mass, diameter, reshape(alpha, [9]), order, nodes, tolerance, &
+                                    table%handle)
+  end function
+
+  !> Writes the table's build cost: rectangles of the Duffy square, mixture solves and wall-clock seconds.
+  function gkt_ternary_table_build_cost(table, pieces, solves, seconds) result(status)
+    type(gkt_ternary_table), intent(in) :: table
+    integer(c_int), intent(out) :: pieces, solves
+    real(c_double), intent(out) :: seconds
+    integer(c_int) :: status
+    status = c_ternary_table_build_cost(table%handle, pieces, solves, seconds)
+  end function
+
+  !> Frees the table (a table never created is ignored).
+  subroutine gkt_ternary_table_destroy(table)
+    type(gkt_ternary_table), intent(inout) :: table
+    call c_ternary_table_destroy(table%handle)
+    table%handle = c_null_ptr
+  end subroutine
+
+  !> Writes the largest relative interpolation error measured at creation.
+  function gkt_ternary_table_interpolation_error(table, error) result(status)
+    type(gkt_ternary_table), intent(in) :: table
+    real(c_double), intent(out) :: error
+    integer(c_int) :: status
+    status = c_ternary_table_interpolation_error(table%handle, error)
+  end function
+
+  !> Evaluates the table at mole fractions x_1, x_2 (x_3 = 1 - x_1 - x_2), number density n and
+  !> temperature T (physical units).
+  function gkt_ternary_table_evaluate(table, fraction_1, fraction_2, number_density, temperature, out) result(status)
+    type(gkt_ternary_table), intent(in) :: table
+    real(c_double), intent(in) :: fraction_1, fraction_2, number_density, temperature
+    type(gkt_ternary_transport), intent(out) :: out
+    integer(c_int) :: status
+    status = c_ternary_table_evaluate(table%handle, fraction_1, fraction_2, number_density, temperature, out)
+  end function
+
+  !> Evaluates the table at (x_1, x_2) in reduced units.
+  function gkt_ternary_table_evaluate_reduced(table, fraction_1, fraction_2, out) result(status)
+    type(gkt_ternary_table), intent(in) :: table
+    real(c_double), intent(in) :: fraction_1, fraction_2
+    type(gkt_ternary_transport), intent(out) :: out
+    integer(c_int) :: status
+    status = c_ternary_table_evaluate_reduced(table%handle, fraction_1, fraction_2, out)
   end function
 
   !> Computes the dilute first-Sonine set in reduced units at the size(alpha) restitutions alpha(i)

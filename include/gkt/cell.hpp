@@ -7,6 +7,8 @@
 //   enskog_first_sonine_values  dense gas at α and (φ, χ, φ dχ/dφ) (enskog_closed_form.hpp)
 //   evaluate(BinaryTransportTable, …)  a binary's Navier–Stokes set at (x_1, n, T) in physical units
 //                                      (mixture_transport_table.hpp)
+//   evaluate(TernaryTransportTable, …) a dilute ternary's set at (x_1, x_2, n, T) in physical units
+//                                      (ternary_transport_table.hpp)
 //
 // Everything is reduced as in docs/conventions.md. The contact value χ(φ) is the caller's: the
 // registry of pair_correlation.hpp evaluates it exactly (rationals), once per table, not per cell.
@@ -21,6 +23,7 @@
 #include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
 #include "gkt/transport/common/enskog_state.hpp"
 #include "gkt/transport/mixture/mixture_transport_table.hpp"
+#include "gkt/transport/mixture/ternary_transport_table.hpp"
 
 namespace gkt {
 
@@ -62,6 +65,21 @@ inline void evaluate(const BinaryTransportTable& table, std::span<const double> 
   detail::require_cells("out", out.size(), "fraction_1", fraction_1.size());
   for (std::size_t i = 0; i < fraction_1.size(); ++i)
     out[i] = table.evaluate(fraction_1[i], number_density[i], temperature[i]);
+}
+
+/// Writes out[i] = table.evaluate(fraction_1[i], fraction_2[i], number_density[i], temperature[i])
+/// (the dilute ternary's Navier–Stokes set in the caller's units) for every cell i; no allocation.
+/// Throws std::invalid_argument if the spans differ in length, and whatever the single-cell call
+/// throws (cells before the bad one are written).
+inline void evaluate(const TernaryTransportTable& table, std::span<const double> fraction_1,
+                     std::span<const double> fraction_2, std::span<const double> number_density,
+                     std::span<const double> temperature, std::span<TernaryTransport> out) {
+  detail::require_cells("fraction_2", fraction_2.size(), "fraction_1", fraction_1.size());
+  detail::require_cells("number_density", number_density.size(), "fraction_1", fraction_1.size());
+  detail::require_cells("temperature", temperature.size(), "fraction_1", fraction_1.size());
+  detail::require_cells("out", out.size(), "fraction_1", fraction_1.size());
+  for (std::size_t i = 0; i < fraction_1.size(); ++i)
+    out[i] = table.evaluate(fraction_1[i], fraction_2[i], number_density[i], temperature[i]);
 }
 
 }  // namespace gkt

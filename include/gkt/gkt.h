@@ -266,6 +266,73 @@ gkt_status gkt_binary_table_evaluate_cells(const gkt_binary_table* table, size_t
 gkt_status gkt_binary_table_evaluate_reduced(const gkt_binary_table* table, double fraction_1, double packing_fraction,
                                              gkt_binary_transport* out);
 
+/* ---- ternary mixtures: the per-cell transport table ---------------------------------------------- */
+
+/** A dilute ternary's Navier–Stokes table (theory.md §17.8, "Ternary tables"): solved once at
+ *  creation on Chebyshev–Lobatto nodes of the Duffy square (x_1 = u, x_2 = (1 − u) v), the square
+ *  split into rectangles until a requested accuracy holds at every point checked, and interpolated
+ *  per cell without allocation. Evaluation is thread-safe (the table is read only). */
+typedef struct gkt_ternary_table gkt_ternary_table;
+
+/** Builds the table of three species: mass[i] > 0, diameter[i] > 0 (any consistent units; each
+ *  mass converted once to the short rational it rounds, as for gkt_binary_table_create), the
+ *  restitution matrix alpha[3i + j] (symmetric, each in (0, 1]: α_ij for every pair, as the
+ *  mixture model's alpha_i_j keys), Sonine order in [1, 12], nodes in [3, 33] points per axis to
+ *  start from, and the interpolation error `tolerance` in (0, 1] (relative to max(1, |value|) of
+ *  the reduced coefficients; 1e-3 is the level of the first-Sonine truncation error) that the
+ *  table meets at every point checked, or is refused: GKT_INVALID_ARGUMENT, the message naming
+ *  the error reached, where, and the region of x_1 and x_2/(1 − x_1) (e.g. a pole of the order-N
+ *  solution). Costs one mixture solve per node and check point (seconds; see
+ *  gkt_ternary_table_build_cost). */
+gkt_status gkt_ternary_table_create(int dimension, const double mass[3], const double diameter[3],
+                                    const double alpha[9], int order, int nodes, double tolerance,
+                                    gkt_ternary_table** out);
+
+/** Writes the cost of the table's build: the rectangles (pieces) it settled on, the mixture solves
+ *  it made (nodes, error and validation points) and the wall-clock seconds. */
+gkt_status gkt_ternary_table_build_cost(const gkt_ternary_table* table, int* pieces, int* solves, double* seconds);
+
+/** Frees a table (NULL is ignored). */
+void gkt_ternary_table_destroy(gkt_ternary_table* table);
+
+/** Writes the largest relative interpolation error measured at creation (between the nodes and at
+ *  independent validation points against direct solves). */
+gkt_status gkt_ternary_table_interpolation_error(const gkt_ternary_table* table, double* out);
+
+/** The Navier–Stokes set of a dilute ternary at one state; species indices 0, 1, 2 (C) = 1, 2, 3
+ *  (conventions.md); matrices at 3i + j. Flux laws and reductions as gkt_binary_transport (the
+ *  reference gas of m̄ = Σ x_i m_i, σ̄ = Σ x_i σ_i at n, T). */
+typedef struct gkt_ternary_transport {
+  double cooling_rate;          /**< reduced ζ* = ζ/ν0 (ν0 = nT/η0); physical ζ (1/time) */
+  double temperature_ratio[3];  /**< T_i/T (both) */
+  double shear_viscosity;       /**< reduced η/η0; physical η */
+  double thermal_conductivity;  /**< reduced λ/κ0; physical λ */
+  double mutual_diffusion[9];   /**< D_ij at 3i + j: reduced D_ij/(n D0); physical D_ij (n × diffusivity) */
+  double thermal_diffusion[3];  /**< reduced D^T_i/D0; physical D^T_i (diffusivity) */
+  double pressure_diffusion[3]; /**< reduced D^p_i/D0; physical D^p_i (diffusivity) */
+  double dufour[3];             /**< reduced D''_j T/κ0; physical D''_j */
+  double pressure;              /**< reduced p/(nT) = 1; physical p = nT */
+} gkt_ternary_transport;
+
+/** Evaluates the table at mole fractions x_1 = fraction_1 in [0, 1], x_2 = fraction_2 in
+ *  [0, 1 − x_1] (x_3 = 1 − x_1 − x_2), number density n > 0 and temperature T > 0 in physical units
+ *  (the units of the masses and diameters given at creation). Thread-safe, no allocation. */
+gkt_status gkt_ternary_table_evaluate(const gkt_ternary_table* table, double fraction_1, double fraction_2,
+                                      double number_density, double temperature, gkt_ternary_transport* out);
+
+/** Evaluates the table at `cells` states of the caller's arrays (out[i] from fraction_1[i],
+ *  fraction_2[i], number_density[i], temperature[i], as gkt_ternary_table_evaluate). Every state is
+ *  checked before any is evaluated: on a bad one nothing is written and the message names its
+ *  index ("fraction_2[3]: …"). Thread-safe, no allocation. */
+gkt_status gkt_ternary_table_evaluate_cells(const gkt_ternary_table* table, size_t cells, const double* fraction_1,
+                                            const double* fraction_2, const double* number_density,
+                                            const double* temperature, gkt_ternary_transport* out);
+
+/** Evaluates the table at (x_1, x_2) in reduced units (the columns of `gkt table` for a dilute
+ *  ternary mixture scene, hcs = "maxwellian"). Thread-safe, no allocation. */
+gkt_status gkt_ternary_table_evaluate_reduced(const gkt_ternary_table* table, double fraction_1, double fraction_2,
+                                              gkt_ternary_transport* out);
+
 #ifdef __cplusplus
 }
 #endif

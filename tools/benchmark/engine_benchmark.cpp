@@ -22,6 +22,7 @@
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 #include "gkt/transport/mixture/mixture_transport_table.hpp"
 #include "gkt/transport/mixture/published_first_sonine.hpp"
+#include "gkt/transport/mixture/ternary_transport_table.hpp"
 #include "gkt/transport/mixture/tracer_diffusion.hpp"
 #include "gkt/transport/monodisperse/hard_spheres.hpp"
 #include "gkt/transport/viscoelastic/viscoelastic_transport.hpp"
@@ -248,6 +249,35 @@ void BinaryTransportTableEvaluateDense(benchmark::State& state) {
   state.counters["interpolation_error"] = table.interpolation_error();
 }
 BENCHMARK(BinaryTransportTableEvaluateDense)->Arg(1)->Arg(4)->Unit(benchmark::kNanosecond);
+
+/// The dilute ternary table (theory.md §17.8, "Ternary tables"): m = 1, 2, 3.5, σ = 1, 1.3, 0.8,
+/// a full restitution matrix, arg 0 = Sonine order, 9 × 9 starting nodes, tolerance 1e-3; each call
+/// evaluates the full physical set at a new (x_1, x_2, n, T) inside the triangle. The build (static,
+/// once per order) reports its time, solves, pieces and measured error as counters.
+void TernaryTransportTableEvaluate(benchmark::State& state) {
+  static std::map<int, std::pair<gkt::TernaryTransportTable, double>> tables;
+  const int order = static_cast<int>(state.range(0));
+  if (!tables.contains(order)) {
+    auto mixture = gkt::make_mixture(3, {{1.0, 1.0, 0.3, ""}, {2.0, 1.3, 0.3, ""}, {3.5, 0.8, 0.4, ""}}, 0.8);
+    mixture.alpha = {0.9, 0.85, 0.75, 0.85, 0.8, 0.8, 0.75, 0.8, 0.7};
+    const auto start = std::chrono::steady_clock::now();
+    gkt::TernaryTransportTable table(mixture, order, 9, 1e-3);
+    const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    tables.emplace(order, std::make_pair(std::move(table), build));
+  }
+  const auto& [table, build] = tables.at(order);
+  double x = 0.1, y = 0.05;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(table.evaluate(x, y, 1.0 + x, 2.0 - y));
+    x = x < 0.6 ? x + 1.3e-3 : 0.1;
+    y = y < 0.35 ? y + 0.7e-3 : 0.05;
+  }
+  state.counters["build_s"] = build;
+  state.counters["solves"] = table.build_solves();
+  state.counters["pieces"] = table.pieces();
+  state.counters["interpolation_error"] = table.interpolation_error();
+}
+BENCHMARK(TernaryTransportTableEvaluate)->Arg(1)->Arg(2)->Unit(benchmark::kNanosecond);
 
 /// 10⁴-point α sweep (α from 0.5 to 1) of all smooth-inelastic coefficients at order 4 through
 /// the model interface (nonlinear HCS a2…a5 and η*, κ*, μ* with error estimates), matrices reused;
