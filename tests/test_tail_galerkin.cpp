@@ -122,18 +122,21 @@ TEST(TailGalerkin, TwoDimensionalAgreesWithConvergedSonineAtAlpha09) {
 
 // 2D at strong dissipation against the in-suite DSMC (theory.md §10.6, §21.6): a2, ζ* from
 // `gkt dsmc tables/scenes/dsmc_hcs.toml --set dimension=2` (8 runs of 20 000 disks), η* from the strained
-// HCS (`viscosity_kicks`); each within 2σ plus the tail sequence's last change. The Sonine series gives
+// HCS (`viscosity_kicks`); each within 2σ plus three times the tail sequence's last change (at N = 6 for
+// α = 0.5, N = 8 for α = 0.3, to keep the suite short). The Sonine series gives
 // nothing at α = 0.3 in 2D (η* = 2.5 ± 5.8); here successive changes shrink.
 TEST(TailGalerkin, TwoDimensionalAgreesWithDsmcAtStrongDissipation) {
   struct Dsmc {
-    double alpha, a2, a2_sigma, zeta, zeta_sigma, eta, eta_sigma;
+    double alpha;
+    int resolution;
+    double a2, a2_sigma, zeta, zeta_sigma, eta, eta_sigma;
   };
-  for (const Dsmc& ref : {Dsmc{0.5, 0.07269, 0.00088, 0.379934, 0.000085, 1.1426, 0.0038},
-                          Dsmc{0.3, 0.14780, 0.00133, 0.467614, 0.000184, 1.2448, 0.0028}}) {
-    const auto seq = gkt::tail_galerkin_sequence(2, ref.alpha, 8);
+  for (const Dsmc& ref : {Dsmc{0.5, 6, 0.07269, 0.00088, 0.379934, 0.000085, 1.1426, 0.0038},
+                          Dsmc{0.3, 8, 0.14780, 0.00133, 0.467614, 0.000184, 1.2448, 0.0028}}) {
+    const auto seq = gkt::tail_galerkin_sequence(2, ref.alpha, ref.resolution);
     for (const auto& v : seq) ASSERT_TRUE(v.solved) << ref.alpha << " " << v.order;
     const auto& t = seq.back();
-    const auto& p = seq[6];
+    const auto& p = seq[seq.size() - 2];
     auto within = [](double value, double last_change, double mean, double sigma) {
       return std::fabs(value - mean) < 2 * sigma + 3 * std::fabs(last_change);
     };
@@ -142,6 +145,7 @@ TEST(TailGalerkin, TwoDimensionalAgreesWithDsmcAtStrongDissipation) {
         << ref.alpha << " zeta " << t.cooling_rate;
     EXPECT_TRUE(within(t.shear_viscosity, t.shear_viscosity - p.shear_viscosity, ref.eta, ref.eta_sigma))
         << ref.alpha << " eta " << t.shear_viscosity;
+    if (ref.alpha > 0.4) continue;  // at α = 0.5, a2 turns at N = 3 (theory.md §10.6): no monotone changes yet
     for (auto field : {&gkt::TailGalerkinValues::a2, &gkt::TailGalerkinValues::shear_viscosity,
                        &gkt::TailGalerkinValues::thermal_conductivity}) {
       const double d8 = std::fabs(seq[7].*field - seq[5].*field), d6 = std::fabs(seq[5].*field - seq[3].*field);
