@@ -273,7 +273,9 @@ TrialBasis trial_basis(const Grid& grid, double tail, int k_max) {
   std::vector<double> wt(n), p(n, 1.0), prev(n, 0.0), next(n);
   double norm = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    wt[i] = grid.shell[i] * std::exp(log_weight(grid.c[i], tail));
+    // 3D: the shell factor multiplied in the order the shipped 3D table was computed with (bit-identical).
+    const double shell = grid.dimension == 3 ? grid.w[i] * 4 * kPi * grid.c[i] * grid.c[i] : grid.shell[i];
+    wt[i] = shell * std::exp(log_weight(grid.c[i], tail));
     norm += wt[i];
   }
   TrialBasis basis;
