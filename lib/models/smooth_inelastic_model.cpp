@@ -115,7 +115,7 @@ class SmoothInelasticModel final : public TransportModel {
         choice_spec("hcs", "cumulant scheme of the homogeneous cooling state", {"nonlinear", "linear"}),
         choice_spec("scheme",
                     "trial-function weight: Maxwellian (standard), HCS (modified) or Gaussian core with the "
-                    "exponential HCS tail (tail: dilute, 3D, converges at strong dissipation)",
+                    "exponential HCS tail (tail: dilute, converges at strong dissipation)",
                     {"standard", "modified", "tail"}),
         {"packing_fraction",
          ParameterSpec::Kind::real,
@@ -288,12 +288,11 @@ class SmoothInelasticModel final : public TransportModel {
   }
 
  private:
-  /// The dilute 3D values of the tail scheme (tail_galerkin.hpp, theory.md §10.6): a2, a3, ζ*, η*, κ*,
+  /// The dilute values (2D, 3D) of the tail scheme (tail_galerkin.hpp, theory.md §10.6): a2, a3, ζ*, η*, κ*,
   /// μ* (and the HCS stability values from them) at resolution N with the error (6.1) from N + 1, N + 2.
   std::vector<CoefficientValue> evaluate_tail(int d, const Rational& alpha, const Rational& phi,
                                               const std::string& hcs_scheme,
                                               const std::vector<std::string>& coefficients, const OrderRequest& order) {
-    if (d != 3) throw std::invalid_argument("scheme: \"tail\" is implemented for dimension = 3 only");
     if (phi.sign() != 0) throw std::invalid_argument("scheme: \"tail\" is dilute only: use packing_fraction = 0");
     if (hcs_scheme != "nonlinear")
       throw std::invalid_argument("hcs: the tail scheme solves the full HCS: use hcs = \"nonlinear\"");
@@ -320,7 +319,7 @@ class SmoothInelasticModel final : public TransportModel {
         return pick_transport(ns, *transport, d, v.cooling_rate, dilute, alpha);
       };
       out.push_back(choose_order(order, highest, [&](int n) {
-        const auto& seq = tail_sequence(alpha, n + 2);
+        const auto& seq = tail_sequence(d, alpha, n + 2);
         const auto& s0 = seq[static_cast<std::size_t>(n - 1)];
         const auto& s1 = seq[static_cast<std::size_t>(n)];
         const auto& s2 = seq[static_cast<std::size_t>(n + 1)];
@@ -330,12 +329,12 @@ class SmoothInelasticModel final : public TransportModel {
     }
     return out;
   }
-  /// The tail-scheme values at resolutions 1 … at least `needed` (memoised per α; a longer sequence is
-  /// computed in steps of four resolutions, the collision kernel being shared within one sequence).
-  const std::vector<TailGalerkinValues>& tail_sequence(const Rational& alpha, int needed) {
-    auto& seq = tail_memo_[alpha.to_string()];
+  /// The tail-scheme values at resolutions 1 … at least `needed` (memoised per d and α; a longer sequence
+  /// is computed in steps of four resolutions, the collision kernel being shared within one sequence).
+  const std::vector<TailGalerkinValues>& tail_sequence(int d, const Rational& alpha, int needed) {
+    auto& seq = tail_memo_[std::to_string(d) + ":" + alpha.to_string()];
     if (static_cast<int>(seq.size()) < needed)
-      seq = tail_galerkin_sequence(3, alpha.to_double(),
+      seq = tail_galerkin_sequence(d, alpha.to_double(),
                                    std::min(kTailGalerkinMaxOrder, std::max(needed, static_cast<int>(seq.size()) + 4)));
     return seq;
   }

@@ -1,12 +1,13 @@
 // Tail-carrying Petrov–Galerkin solution of the HCS and the Chapman–Enskog equations of dilute
-// smooth inelastic hard spheres (tail_galerkin.hpp; docs/theory.md §10.6).
+// smooth inelastic hard spheres and disks (tail_galerkin.hpp; docs/theory.md §10.6).
 //
 // Trial functions F_k(c) = w(c) Q_k(c²), w(c) = exp(−2c²/(1 + √(1 + 4c²/A²))) (Gaussian for
 // c ≪ A, exp(−A c) for c ≫ A; theory.md (10.11)), Q_k orthonormal in ∫ w Q_k Q_l dc; test
 // functions the Sonine polynomials of the standard scheme. Collision moments of a polynomial test
 // function: the σ̂ integral is a polynomial in s = ĝ·σ̂ and cos φ (exact Gauss rules), the angle
 // between v1 and v2 becomes |g| with dμ = g dg/(c1 c2) (3D, polynomial integrand, exact Gauss
-// rule), leaving a 2-D radial integral over (c1, c2) by composite Gauss–Legendre split at c1 = c2.
+// rule; in 2D the integrand in that angle θ is g(θ) × polynomial, elliptic, done by Gauss–Legendre
+// in v with θ = η sinh v), leaving a 2-D radial integral over (c1, c2) by composite Gauss–Legendre split at c1 = c2.
 #include "gkt/transport/monodisperse/tail_galerkin.hpp"
 
 #include <Eigen/Dense>
@@ -19,12 +20,15 @@ namespace gkt {
 
 namespace {
 
-constexpr int kDimension = 3;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kPanelWidth = 1.0;  // composite Gauss–Legendre: panels of width 1 in the core …
 constexpr int kPanelNodes = 12;      // … 20 % of c beyond c = 5, 12 nodes each (measured: theory.md §10.6)
 constexpr double kNegligible = 40;   // radial nodes of weight below e^{−40} (with the polynomial growth) are dropped
 constexpr int kWeightPasses = 3;     // A of the weight taken from the previous pass's ζ_r
+
+/// Gauss–Legendre nodes in v (θ = η sinh v) of the 2D angle between c1 and c2 (measured: theory.md §10.6).
+/// (2 p_max + 40 changes nothing above 1e-12 at α = 0.5).
+int theta_nodes(int p_max) { return 2 * p_max + 16; }
 
 /// Gauss–Legendre rule on [0, 1]: nodes and weights.
 struct Rule {
@@ -74,11 +78,11 @@ double log_weight(double c, double tail) {
 }
 
 /// ν = √2 π^{(d−1)/2}/Γ(d/2): the factor that turns the reduced operator of (9.1) into the
-/// units of ν0 (theory.md (9.4)); 2√(2π) in 3D.
-double frequency_factor() { return std::sqrt(2.0) * kPi / std::tgamma(kDimension / 2.0); }
+/// units of ν0 (theory.md (9.4)); 2√(2π) in 3D, √(2π) in 2D.
+double frequency_factor(int d) { return std::sqrt(2.0) * std::pow(kPi, (d - 1) / 2.0) / std::tgamma(d / 2.0); }
 
 /// β = ∫dσ̂ Θ(ĝ·σ̂) ĝ·σ̂ = π^{(d−1)/2}/Γ((d+1)/2): the loss rate of a fast particle is β c ([vannoije1998]).
-double loss_rate_factor() { return std::pow(kPi, (kDimension - 1) / 2.0) / std::tgamma((kDimension + 1) / 2.0); }
+double loss_rate_factor(int d) { return std::pow(kPi, (d - 1) / 2.0) / std::tgamma((d + 1) / 2.0); }
 
 struct RadialNode {
   double c1, c2, weight;
@@ -87,20 +91,26 @@ struct RadialNode {
 /// The 1-D composite rule on [0, c_max] and the 2-D rule on [0, c_max]², panels on the diagonal split
 /// into two triangles (the collision kernel has a kink at c1 = c2).
 struct Grid {
+  int dimension = 3;
   std::vector<double> c, w;
+  std::vector<double> shell;  // w × S_d c^{d−1}: the 1-D rule for ∫ d^d c of an isotropic function
   std::vector<RadialNode> pairs;
 };
 
-Grid make_grid(double c_max, double tail, int degree) {
+Grid make_grid(int dimension, double c_max, double tail, int degree) {
   const Rule r = gauss_legendre(kPanelNodes);
   std::vector<double> edges{0.0};  // panels of width 1 in the core, growing by 20 % in the tail
   while (edges.back() < c_max) edges.push_back(edges.back() + std::max(kPanelWidth, 0.2 * edges.back()));
   const std::size_t panels = edges.size() - 1, n = r.x.size();
   Grid g;
+  g.dimension = dimension;
   for (std::size_t i = 0; i < panels; ++i)
     for (std::size_t a = 0; a < n; ++a) {
       g.c.push_back(edges[i] + r.x[a] * (edges[i + 1] - edges[i]));
       g.w.push_back(r.w[a] * (edges[i + 1] - edges[i]));
+      const double c = g.c.back();
+      g.shell.push_back(dimension == 3 ? g.w.back() * 4 * kPi * (c * c)
+                                       : g.w.back() * 2 * kPi * c);  // S_3 = 4π, S_2 = 2π
     }
   // A node is dropped when even the highest polynomial degree cannot lift w(c1) w(c2) to e^{−kNegligible}
   // of the core (where w ≈ 1).
@@ -137,57 +147,108 @@ struct Kernel {
 
 enum Family { kScalar = 0, kVectorSelf = 1, kVectorPartner = 2, kTensorSelf = 3, kTensorPartner = 4 };
 
+/// The collisional change of the five test-function families at one (c1, c2, |g|) for all p ≤ p_max,
+/// integrated over σ̂ (hemisphere g·σ̂ > 0, weight g·σ̂) and added to `out` with weight `w_angle`.
+/// In 3D σ̂ = s ĝ + √(1−s²)(cos φ, sin φ) with Gauss–Legendre in s and Gauss–Chebyshev in cos φ; in 2D
+/// σ̂ = s ĝ ± √(1−s²) ĝ⊥ and ds (g s)/√(1−s²) = g dt with t = √(1−s²), Gauss–Legendre in t (the
+/// integrand is then a polynomial in t).
+struct SigmaIntegral {
+  int dimension = 3;
+  double alpha = 1;
+  int p_max = 0;
+  Rule s_rule;
+  std::vector<double> cos_phi;  // 3D: Gauss–Chebyshev nodes (weight 2π/n each); 2D: ±1 (weight 1 each)
+  mutable std::vector<double> s, v, t;
+  void add(double x1, double x2, double g, double w_angle, const double* s0, const double* v0, const double* t0,
+           double* out) const {
+    const double d = dimension, eps = 1 - alpha * alpha;
+    const auto width = static_cast<std::size_t>(p_max + 1);
+    // Centre of mass G and relative velocity g: G·g = (x1 − x2)/2, |g|²G² − (G·g)² = g² G⊥².
+    const double big_g2 = (2 * x1 + 2 * x2 - g * g) / 4, gg = (x1 - x2) / 2, v12 = (x1 + x2 - g * g) / 2;
+    const double perp2 = g * g * big_g2 - gg * gg, g_perp = perp2 > 0 ? std::sqrt(perp2) : 0.0;
+    const double self_t = x1 * x1 - x1 * x1 / d, partner_t = v12 * v12 - x1 * x2 / d;
+    for (std::size_t is = 0; is < s_rule.x.size(); ++is) {
+      const double node = s_rule.x[is], sv = dimension == 3 ? node : std::sqrt(1 - node * node);
+      const double sq = dimension == 3 ? std::sqrt(1 - sv * sv) : node, big_x = g * sv;
+      // (g·σ̂) dσ̂: 3D (g s) ds dφ, 2D g dt per sign of the perpendicular component.
+      const double w_s = s_rule.w[is] * (dimension == 3 ? big_x : g) * w_angle;
+      for (std::size_t j = 0; j < cos_phi.size(); ++j) {
+        const double cp = cos_phi[j], w = dimension == 3 ? w_s * 2 * kPi / static_cast<double>(cos_phi.size()) : w_s;
+        // X = g·σ̂, XY = (g·σ̂)(G·σ̂); v1' = v1 − ((1+α)/2) X σ̂ (theory.md (1.2)).
+        const double xy = sv * sv * gg + sv * sq * cp * g_perp, x_sq = big_x * big_x;
+        const double u = x1 - (1 + alpha) * xy - eps * x_sq / 4;
+        const double self_v = x1 - 0.5 * (1 + alpha) * (xy + x_sq / 2);
+        const double partner_v = v12 - 0.5 * (1 + alpha) * (xy - x_sq / 2);
+        const double self_tt = self_v * self_v - u * x1 / d, partner_tt = partner_v * partner_v - u * x2 / d;
+        const double m = d / 2 - 1;
+        sonine_values(p_max, m, u, s.data());
+        sonine_values(p_max, m + 1, u, v.data());
+        sonine_values(p_max, m + 2, u, t.data());
+        for (std::size_t p = 0; p < width; ++p) {
+          out[p] += w * (s[p] - s0[p]);
+          out[width + p] += w * (self_v * v[p] - x1 * v0[p]);
+          out[2 * width + p] += w * (partner_v * v[p] - v12 * v0[p]);
+          out[3 * width + p] += w * (self_tt * t[p] - self_t * t0[p]);
+          out[4 * width + p] += w * (partner_tt * t[p] - partner_t * t0[p]);
+        }
+      }
+    }
+  }
+};
+
 Kernel collision_kernel(const Grid& grid, double alpha, int p_max) {
-  const double d = kDimension, m = d / 2 - 1, eps = 1 - alpha * alpha;
-  const Rule g_rule = gauss_legendre(p_max + 4), s_rule = gauss_legendre(p_max + 3);
-  // Exact rules: after the φ average the integrand is a polynomial of degree ≤ 2 p_max + 5 in s and
-  // ≤ 2 p_max + 6 in g, and of degree ≤ p_max + 2 in cos φ (Gauss–Chebyshev: exact to 2 n_phi − 1).
-  const int n_phi = p_max / 2 + 2;
-  std::vector<double> cos_phi(static_cast<std::size_t>(n_phi));
-  for (int j = 0; j < n_phi; ++j) cos_phi[static_cast<std::size_t>(j)] = std::cos(kPi * (j + 0.5) / n_phi);
+  const int dim = grid.dimension;
+  const double d = dim, m = d / 2 - 1;
+  const Rule g_rule = gauss_legendre(p_max + 4), theta_rule = gauss_legendre(theta_nodes(p_max));
+  SigmaIntegral sigma;
+  sigma.dimension = dim;
+  sigma.alpha = alpha;
+  sigma.p_max = p_max;
+  // Exact rules: after the φ average the integrand is a polynomial of degree ≤ 2 p_max + 5 in s (3D; in t
+  // in 2D) and ≤ 2 p_max + 6 in g, and of degree ≤ p_max + 2 in cos φ (Gauss–Chebyshev: exact to
+  // 2 n_phi − 1); in 2D cos φ = ±1.
+  sigma.s_rule = gauss_legendre(p_max + 3);
+  if (dim == 3) {
+    const int n_phi = p_max / 2 + 2;
+    for (int j = 0; j < n_phi; ++j) sigma.cos_phi.push_back(std::cos(kPi * (j + 0.5) / n_phi));
+  } else {
+    sigma.cos_phi = {1.0, -1.0};
+  }
   Kernel k;
   k.p_max = p_max;
   const auto width = static_cast<std::size_t>(p_max + 1);
+  sigma.s.resize(width);
+  sigma.v.resize(width);
+  sigma.t.resize(width);
   k.values.assign(grid.pairs.size() * 5 * width, 0.0);
-  std::vector<double> s0(width), v0(width), t0(width), s(width), v(width), t(width);
+  std::vector<double> s0(width), v0(width), t0(width);
   for (std::size_t node = 0; node < grid.pairs.size(); ++node) {
     const double c1 = grid.pairs[node].c1, c2 = grid.pairs[node].c2, x1 = c1 * c1, x2 = c2 * c2;
     double* out = &k.values[node * 5 * width];
     sonine_values(p_max, m, x1, s0.data());
     sonine_values(p_max, m + 1, x1, v0.data());
     sonine_values(p_max, m + 2, x1, t0.data());
-    const double g_lo = std::fabs(c1 - c2), g_hi = c1 + c2;
-    for (std::size_t ig = 0; ig < g_rule.x.size(); ++ig) {
-      const double g = g_lo + (g_hi - g_lo) * g_rule.x[ig];
-      const double w_g = g_rule.w[ig] * (g_hi - g_lo) * g / (c1 * c2);  // ∫_{−1}^{1} dμ = ∫ g dg/(c1 c2)
-      // Centre of mass G and relative velocity g: G·g = (x1 − x2)/2, |g|²G² − (G·g)² = g² G⊥².
-      const double big_g2 = (2 * x1 + 2 * x2 - g * g) / 4, gg = (x1 - x2) / 2, v12 = (x1 + x2 - g * g) / 2;
-      const double perp2 = g * g * big_g2 - gg * gg, g_perp = perp2 > 0 ? std::sqrt(perp2) : 0.0;
-      const double self_t = x1 * x1 - x1 * x1 / d, partner_t = v12 * v12 - x1 * x2 / d;
-      for (std::size_t is = 0; is < s_rule.x.size(); ++is) {
-        const double sv = s_rule.x[is], sq = std::sqrt(1 - sv * sv), big_x = g * sv;
-        const double w = s_rule.w[is] * big_x * w_g * 2 * kPi / n_phi;  // (g·σ̂) ds dφ over the hemisphere
-        for (const double cp : cos_phi) {
-          // X = g·σ̂, XY = (g·σ̂)(G·σ̂); v1' = v1 − ((1+α)/2) X σ̂ (theory.md (1.2)).
-          const double xy = sv * sv * gg + sv * sq * cp * g_perp, x_sq = big_x * big_x;
-          const double u = x1 - (1 + alpha) * xy - eps * x_sq / 4;
-          const double self_v = x1 - 0.5 * (1 + alpha) * (xy + x_sq / 2);
-          const double partner_v = v12 - 0.5 * (1 + alpha) * (xy - x_sq / 2);
-          const double self_tt = self_v * self_v - u * x1 / d, partner_tt = partner_v * partner_v - u * x2 / d;
-          sonine_values(p_max, m, u, s.data());
-          sonine_values(p_max, m + 1, u, v.data());
-          sonine_values(p_max, m + 2, u, t.data());
-          for (std::size_t p = 0; p < width; ++p) {
-            out[p] += w * (s[p] - s0[p]);
-            out[width + p] += w * (self_v * v[p] - x1 * v0[p]);
-            out[2 * width + p] += w * (partner_v * v[p] - v12 * v0[p]);
-            out[3 * width + p] += w * (self_tt * t[p] - self_t * t0[p]);
-            out[4 * width + p] += w * (partner_tt * t[p] - partner_t * t0[p]);
-          }
-        }
+    if (dim == 3) {
+      const double g_lo = std::fabs(c1 - c2), g_hi = c1 + c2;
+      for (std::size_t ig = 0; ig < g_rule.x.size(); ++ig) {
+        const double g = g_lo + (g_hi - g_lo) * g_rule.x[ig];
+        const double w_g = g_rule.w[ig] * (g_hi - g_lo) * g / (c1 * c2);  // ∫_{−1}^{1} dμ = ∫ g dg/(c1 c2)
+        sigma.add(x1, x2, g, w_g, s0.data(), v0.data(), t0.data(), out);
+      }
+    } else {
+      // 2D: ∫_0^π dθ with g² = c1² + c2² − 2 c1 c2 cos θ. g is analytic in θ but has branch points at
+      // θ = ±i η, η = |ln(c1/c2)|, close to θ = 0 when c1 ≈ c2; θ = η sinh v moves them to
+      // v = ±iπ/2, and Gauss–Legendre in v converges geometrically for every c1/c2 (theory.md §10.6).
+      const double eta = std::max(std::fabs(std::log(c1 / c2)), 1e-12), v_max = std::asinh(kPi / eta);
+      for (std::size_t it = 0; it < theta_rule.x.size(); ++it) {
+        const double v = v_max * theta_rule.x[it], theta = eta * std::sinh(v);
+        const double g = std::sqrt(std::max(0.0, x1 + x2 - 2 * c1 * c2 * std::cos(theta)));
+        sigma.add(x1, x2, g, theta_rule.w[it] * v_max * eta * std::cosh(v), s0.data(), v0.data(), t0.data(), out);
       }
     }
-    const double measure = grid.pairs[node].weight * (4 * kPi) * (2 * kPi) * x1 * x2;  // S_3 S_2 c1² c2²
+    // ∫d^d c1 d^d c2 of isotropic functions: 3D S_3 S_2 c1² c2² ∫dμ, 2D S_2 c1 c2 · 2∫_0^π dθ.
+    const double measure = dim == 3 ? grid.pairs[node].weight * (4 * kPi) * (2 * kPi) * x1 * x2
+                                    : grid.pairs[node].weight * (2 * kPi) * 2 * c1 * c2;
     for (std::size_t i = 0; i < 5 * width; ++i) out[i] *= measure;
   }
   return k;
@@ -212,7 +273,9 @@ TrialBasis trial_basis(const Grid& grid, double tail, int k_max) {
   std::vector<double> wt(n), p(n, 1.0), prev(n, 0.0), next(n);
   double norm = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    wt[i] = grid.w[i] * 4 * kPi * grid.c[i] * grid.c[i] * std::exp(log_weight(grid.c[i], tail));
+    // 3D: the shell factor multiplied in the order the shipped 3D table was computed with (bit-identical).
+    const double shell = grid.dimension == 3 ? grid.w[i] * 4 * kPi * grid.c[i] * grid.c[i] : grid.shell[i];
+    wt[i] = shell * std::exp(log_weight(grid.c[i], tail));
     norm += wt[i];
   }
   TrialBasis basis;
@@ -245,7 +308,7 @@ TrialBasis trial_basis(const Grid& grid, double tail, int k_max) {
 /// solution is left there), then the three Chapman–Enskog modes with degree N (theory.md (10.12)–(10.14)).
 TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, double tail, int order,
                                     std::vector<double>& start) {
-  const double d = kDimension, m = d / 2 - 1, nu = frequency_factor();
+  const double d = grid.dimension, m = d / 2 - 1, nu = frequency_factor(grid.dimension);
   const int k_max = order + 1, n_max = order;
   const auto kk = static_cast<std::size_t>(k_max + 1);
   const TrialBasis basis = trial_basis(grid, tail, k_max);
@@ -261,7 +324,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   std::vector<double> q(kk), s(kk);
   for (std::size_t i = 0; i < grid.c.size(); ++i) {
     const double x = grid.c[i] * grid.c[i];
-    const double wt = grid.w[i] * 4 * kPi * x * std::exp(log_weight(grid.c[i], tail));
+    const double wt = grid.shell[i] * std::exp(log_weight(grid.c[i], tail));
     basis.values(x, k_max, q.data());
     sonine_values(k_max, m, x, s.data());
     for (std::size_t k = 0; k < kk; ++k) {
@@ -296,9 +359,9 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   b.setZero();
   for (std::size_t i = 0; i < grid.c.size(); ++i) {  // the start projected on the basis: b_k = ∫ φ Q_k
     const double x = grid.c[i] * grid.c[i];
-    const double phi = start.empty() ? std::pow(kPi, -1.5) * std::exp(-x) : start[i];
+    const double phi = start.empty() ? std::pow(kPi, -d / 2) * std::exp(-x) : start[i];
     basis.values(x, k_max, q.data());
-    for (std::size_t k = 0; k < kk; ++k) b[static_cast<Eigen::Index>(k)] += grid.w[i] * 4 * kPi * x * phi * q[k];
+    for (std::size_t k = 0; k < kk; ++k) b[static_cast<Eigen::Index>(k)] += grid.shell[i] * phi * q[k];
   }
   auto residual = [&](const Eigen::VectorXd& v, Eigen::MatrixXd* jac) {
     Eigen::VectorXd f(kk);
@@ -355,7 +418,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
       sonine_values(k, m, x, sk.data());
       double phi = 0;
       for (std::size_t j = 0; j < kk; ++j) phi += b[static_cast<Eigen::Index>(j)] * q[j];
-      sum += grid.w[i] * 4 * kPi * x * std::exp(log_weight(grid.c[i], tail)) * phi * sk[static_cast<std::size_t>(k)];
+      sum += grid.shell[i] * std::exp(log_weight(grid.c[i], tail)) * phi * sk[static_cast<std::size_t>(k)];
     }
     return sum / norm2;
   };
@@ -369,7 +432,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   out.a2 = cumulant(2);
   out.a3 = cumulant(3);
   out.cooling_rate = zeta_r * (d + 2) / (4 * nu);  // theory.md (9.4)
-  out.tail_exponent = zeta_r > 0 ? 2 * loss_rate_factor() / zeta_r : INFINITY;
+  out.tail_exponent = zeta_r > 0 ? 2 * loss_rate_factor(grid.dimension) / zeta_r : INFINITY;
 
   // Chapman–Enskog: trial F_q c_i (vector), F_q Y2 (tensor), q = 0 … N; tests c_i S_p^{(d/2)}, Y2 S_p^{(d/2+1)}.
   const auto nn = static_cast<std::size_t>(n_max + 1);
@@ -379,7 +442,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   std::vector<double> sv(nn), st(nn);
   for (std::size_t i = 0; i < grid.c.size(); ++i) {
     const double x = grid.c[i] * grid.c[i];
-    const double wt = grid.w[i] * 4 * kPi * x * std::exp(log_weight(grid.c[i], tail));
+    const double wt = grid.shell[i] * std::exp(log_weight(grid.c[i], tail));
     basis.values(x, k_max, q.data());
     sonine_values(n_max, m + 1, x, sv.data());
     sonine_values(n_max, m + 2, x, st.data());
@@ -442,21 +505,20 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
 }  // namespace
 
 std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order) {
-  if (dimension != kDimension)
-    throw std::invalid_argument("dimension: the tail scheme is implemented for 3 only, got " +
-                                std::to_string(dimension));
+  if (dimension != 2 && dimension != 3)
+    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
   if (!(alpha > 0 && alpha <= 1))
     throw std::invalid_argument("alpha: must be a number in (0, 1], got " + std::to_string(alpha));
   if (max_order < 1 || max_order > kTailGalerkinMaxOrder)
     throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(kTailGalerkinMaxOrder) +
                                 "] for the tail scheme, got " + std::to_string(max_order));
-  const double d = kDimension, nu = frequency_factor();
+  const double d = dimension, nu = frequency_factor(dimension);
   // First guess of A from van Noije–Ernst's a2 and ζ* (theory.md §9.2).
   const double a2 = 16 * (1 - alpha) * (1 - 2 * alpha * alpha) /
                     (9 + 24 * d - alpha * (41 - 8 * d) + 30 * alpha * alpha * (1 - alpha));
   const double zeta0 = (d + 2) / (4 * d) * (1 - alpha * alpha) * (1 + 3 * a2 / 16);
-  const double tail0 = alpha == 1 ? INFINITY : 2 * loss_rate_factor() * (d + 2) / (4 * nu * zeta0);
-  const int p_max = max_order + 1, degree = 2 * p_max + 2 * kDimension + 4;
+  const double tail0 = alpha == 1 ? INFINITY : 2 * loss_rate_factor(dimension) * (d + 2) / (4 * nu * zeta0);
+  const int p_max = max_order + 1, degree = 2 * p_max + 2 * dimension + 4;
   // The grid reaches where (1 + c)^degree w(c) has fallen below e^{−kNegligible} past its peak (with a
   // tail longer than the first guess's by 25 %, for margin).
   const double reach = 0.8 * tail0;
@@ -469,7 +531,7 @@ std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alp
       break;
     }
   }
-  const Grid grid = make_grid(c_max, reach, degree);
+  const Grid grid = make_grid(dimension, c_max, reach, degree);
   const Kernel kernel = collision_kernel(grid, alpha, p_max);
   std::vector<TailGalerkinValues> out;
   std::vector<double> start;  // φ of the previous solution on the 1-D rule (empty: the Maxwellian)

@@ -1,5 +1,5 @@
 // Homogeneous cooling state and Navier–Stokes coefficients of dilute smooth inelastic hard
-// spheres in a representation that carries the exponential high-energy tail of the HCS:
+// spheres (d = 3) and disks (d = 2) in a representation that carries the exponential high-energy tail of the HCS:
 // Petrov–Galerkin with Sonine test functions and trial functions w(c) × polynomial in c², where
 // w is Gaussian in the core and decays as exp(−A c) with the HCS tail exponent A
 // (docs/theory.md §10.6; [vannoije1998] for the tail). It converges at strong dissipation,
@@ -16,7 +16,7 @@ namespace gkt {
 /// Highest resolution (polynomial degree N in c² of the transport modes) the tail scheme accepts.
 inline constexpr int kTailGalerkinMaxOrder = 12;  // N = 12 fails in the tensor mode at α = 0.2 (theory.md §10.6)
 
-/// The tail-scheme quantities at one resolution N (d = 3, dilute).
+/// The tail-scheme quantities at one resolution N (dilute).
 struct TailGalerkinValues {
   int order = 0;                        ///< N: CE trial/test degree N, HCS degree N + 1 in c²
   bool solved = false;                  ///< false if Newton's method found no HCS at this N
@@ -29,10 +29,10 @@ struct TailGalerkinValues {
   double density_heat_coefficient = 0;  ///< μ* = nμ/(Tκ0)
 };
 
-/// Returns the tail-scheme values at resolutions N = 1 … max_order for dimension 3 and
+/// Returns the tail-scheme values at resolutions N = 1 … max_order for dimension d = 2 or 3 and
 /// restitution α ∈ (0, 1] (element N − 1 is resolution N). The collision kernel on the quadrature
 /// grid is computed once for max_order and shared by all resolutions (each resolution uses the
-/// leading Sonine test functions). Throws std::invalid_argument naming the field for d ≠ 3,
+/// leading Sonine test functions). Throws std::invalid_argument naming the field for d ∉ {2, 3},
 /// α outside (0, 1] or max_order outside [1, kTailGalerkinMaxOrder].
 std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order);
 
