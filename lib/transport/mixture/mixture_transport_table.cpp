@@ -13,29 +13,14 @@
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
+#include "transport/mixture/table_messages.hpp"
 
 namespace gkt {
 
+using detail::refuse_state;
+using detail::short_number;
+
 namespace {
-
-/// Returns x with `digits` significant digits (3: measured errors, positions, echoed arguments;
-/// 6: the ends of an x_1 interval a few 1e-4 wide).
-std::string short_number(double x, int digits = 3) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
-  return buffer;
-}
-
-/// Throws "<name>: must be <range>, got <value>" (evaluate's arguments), or with an empty range the
-/// over- or underflow of the set at (n, T) = (value, temperature). Out of line and cold: the
-/// per-state path stays a few compares (docs/performance.md).
-[[noreturn, gnu::cold, gnu::noinline]] void refuse_state(const char* name, const char* range, double value,
-                                                         double temperature) {
-  if (*range == '\0')
-    throw std::invalid_argument(std::string(name) + ": the coefficients at n = " + short_number(value) +
-                                ", T = " + short_number(temperature) + " over- or underflow a double");
-  throw std::invalid_argument(std::string(name) + ": must be " + range + ", got " + short_number(value));
-}
 
 /// Throws "fraction_1: must be a number in [low, high] (the table's range), got x".
 [[noreturn, gnu::cold, gnu::noinline]] void refuse_fraction(double x, double low, double high) {
@@ -67,41 +52,6 @@ BinaryTransportTable::Reduced BinaryTransportTable::solve(const Mixture& mixture
           v.pressure,
           v.bulk_viscosity,
           v.cooling_rate_first_order};
-}
-
-BinaryTransportTable::Axis::Axis(int count, double low, double high) {
-  // Chebyshev–Lobatto points of [low, high] and their barycentric weights (−1)^k, halved at the
-  // ends ([berrut2004] eq. 5.2); a single node when the axis is degenerate (high = low).
-  const int last = high > low ? count - 1 : 0;
-  for (int k = 0; k <= last; ++k) {
-    nodes.push_back(last == 0 ? low : low + 0.5 * (high - low) * (1 - std::cos(std::numbers::pi * k / last)));
-    weights.push_back((k % 2 == 0 ? 1.0 : -1.0) * (k == 0 || k == last ? 0.5 : 1.0));
-  }
-}
-
-double BinaryTransportTable::Axis::at_angle(double position) const {
-  const auto last = static_cast<double>(nodes.size() - 1);
-  if (last == 0) return nodes[0];
-  const double low = nodes.front(), high = nodes.back();
-  return low + 0.5 * (high - low) * (1 - std::cos(std::numbers::pi * position / last));
-}
-
-void BinaryTransportTable::Axis::factors(double t, std::array<double, kMaxNodes>& w) const {
-  const std::size_t n = nodes.size();
-  double sum = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double difference = t - nodes[k];
-    // At a node (or within 1e-290 of it, where weight/difference would overflow and the
-    // interpolant equals the node value in double anyway: found by fuzz_per_cell at t = 4e-315).
-    if (std::abs(difference) < 1e-290) {
-      std::fill_n(w.begin(), n, 0.0);
-      w[k] = 1;
-      return;
-    }
-    w[k] = weights[k] / difference;
-    sum += w[k];
-  }
-  for (std::size_t k = 0; k < n; ++k) w[k] /= sum;
 }
 
 namespace {

@@ -12,28 +12,14 @@
 
 #include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
+#include "transport/mixture/table_messages.hpp"
 
 namespace gkt {
 
+using detail::refuse_state;
+using detail::short_number;
+
 namespace {
-
-/// Returns x with `digits` significant digits.
-std::string short_number(double x, int digits = 3) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
-  return buffer;
-}
-
-/// Throws "<name>: must be <range>, got <value>", or with an empty range the over- or underflow of
-/// the set at (n, T) = (value, temperature). Out of line and cold: the per-state path stays a few
-/// compares.
-[[noreturn, gnu::cold, gnu::noinline]] void refuse_state(const char* name, const char* range, double value,
-                                                         double temperature) {
-  if (*range == '\0')
-    throw std::invalid_argument(std::string(name) + ": the coefficients at n = " + short_number(value) +
-                                ", T = " + short_number(temperature) + " over- or underflow a double");
-  throw std::invalid_argument(std::string(name) + ": must be " + range + ", got " + short_number(value));
-}
 
 /// A rectangle of the Duffy square waiting to be solved and checked: its tree cell, extent, nodes
 /// per axis, and how its error went under splitting (the parent's error; splits in a row that did
@@ -73,40 +59,6 @@ TernaryTransportTable::Reduced TernaryTransportTable::solve(const Mixture& mixtu
     r[21 + i] = v.dufour[i];
   }
   return r;
-}
-
-TernaryTransportTable::Axis::Axis(int count, double low, double high) {
-  // Chebyshev–Lobatto points of [low, high] and their barycentric weights (−1)^k, halved at the
-  // ends ([berrut2004] eq. 5.2).
-  const int last = count - 1;
-  for (int k = 0; k <= last; ++k) {
-    nodes.push_back(low + 0.5 * (high - low) * (1 - std::cos(std::numbers::pi * k / last)));
-    weights.push_back((k % 2 == 0 ? 1.0 : -1.0) * (k == 0 || k == last ? 0.5 : 1.0));
-  }
-}
-
-double TernaryTransportTable::Axis::at_angle(double position) const {
-  const auto last = static_cast<double>(nodes.size() - 1);
-  const double low = nodes.front(), high = nodes.back();
-  return low + 0.5 * (high - low) * (1 - std::cos(std::numbers::pi * position / last));
-}
-
-void TernaryTransportTable::Axis::factors(double t, std::array<double, kMaxNodes>& w) const {
-  const std::size_t n = nodes.size();
-  double sum = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double difference = t - nodes[k];
-    // At a node (or so close that weight/difference would overflow; the interpolant equals the
-    // node value in double there).
-    if (std::abs(difference) < 1e-290) {
-      std::fill_n(w.begin(), n, 0.0);
-      w[k] = 1;
-      return;
-    }
-    w[k] = weights[k] / difference;
-    sum += w[k];
-  }
-  for (std::size_t k = 0; k < n; ++k) w[k] /= sum;
 }
 
 TernaryTransportTable::Reduced TernaryTransportTable::Piece::reduced_at(double u, double v) const {

@@ -12,6 +12,7 @@
 #include <array>
 #include <vector>
 
+#include "gkt/transport/common/chebyshev_axis.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
 
 namespace gkt {
@@ -90,15 +91,7 @@ class BinaryTransportTable {
   static constexpr int kReduced = 18;
   static constexpr int kMaxNodes = 64;  // per axis: evaluate() keeps its factors on the stack
   using Reduced = std::array<double, kReduced>;
-  /// Chebyshev–Lobatto points of [low, high] and their barycentric weights.
-  struct Axis {
-    std::vector<double> nodes, weights;
-    Axis(int count, double low, double high);
-    /// Returns the point at angle π·position/(K − 1) of the axis (position may be fractional).
-    [[nodiscard]] double at_angle(double position) const;
-    /// Fills w with the barycentric factors at t, normalised to sum 1 (one-hot at a node).
-    void factors(double t, std::array<double, kMaxNodes>& w) const;
-  };
+  using Axis = ChebyshevAxis;
   /// One x_1 subinterval: its axes and values (at packing node a, fraction node b: a · nodes + b).
   struct Piece {
     Axis fraction_axis, packing_axis;

@@ -13,6 +13,7 @@
 #include <array>
 #include <vector>
 
+#include "gkt/transport/common/chebyshev_axis.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
 
 namespace gkt {
@@ -83,15 +84,7 @@ class TernaryTransportTable {
   static constexpr int kReduced = 24;
   static constexpr int kMaxNodes = 33;  // per axis: evaluate() keeps its factors on the stack
   using Reduced = std::array<double, kReduced>;
-  /// Chebyshev–Lobatto points of [low, high] and their barycentric weights.
-  struct Axis {
-    std::vector<double> nodes, weights;
-    Axis(int count, double low, double high);
-    /// Returns the point at angle π·position/(K − 1) of the axis (position may be fractional).
-    [[nodiscard]] double at_angle(double position) const;
-    /// Fills w with the barycentric factors at t, normalised to sum 1 (one-hot at a node).
-    void factors(double t, std::array<double, kMaxNodes>& w) const;
-  };
+  using Axis = ChebyshevAxis;
   /// One rectangle of the Duffy square: its axes and values (at v node a, u node b: a · K_u + b).
   struct Piece {
     Axis u_axis, v_axis;
