@@ -41,6 +41,22 @@ inline Vec3 collision_direction(RandomStream& rng, int d, const Vec3& ghat) {
   return sigma;
 }
 
+/// Removes the mean velocity from the first d components of every particle (collisions conserve it;
+/// a rescaling would amplify its round-off) and returns Σ v² afterwards (m = 1).
+inline double remove_mean_velocity(std::vector<Vec3>& v, int d) {
+  const double count = static_cast<double>(v.size());
+  Vec3 mean{0, 0, 0};
+  for (const auto& p : v)
+    for (int k = 0; k < d; ++k) mean[k] += p[k] / count;
+  double energy = 0;
+  for (auto& p : v)
+    for (int k = 0; k < d; ++k) {
+      p[k] -= mean[k];
+      energy += p[k] * p[k];
+    }
+  return energy;
+}
+
 /// β_d = ∫dσ̂ Θ(σ̂·ĝ)(σ̂·ĝ): π (d = 3), 2 (d = 2).
 inline double collision_solid_angle(int d) { return d == 3 ? std::numbers::pi : 2.0; }
 

@@ -36,15 +36,7 @@ ShearViscosityDsmcRun run_shear_viscosity_dsmc(int d, const ShearViscosityDsmcPa
   // refreshed at each rescaling (T_run the run's temperature, T_phys its physical one).
   double log_kick = 0, factor = 1;
   auto rescale = [&] {
-    Vec3 mean{0, 0, 0};
-    for (const auto& p : v)
-      for (int k = 0; k < d; ++k) mean[k] += p[k] / count;
-    energy = 0;
-    for (auto& p : v)
-      for (int k = 0; k < d; ++k) {
-        p[k] -= mean[k];
-        energy += p[k] * p[k];
-      }
+    energy = detail::remove_mean_velocity(v, d);
     const double before = temperature(), scale = std::sqrt(reference / before);
     clock.rescaled(before, reference);
     vmax = 0;

@@ -39,15 +39,7 @@ SmoothDsmcRun run_smooth_hcs_dsmc(int d, const SmoothRestitution& restitution, c
   auto temperature = [&] { return energy / (d * count); };
   // Zero momentum (collisions conserve it; a rescaling would amplify its round-off), then T = 1/2.
   auto rescale = [&] {
-    Vec3 mean{0, 0, 0};
-    for (const auto& p : v)
-      for (int k = 0; k < d; ++k) mean[k] += p[k] / count;
-    energy = 0;
-    for (auto& p : v)
-      for (int k = 0; k < d; ++k) {
-        p[k] -= mean[k];
-        energy += p[k] * p[k];
-      }
+    energy = detail::remove_mean_velocity(v, d);
     const double before = temperature(), scale = std::sqrt(reference / before);
     clock.rescaled(before, reference);
     vmax = 0;
