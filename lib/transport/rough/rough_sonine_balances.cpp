@@ -50,89 +50,164 @@ void add_scaled(TauLaurent& l, const RationalPolynomial& p, int spin_power, cons
 }  // namespace
 
 RoughSonineBalances::RoughSonineBalances(int dimension, const Rational& alpha, const Rational& beta,
-                                         const Rational& kappa, int highest_degree, bool products)
+                                         const Rational& kappa, int highest_degree, bool products, bool orientation)
     : dimension_(dimension), highest_(highest_degree), products_(products), decoupled_(beta == Rational(-1)) {
   const auto params = rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa);  // validates
   if (highest_degree < 2) throw std::invalid_argument("RoughSonineBalances: highest Sonine degree must be >= 2");
+  // Disks: ŵ is normal to the plane of c, c·ŵ ≡ 0 and P ≡ −xy/3 adds nothing; at β = −1 no spin balance.
+  const bool oriented = orientation && dimension == 3 && !decoupled_;
+  if (oriented && products)
+    throw std::logic_error("RoughSonineBalances: the orientation family is built in the linear scheme only");
   const int m = highest_degree;
   const int spin_top = decoupled_ ? 0 : m;
   for (int n = 2; n <= m; ++n)
     for (int q = 0; q <= std::min(n, spin_top); ++q) cumulants_.push_back({n - q, q});
-  tests_.push_back({1, 0});
-  tests_.push_back({0, 1});
-  for (const auto& c : cumulants_) tests_.push_back(c);
+  if (oriented)
+    for (int n = 0; n <= m - 2; ++n)
+      for (int q = 0; q <= n; ++q) orientations_.push_back({n - q, q});
+  tests_.push_back({1, {{{1, 0, 0}, Rational(1)}}});
+  tests_.push_back({1, {{{0, 1, 0}, Rational(1)}}});
+  for (const auto& c : cumulants_) tests_.push_back({c[0] + c[1], {{{c[0], c[1], 0}, Rational(1)}}});
+  // P x^k y^l = x^k y^l (c·ŵ)² − x^{k+1} y^{l+1}/3.
+  for (const auto& c : orientations_)
+    tests_.push_back({c[0] + c[1] + 2, {{{c[0], c[1], 1}, Rational(1)}, {{c[0] + 1, c[1] + 1, 0}, Rational(-1, 3)}}});
   for (int i = 0; i <= m; ++i)
-    for (int j = 0; j <= std::min(m - i, spin_top); ++j) monomials_.push_back({i, j});
-  auto monomial_index = [&](int i, int j) {
+    for (int j = 0; j <= std::min(m - i, spin_top); ++j) monomials_.push_back({i, j, 0});
+  if (oriented)
+    for (int i = 0; i <= m - 2; ++i)
+      for (int j = 0; i + j <= m - 2; ++j) monomials_.push_back({i, j, 1});
+  auto monomial_index = [&](const std::array<int, 3>& e) {
     for (std::size_t k = 0; k < monomials_.size(); ++k)
-      if (monomials_[k][0] == i && monomials_[k][1] == j) return k;
+      if (monomials_[k] == e) return k;
     throw std::logic_error("RoughSonineBalances: monomial outside the table");
   };
 
-  // Sonine products S_p(x) S_q(y) as monomials, and the Maxwellian averages ⟨x^k y^l⟩_M, ⟨x^k y^l Φ⟩_M.
+  // Sonine products as monomials, and the Maxwellian averages ⟨ψ_t⟩_M, ⟨ψ_t Φ⟩_M: with f = c·ŵ,
+  // ⟨x^i y^j f^{2e}⟩_M = ⟨x^{i+e}⟩⟨y^{j+e}⟩⟨cos^{2e}Θ⟩, ⟨cos²Θ⟩ = 1/3, ⟨cos⁴Θ⟩ = 1/5 (d = 3).
   const long dt = dimension, dr = dimension == 3 ? 3 : 1;  // 2(m_t + 1), 2(m_r + 1)
-  auto moment_m = [&](int k, int l) {
-    return Rational::rising_half(dt, static_cast<unsigned long>(k)) *
-           Rational::rising_half(dr, static_cast<unsigned long>(l));
+  auto moment_m = [&](const std::array<int, 3>& e) {
+    const Rational angular = e[2] == 0 ? Rational(1) : e[2] == 1 ? Rational(1, 3) : Rational(1, 5);
+    return Rational::rising_half(dt, static_cast<unsigned long>(e[0] + e[2])) *
+           Rational::rising_half(dr, static_cast<unsigned long>(e[1] + e[2])) * angular;
   };
-  weight_terms_.resize(cumulants_.size() + 1);
+  const std::size_t nw = cumulants_.size() + orientations_.size();
+  weight_terms_.resize(nw + 1);
   weight_terms_[0].push_back({0, 1.0});
-  std::vector<std::vector<std::pair<std::array<int, 2>, Rational>>> exact_weights(cumulants_.size());
+  std::vector<std::vector<std::pair<std::array<int, 3>, Rational>>> exact_weights(nw);
   for (std::size_t w = 0; w < cumulants_.size(); ++w) {
     const auto sx = sonine_coefficients(dt, cumulants_[w][0]), sy = sonine_coefficients(dr, cumulants_[w][1]);
     for (int i = 0; i <= cumulants_[w][0]; ++i)
-      for (int j = 0; j <= cumulants_[w][1]; ++j) {
-        const Rational c = sx[static_cast<std::size_t>(i)] * sy[static_cast<std::size_t>(j)];
-        exact_weights[w].push_back({{i, j}, c});
-        weight_terms_[w + 1].push_back({monomial_index(i, j), c.to_double()});
-      }
+      for (int j = 0; j <= cumulants_[w][1]; ++j)
+        exact_weights[w].push_back({{i, j, 0}, sx[static_cast<std::size_t>(i)] * sy[static_cast<std::size_t>(j)]});
   }
+  // P S_p^(5/2)(x) S_q^(5/2)(y): the rank-2 Sonine polynomials of (cc)°:(ŵŵ)°, orthogonal within the family.
+  for (std::size_t o = 0; o < orientations_.size(); ++o) {
+    auto& terms = exact_weights[cumulants_.size() + o];
+    const auto sx = sonine_coefficients(dt + 4, orientations_[o][0]),
+               sy = sonine_coefficients(dr + 4, orientations_[o][1]);
+    for (int i = 0; i <= orientations_[o][0]; ++i)
+      for (int j = 0; j <= orientations_[o][1]; ++j) {
+        const Rational c = sx[static_cast<std::size_t>(i)] * sy[static_cast<std::size_t>(j)];
+        terms.push_back({{i, j, 1}, c});
+        terms.push_back({{i + 1, j + 1, 0}, c * Rational(-1, 3)});
+      }
+    // C − 1/3 = ⟨(cos²Θ − 1/3) Φ⟩: only the f² terms contribute, ⟨(cos²Θ − 1/3) cos²Θ⟩ = 4/45.
+    Rational c_weight;
+    for (const auto& [e, c] : terms)
+      if (e[2] == 1)
+        c_weight += c * Rational(4, 45) * Rational::rising_half(dt, static_cast<unsigned long>(e[0] + 1)) *
+                    Rational::rising_half(dr, static_cast<unsigned long>(e[1] + 1));
+    correlation_weights_.push_back(c_weight.to_double());
+  }
+  for (std::size_t w = 0; w < nw; ++w)
+    for (const auto& [e, c] : exact_weights[w]) weight_terms_[w + 1].push_back({monomial_index(e), c.to_double()});
   for (const auto& t : tests_) {
-    maxwellian_.push_back(moment_m(t[0], t[1]).to_double());
+    Rational mean;
+    for (const auto& [e, c] : t.terms) mean += c * moment_m(e);
+    maxwellian_.push_back(mean.to_double());
     std::vector<double> row;
     for (const auto& terms : exact_weights) {
       Rational s;
-      for (const auto& [e, c] : terms) s += c * moment_m(t[0] + e[0], t[1] + e[1]);
+      for (const auto& [et, ct] : t.terms)
+        for (const auto& [e, c] : terms) s += ct * c * moment_m({et[0] + e[0], et[1] + e[1], et[2] + e[2]});
       row.push_back(s.to_double());
     }
     projection_.push_back(std::move(row));
   }
 
-  // The engine tables: gain ⟨x1^i y1^j x2^k y2^l x1'^m y1'^n⟩ and loss ⟨x1^i y1^j x2^k y2^l⟩.
+  const std::size_t nm = monomials_.size(), nt = tests_.size();
+  d_.assign(nm * nm * nt, TauLaurent{});
+  // D(a, b; t) = Σ_terms c [gain − loss], as a function of the table lookups.
+  auto fill = [&](const auto& gain_of, const auto& loss_of) {
+    for (std::size_t a = 0; a < nm; ++a)
+      for (std::size_t b = 0; b < nm; ++b) {
+        if (!products && a != 0 && b != 0) continue;
+        for (std::size_t t = 0; t < nt; ++t) {
+          const Test& test = tests_[t];
+          if (decoupled_ && test.terms.front().first[1] > 0) continue;  // no spin balance at β = −1
+          auto& out = d_[(a * nm + b) * nt + t];
+          for (const auto& [e, c] : test.terms) {
+            const int spin = monomials_[a][1] + monomials_[a][2] + monomials_[b][1] + monomials_[b][2] + e[1] + e[2];
+            add_scaled(out, gain_of(monomials_[a], monomials_[b], e), spin, c);
+            add_scaled(out, loss_of(monomials_[a], monomials_[b], e), spin, -c);
+          }
+          for (const auto& x : out.exact) out.c.push_back(x.to_double());
+        }
+      }
+  };
+
   const RoughForm x1 = rough_dot_form(RoughSlot::v1, RoughSlot::v1), y1 = rough_dot_form(RoughSlot::w1, RoughSlot::w1);
   const RoughForm x2 = rough_dot_form(RoughSlot::v2, RoughSlot::v2), y2 = rough_dot_form(RoughSlot::w2, RoughSlot::w2);
   const RoughForm x1p = rough_dot_form(RoughSlot::v1_post, RoughSlot::v1_post),
                   y1p = rough_dot_form(RoughSlot::w1_post, RoughSlot::w1_post);
-  // Only the moments the balances use (down-closed sets: total degrees per particle capped, and without
-  // the products one of the partners unweighted) — a fifth of the boxes at M = 4.
-  const bool both = products;
-  const RoughCollisionMoments<RationalPolynomial> gain(
-      params, {x1, y1, x2, y2, x1p, y1p}, {m, spin_top, m, spin_top, m, spin_top}, [m, both](const RoughExponents& e) {
-        const int w1 = e[0] + e[1], w2 = e[2] + e[3];
-        return w1 <= m && w2 <= m && e[4] + e[5] <= m && (both || w1 == 0 || w2 == 0);
-      });
-  const RoughCollisionMoments<RationalPolynomial> loss(params, {x1, y1, x2, y2}, {2 * m, 2 * spin_top, m, spin_top},
-                                                       [m, both](const RoughExponents& e) {
-                                                         const int w1 = e[0] + e[1], w2 = e[2] + e[3];
-                                                         return w1 <= 2 * m && w2 <= m && (both || w2 == 0 || w1 <= m);
+  using E3 = std::array<int, 3>;
+  if (!oriented) {
+    // The engine tables: gain ⟨x1^i y1^j x2^k y2^l x1'^m y1'^n⟩ and loss ⟨x1^i y1^j x2^k y2^l⟩. Only the
+    // moments the balances use (down-closed sets: total degrees per particle capped, and without the
+    // products one of the partners unweighted) — a fifth of the boxes at M = 4.
+    const bool both = products;
+    const RoughCollisionMoments<RationalPolynomial> gain(
+        params, {x1, y1, x2, y2, x1p, y1p}, {m, spin_top, m, spin_top, m, spin_top},
+        [m, both](const RoughExponents& e) {
+          const int w1 = e[0] + e[1], w2 = e[2] + e[3];
+          return w1 <= m && w2 <= m && e[4] + e[5] <= m && (both || w1 == 0 || w2 == 0);
+        });
+    const RoughCollisionMoments<RationalPolynomial> loss(
+        params, {x1, y1, x2, y2}, {2 * m, 2 * spin_top, m, spin_top}, [m, both](const RoughExponents& e) {
+          const int w1 = e[0] + e[1], w2 = e[2] + e[3];
+          return w1 <= 2 * m && w2 <= m && (both || w2 == 0 || w1 <= m);
+        });
+    fill(
+        [&](const E3& u, const E3& v, const E3& t) {
+          return gain.moment({u[0], u[1], v[0], v[1], t[0], t[1]});
+        },
+        [&](const E3& u, const E3& v, const E3& t) {
+          return loss.moment({u[0] + t[0], u[1] + t[1], v[0], v[1]});
+        });
+    return;
+  }
+  // Oriented (linear scheme: one partner unweighted): f = c·w enters as f² per P, so its exponent is 2e;
+  // a monomial's degree counts f² as 2. Gain with the weight on partner 1 or on partner 2, and one loss table.
+  const RoughForm f1 = rough_dot_form(RoughSlot::v1, RoughSlot::w1), f2 = rough_dot_form(RoughSlot::v2, RoughSlot::w2),
+                  f1p = rough_dot_form(RoughSlot::v1_post, RoughSlot::w1_post);
+  const auto capped = [m](const RoughExponents& e) { return e[0] + e[1] + e[2] <= m && e[3] + e[4] + e[5] <= m; };
+  const RoughCollisionMoments<RationalPolynomial> gain1(params, {x1, y1, f1, x1p, y1p, f1p}, {m, m, 2, m, m, 2},
+                                                        capped);
+  const RoughCollisionMoments<RationalPolynomial> gain2(params, {x2, y2, f2, x1p, y1p, f1p}, {m, m, 2, m, m, 2},
+                                                        capped);
+  const RoughCollisionMoments<RationalPolynomial> loss(params, {x1, y1, f1, x2, y2, f2}, {2 * m, 2 * m, 4, m, m, 2},
+                                                       [m](const RoughExponents& e) {
+                                                         const int w1 = e[0] + e[1] + e[2], w2 = e[3] + e[4] + e[5];
+                                                         return w1 <= 2 * m && w2 <= m && (w2 == 0 || w1 <= m);
                                                        });
-  const std::size_t nm = monomials_.size(), nt = tests_.size();
-  d_.assign(nm * nm * nt, TauLaurent{});
-  for (std::size_t a = 0; a < nm; ++a)
-    for (std::size_t b = 0; b < nm; ++b) {
-      if (!products && a != 0 && b != 0) continue;
-      const auto [i, j] = monomials_[a];
-      const auto [k, l] = monomials_[b];
-      for (std::size_t t = 0; t < nt; ++t) {
-        const auto [mx, my] = tests_[t];
-        if (decoupled_ && my > 0) continue;  // the spin tests are not balanced at β = −1
-        auto& out = d_[(a * nm + b) * nt + t];
-        const int spin = j + l + my;
-        add_scaled(out, gain.moment({i, j, k, l, mx, my}), spin, Rational(1));
-        add_scaled(out, loss.moment({i + mx, j + my, k, l}), spin, Rational(-1));
-        for (const auto& x : out.exact) out.c.push_back(x.to_double());
-      }
-    }
+  fill(
+      [&](const E3& u, const E3& v, const E3& t) {
+        if (v[0] + v[1] + v[2] == 0) return gain1.moment({u[0], u[1], 2 * u[2], t[0], t[1], 2 * t[2]});
+        return gain2.moment({v[0], v[1], 2 * v[2], t[0], t[1], 2 * t[2]});
+      },
+      [&](const E3& u, const E3& v, const E3& t) {
+        return loss.moment({u[0] + t[0], u[1] + t[1], 2 * (u[2] + t[2]), v[0], v[1], 2 * v[2]});
+      });
 }
 
 RoughSonineBalances::Productions RoughSonineBalances::productions(double tau, bool linear) const {
@@ -161,7 +236,7 @@ RoughSonineBalances::Productions RoughSonineBalances::productions(double tau, bo
 }
 
 std::vector<double> RoughSonineBalances::evaluate(const Productions& r, std::span<const double> a, bool linear) const {
-  const std::size_t k = cumulants_.size(), nt = tests_.size();
+  const std::size_t k = unknowns(), nt = tests_.size();
   if (a.size() != k) throw std::invalid_argument("RoughSonineBalances: wrong number of cumulants");
   if (!linear && !products_) throw std::logic_error("RoughSonineBalances: built without the product averages");
   // R[t](a) in full, and its parts of degree 0 and 1 in a.
@@ -181,7 +256,7 @@ std::vector<double> RoughSonineBalances::evaluate(const Productions& r, std::spa
   for (std::size_t t = 2; t < nt; ++t) {
     double delta = 0;  // ⟨ψ⟩ − ⟨ψ⟩_M
     for (std::size_t p = 0; p < k; ++p) delta += a[p] * projection_[t][p];
-    const double degree = tests_[t][0] + tests_[t][1];
+    const double degree = tests_[t].degree;
     const double scaling =
         linear ? z0 * maxwellian_[t] + z0 * delta + dz * maxwellian_[t] : z * (maxwellian_[t] + delta);
     f.push_back(degree * scaling + rr[t]);
@@ -196,10 +271,10 @@ std::vector<double> RoughSonineBalances::residual(double tau, std::span<const do
 double RoughSonineBalances::translational_rate(double tau, std::span<const double> a, bool linear) const {
   const Productions r = productions(tau, linear);
   double rx = r(0, 0, 0);
-  for (std::size_t p = 0; p < cumulants_.size(); ++p) {
+  for (std::size_t p = 0; p < unknowns(); ++p) {
     rx += a[p] * (r(p + 1, 0, 0) + r(0, p + 1, 0));
     if (!linear)
-      for (std::size_t q = 0; q < cumulants_.size(); ++q) rx += a[p] * a[q] * r(p + 1, q + 1, 0);
+      for (std::size_t q = 0; q < unknowns(); ++q) rx += a[p] * a[q] * r(p + 1, q + 1, 0);
   }
   return -2.0 / dimension_ * rx;
 }

@@ -9,10 +9,17 @@
 // come from the rough engine with θ symbolic (six forms x1, y1, x2, y2, x1', y1' for the gain
 // and four for the loss), combined exactly into Laurent polynomials in τ = θ/κ; per τ they are
 // evaluated in double and contracted with the Sonine coefficients.
+//
+// With `orientation` (spheres only, linear scheme; §19.14) the ansatz adds the velocity–spin
+// orientation family Σ b_pq P S_p^(5/2)(x) S_q^(5/2)(y), P = (c·ŵ)² − xy/3, p + q ≤ M − 2 (the same
+// total degree in c², ŵ² as the a_pq), with the tests ψ = P x^k y^l; their averages need the forms
+// f = c·w of theory.md (19.5a). For disks c·ŵ ≡ 0 (ŵ is normal to the plane of c): the flag does nothing.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "gkt/algebra/rational.hpp"
@@ -33,22 +40,32 @@ class RoughSonineBalances {
   /// Builds the exact tables for d ∈ {2, 3}, α, β, κ (validated: std::invalid_argument naming the
   /// field) and highest Sonine degree M = p + q ≥ 2. With `products` the Φ(1)Φ(2) averages (the
   /// nonlinear scheme) are built too.
+  /// nonlinear scheme) are built too. With `orientation` (d = 3, β > −1) the b_pq family is added
+  /// (std::logic_error together with `products`: nine engine forms, above the engine's eight).
   RoughSonineBalances(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
-                      int highest_degree, bool products);
+                      int highest_degree, bool products, bool orientation = false);
 
-  /// Returns the cumulant indices (p, q) in the order of the unknowns.
+  /// Returns the cumulant indices (p, q) of the a_pq, the first unknowns.
   [[nodiscard]] const std::vector<std::array<int, 2>>& cumulants() const { return cumulants_; }
+  /// Returns the indices (p, q) of the orientation coefficients b_pq, the unknowns after the a_pq (empty
+  /// without `orientation`, for disks and at β = −1).
+  [[nodiscard]] const std::vector<std::array<int, 2>>& orientations() const { return orientations_; }
+  /// Returns the number of unknowns (a_pq, then b_pq).
+  [[nodiscard]] std::size_t unknowns() const { return cumulants_.size() + orientations_.size(); }
+  /// Returns C − 1/3 = ⟨(c·ŵ)²/(xy)⟩ − 1/3 per unit b_pq, in the order of orientations() (theory.md §19.14).
+  [[nodiscard]] const std::vector<double>& correlation_weights() const { return correlation_weights_; }
   /// Returns true at β = −1 (the spin decouples; the unknowns are a_p0 only, τ plays no role).
   [[nodiscard]] bool spin_decoupled() const { return decoupled_; }
-  /// Returns the residuals at τ and a: F_0 = R[x]/d − R[y]/d_r (absent when the spin decouples), then
-  /// F_(k,l) = (k + l) z ⟨x^k y^l⟩ + R[x^k y^l] for the cumulant indices. `linear` drops every
+  /// Returns the residuals at τ and a (the unknowns: a_pq, then b_pq): F_0 = R[x]/d − R[y]/d_r (absent when
+  /// the spin decouples), then F_(k,l) = (k + l) z ⟨x^k y^l⟩ + R[x^k y^l] for the cumulant indices, then
+  /// (k + l + 2) z ⟨P x^k y^l⟩ + R[P x^k y^l] for the orientation indices. `linear` drops every
   /// product of cumulants (the linear scheme); otherwise all are kept (needs `products`).
   [[nodiscard]] std::vector<double> residual(double tau, std::span<const double> a, bool linear) const;
   /// Returns z_t = ζ_t/(nσ^{d−1}v_t ν) = −(2/d) R[x] at τ and a (linearised in a when `linear`).
   [[nodiscard]] double translational_rate(double tau, std::span<const double> a, bool linear) const;
 
-  /// R_{w1,w2}[t] at τ: weights 0 (Φ = 1) and 1 … K (the Sonine products), tests 0 = x, 1 = y,
-  /// 2 … K + 1 the cumulant indices. Entries with both weights ≠ 0 only with `products`.
+  /// R_{w1,w2}[t] at τ: weights 0 (Φ = 1) and 1 … K (the Sonine products, then the P products), tests
+  /// 0 = x, 1 = y, 2 … K + 1 the unknowns' indices. Entries with both weights ≠ 0 only with `products`.
   struct Productions {
     std::size_t weights = 0, tests = 0;
     std::vector<double> r;  // [w1][w2][t]
@@ -67,8 +84,16 @@ class RoughSonineBalances {
   bool products_;
   bool decoupled_;
   std::vector<std::array<int, 2>> cumulants_;
-  std::vector<std::array<int, 2>> tests_;      // x, y, then the cumulants
-  std::vector<std::array<int, 2>> monomials_;  // (i, j) with i + j ≤ M (j = 0 when decoupled)
+  std::vector<std::array<int, 2>> orientations_;
+  /// A test function as monomials x^i y^j (c·ŵ)^{2e} (index into monomials_) with exact coefficients, and its
+  /// scaling degree (k + l, or k + l + 2 for P x^k y^l).
+  struct Test {
+    int degree = 0;
+    std::vector<std::pair<std::array<int, 3>, Rational>> terms;
+  };
+  std::vector<Test> tests_;                    // x, y, then the unknowns
+  std::vector<std::array<int, 3>> monomials_;  // (i, j, e): x^i y^j (c·ŵ)^{2e}; i + j + 2e ≤ M (j = 0 when decoupled)
+  std::vector<double> correlation_weights_;
   /// Sonine products as monomials: per weight, (monomial index, coefficient).
   std::vector<std::vector<std::pair<std::size_t, double>>> weight_terms_;
   /// ⟨ψ_t⟩_M and ⟨ψ_t Φ_w⟩_M (exact rationals as doubles): [t], [t][w − 1].

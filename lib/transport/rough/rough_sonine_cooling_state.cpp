@@ -26,7 +26,7 @@ struct LinearPoint {
 };
 
 LinearPoint linear_point(const RoughSonineBalances& b, double tau) {
-  const std::size_t k = b.cumulants().size();
+  const std::size_t k = b.unknowns();
   const auto r = b.productions(tau, true);
   std::vector<double> a(k, 0.0);
   const auto f0 = b.evaluate(r, a, true);
@@ -52,7 +52,7 @@ LinearPoint linear_point(const RoughSonineBalances& b, double tau) {
 
 /// Returns the Maxwellian ln τ: the root of F_0(τ, 0) (bisection in ln τ, as the first-Sonine solver).
 double maxwellian_log_tau(const RoughSonineBalances& b) {
-  const std::vector<double> zero(b.cumulants().size(), 0.0);
+  const std::vector<double> zero(b.unknowns(), 0.0);
   auto g0 = [&](double lt) { return b.residual(std::exp(lt), zero, true)[0]; };
   double lo = 0, hi = 0;
   while (g0(lo) > 0 && lo > -80) lo -= 1;
@@ -67,7 +67,7 @@ double maxwellian_log_tau(const RoughSonineBalances& b) {
 
 bool realizable(const RoughSonineBalances& b, int d, const std::vector<double>& a) {
   double a20 = 0, a02 = 0, a11 = 0;
-  for (std::size_t p = 0; p < a.size(); ++p) {
+  for (std::size_t p = 0; p < b.cumulants().size(); ++p) {
     const auto [i, j] = b.cumulants()[p];
     if (i == 2 && j == 0) a20 = a[p];
     if (i == 0 && j == 2) a02 = a[p];
@@ -174,16 +174,29 @@ double RoughSonineCoolingState::cumulant(int p, int q) const {
 
 RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational& alpha, const Rational& beta,
                                                    const Rational& kappa, int order, RoughSonineScheme scheme) {
+  return rough_sonine_cooling_state(dimension, alpha, beta, kappa, order, scheme, RoughSonineAnsatz::isotropic);
+}
+
+RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational& alpha, const Rational& beta,
+                                                   const Rational& kappa, int order, RoughSonineScheme scheme,
+                                                   RoughSonineAnsatz ansatz) {
   if (order < 1) throw std::invalid_argument("order: must be an integer >= 1, got " + std::to_string(order));
   const bool nonlinear = scheme == RoughSonineScheme::nonlinear;
-  const RoughSonineBalances b(dimension, alpha, beta, kappa, order + 1, nonlinear);
+  const bool oriented = ansatz == RoughSonineAnsatz::oriented;
+  if (oriented && nonlinear)
+    throw std::invalid_argument(
+        "ansatz: the oriented Sonine HCS is solved in the linear scheme only (the nonlinear products need nine "
+        "engine forms)");
+  const RoughSonineBalances b(dimension, alpha, beta, kappa, order + 1, nonlinear, oriented);
   RoughSonineCoolingState s;
   s.order = order;
   s.indices = b.cumulants();
+  s.orientation_indices = b.orientations();
   s.spin_decoupled = b.spin_decoupled();
+  if (dimension != 3) s.orientation_correlation = kNaN;  // ŵ ⟂ the plane of c: c·ŵ ≡ 0
   const double center = s.spin_decoupled ? 0 : maxwellian_log_tau(b);
   double log_tau = center;
-  std::vector<double> a(s.indices.size(), 0.0);
+  std::vector<double> a(b.unknowns(), 0.0);
   bool ok = solve_linear(b, dimension, center, log_tau, a);
   if (nonlinear) {
     // From the linear solution of this order; failing that, from the nonlinear solution of the order
@@ -205,12 +218,16 @@ RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational
   }
   if (!ok) {
     s.solved = false;
-    s.temperature_ratio = s.cooling_rate = kNaN;
+    s.temperature_ratio = s.cooling_rate = s.orientation_correlation = kNaN;
     s.cumulants.assign(s.indices.size(), kNaN);
+    s.orientation_coefficients.assign(s.orientation_indices.size(), kNaN);
     return s;
   }
   const double d = dimension;
-  s.cumulants = a;
+  s.cumulants.assign(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(s.indices.size()));
+  s.orientation_coefficients.assign(a.begin() + static_cast<std::ptrdiff_t>(s.indices.size()), a.end());
+  for (std::size_t o = 0; o < s.orientation_coefficients.size(); ++o)
+    s.orientation_correlation += b.correlation_weights()[o] * s.orientation_coefficients[o];
   s.temperature_ratio =
       s.spin_decoupled ? std::numeric_limits<double>::infinity() : std::exp(log_tau) * kappa.to_double();
   s.cooling_rate = (d + 2) / 4 * b.translational_rate(std::exp(log_tau), a, !nonlinear);
