@@ -3,7 +3,8 @@
 // homogeneous cooling state in the Maxwellian or the linear first-Sonine approximation
 // (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11, and at
 // Sonine orders up to 3 in the linear or nonlinear scheme with the cumulants a_pq
-// (rough_sonine_cooling_state.hpp, §19.14); and the
+// (rough_sonine_cooling_state.hpp, §19.14; in 3D the linear scheme there carries the velocity–spin orientation
+// terms b_pq, and the orientation correlation C at order N > 1 comes from that solution); and the
 // shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7) and the orientational
 // correlation C (rough_orientation_correlation.hpp, §19.8); κ*, μ* (rough_thermal_conductivity.hpp) and
 // the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3; at order
@@ -132,7 +133,8 @@ class RoughModel final : public TransportModel {
            "nonlinear); shear and bulk viscosity, thermal conductivity, density heat coefficient, first-order "
            "cooling rate at first Sonine or Sonine order up to 8 (translation x spin Sonine products, Maxwellian "
            "reference); translation-rotation "
-           "correlation (3D); linear stability of the homogeneous cooling state";
+           "correlation (3D; first approximation at order 1, from the oriented linear Sonine HCS at orders 2-3); "
+           "linear stability of the homogeneous cooling state";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto names = kRoughTableColumns;
@@ -185,10 +187,25 @@ class RoughModel final : public TransportModel {
     // Order 1 asked for as such is the first approximation of §19.6–19.9 (error not estimated); order 1
     // chosen by a tolerance scan (row_tolerance set) carries its estimate like any other order. The HCS
     // columns take the Sonine HCS (theory.md §19.14) beyond it or with the nonlinear scheme, the five
-    // Navier–Stokes columns the Sonine solver of §19.16; C and the stability values are first approximations.
+    // Navier–Stokes columns the Sonine solver of §19.16; C at order 1 is §19.8's first approximation, beyond it
+    // the oriented linear Sonine HCS's (§19.14); the stability values are first approximations.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     const bool hcs_sonine = scheme == "nonlinear" || !first;
     for (const auto& name : coefficients) {
+      if (name == "orientation_correlation") {
+        if (d != 3)
+          throw std::invalid_argument(
+              "coefficients: orientation_correlation needs dimension = 3 (disks spin normal to the plane)");
+        // Beyond the first approximation C is the oriented linear Sonine HCS's (theory.md §19.14).
+        if (!first && scheme != "linear")
+          throw std::invalid_argument("hcs: orientation_correlation at order > 1 or with a tolerance comes from the "
+                                      "oriented Sonine HCS, solved in the linear scheme only: use hcs = \"linear\" "
+                                      "or order = 1");
+        if (!first && !order.tolerance && order.order > kMaxRoughHcsOrder)
+          throw std::invalid_argument("order: orientation_correlation of model rough takes orders 1 to " +
+                                      std::to_string(kMaxRoughHcsOrder) + ", got " + std::to_string(order.order));
+        continue;
+      }
       if (is_hcs_column(name)) {
         if (hcs_sonine && (scheme == "maxwellian" || scheme == "linear-or-maxwellian"))
           throw std::invalid_argument(
@@ -225,12 +242,16 @@ class RoughModel final : public TransportModel {
         }
       }
     }
+    // 3D linear: the oriented ansatz (a_pq and b_pq, theory.md §19.14); the nonlinear scheme keeps the isotropic one
+    // (its products of b need nine engine forms); for disks the two are the same (c·ŵ ≡ 0).
+    const bool linear_sonine = scheme != "nonlinear";
     HcsSonineStates hcs_states(d, alpha, beta, kappa,
-                               scheme == "nonlinear" ? RoughSonineScheme::nonlinear : RoughSonineScheme::linear);
+                               linear_sonine ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
+                               linear_sonine && d == 3 ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic);
     std::optional<HcsStability> stability;
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
-      if (hcs_sonine && is_hcs_column(name)) {
+      if ((hcs_sonine && is_hcs_column(name)) || (!first && name == "orientation_correlation")) {
         out.push_back(hcs_sonine_value(hcs_states, name, order));
         continue;
       }
@@ -264,10 +285,7 @@ class RoughModel final : public TransportModel {
       } else if (cumulant_of(name)) {
         x = 0;  // first Sonine: the higher cumulants are truncated
       } else if (name == "orientation_correlation") {
-        if (d != 3)
-          throw std::invalid_argument(
-              "coefficients: orientation_correlation needs dimension = 3 (disks spin normal to the plane)");
-        x = rough_orientation_correlation(alpha, beta, kappa).correlation;  // theory.md §19.8
+        x = rough_orientation_correlation(alpha, beta, kappa).correlation;  // first approximation, theory.md §19.8
       } else if (name == "thermal_conductivity") {
         x = rough_thermal_conductivity(d, alpha, beta, kappa).total;  // theory.md §19.7; NaN at β = −1
       } else if (name == "density_heat_coefficient") {
@@ -293,12 +311,18 @@ class RoughModel final : public TransportModel {
   /// The Sonine HCS states of one (d, α, β, κ) and scheme, solved on first use per order.
   class HcsSonineStates {
    public:
-    HcsSonineStates(int d, Rational alpha, Rational beta, Rational kappa, RoughSonineScheme scheme)
-        : d_(d), alpha_(std::move(alpha)), beta_(std::move(beta)), kappa_(std::move(kappa)), scheme_(scheme) {}
+    HcsSonineStates(int d, Rational alpha, Rational beta, Rational kappa, RoughSonineScheme scheme,
+                    RoughSonineAnsatz ansatz)
+        : d_(d),
+          alpha_(std::move(alpha)),
+          beta_(std::move(beta)),
+          kappa_(std::move(kappa)),
+          scheme_(scheme),
+          ansatz_(ansatz) {}
     const RoughSonineCoolingState& at(int n) {
       auto it = states_.find(n);
       if (it == states_.end())
-        it = states_.emplace(n, rough_sonine_cooling_state(d_, alpha_, beta_, kappa_, n, scheme_)).first;
+        it = states_.emplace(n, rough_sonine_cooling_state(d_, alpha_, beta_, kappa_, n, scheme_, ansatz_)).first;
       return it->second;
     }
 
@@ -306,6 +330,7 @@ class RoughModel final : public TransportModel {
     int d_;
     Rational alpha_, beta_, kappa_;
     RoughSonineScheme scheme_;
+    RoughSonineAnsatz ansatz_;
     std::map<int, RoughSonineCoolingState> states_;
   };
 
@@ -316,6 +341,7 @@ class RoughModel final : public TransportModel {
     auto pick = [&name](const RoughSonineCoolingState& st) {
       if (name == "rotational_temperature_ratio") return st.temperature_ratio;
       if (name == "cooling_rate") return st.cooling_rate;
+      if (name == "orientation_correlation") return st.orientation_correlation;
       const auto pq = *cumulant_of(name);
       return st.cumulant(pq[0], pq[1]);
     };
