@@ -711,7 +711,8 @@ TEST(CliRough, SonineOrdersOfTheCoolingState) {
   EXPECT_NEAR(std::stod(n[1][1]), std::stod(f[1][1]), 2e-4);
   EXPECT_NE(n[1][1], f[1][1]);
   for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
-           {"tolerance=1e-3 --set 'hcs=\"nonlinear\"'", "hcs: orientation_correlation at order > 1 or with a tolerance"},
+           {"tolerance=1e-3 --set 'hcs=\"nonlinear\"'",
+            "hcs: orientation_correlation at order > 1 or with a tolerance"},
            {"order=4", "order: rotational_temperature_ratio of model rough takes orders 1 to 3, got 4"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;

@@ -101,10 +101,9 @@ TEST(RoughOrientedCoolingState, SmoothLimitAndDisksAreTheIsotropicAnsatz) {
 // The b00 balance alone at the Maxwellian τ with every a_pq = 0 is §19.8's first approximation (19.14),
 // assembled there from 13 separate engine tables: b and C = 1/3 + b/5 agree.
 TEST(RoughOrientedCoolingState, FirstTermAloneIsTheClosedForm) {
-  for (const auto& [alpha, beta, kappa] :
-       {std::array<Rational, 3>{Rational(9, 10), Rational(1, 2), Rational(2, 5)},
-        std::array<Rational, 3>{Rational(1, 2), Rational(-1, 2), Rational(2, 5)},
-        std::array<Rational, 3>{Rational(7, 10), Rational(1), Rational(1, 10)}}) {
+  for (const auto& [alpha, beta, kappa] : {std::array<Rational, 3>{Rational(9, 10), Rational(1, 2), Rational(2, 5)},
+                                           std::array<Rational, 3>{Rational(1, 2), Rational(-1, 2), Rational(2, 5)},
+                                           std::array<Rational, 3>{Rational(7, 10), Rational(1), Rational(1, 10)}}) {
     const auto closed = gkt::rough_orientation_correlation(alpha, beta, kappa);
     const gkt::detail::RoughSonineBalances b(3, alpha, beta, kappa, 2, false, true);
     ASSERT_EQ(b.orientations().size(), 1u);
@@ -129,8 +128,8 @@ TEST(RoughOrientedCoolingState, ConvergesWithOrder) {
   std::vector<double> theta, c, iso;
   for (int order = 1; order <= 3; ++order) {
     const auto s = oriented(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), order);
-    const auto i =
-        gkt::rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), order, RoughSonineScheme::linear);
+    const auto i = gkt::rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), order,
+                                                   RoughSonineScheme::linear);
     ASSERT_TRUE(s.solved && i.solved) << order;
     EXPECT_EQ(s.orientation_indices.size(), static_cast<std::size_t>(order * (order + 1) / 2));
     theta.push_back(s.temperature_ratio);
@@ -177,8 +176,8 @@ TEST(RoughOrientedCoolingState, AgainstTheDsmc) {
     EXPECT_LT(cc.mean, 1.0 / 3 - 5 * cc.error);  // the isotropic ansatz's C = 1/3 is excluded
   }
   // Strong roughness (0.7, 1) and strong inelasticity (0.3, 1): one run of 8000 particles, 20 + 100 per particle.
-  for (const auto& [alpha, beta] : {std::array<Rational, 2>{Rational(7, 10), Rational(1)},
-                                    std::array<Rational, 2>{Rational(3, 10), Rational(1)}}) {
+  for (const auto& [alpha, beta] :
+       {std::array<Rational, 2>{Rational(7, 10), Rational(1)}, std::array<Rational, 2>{Rational(3, 10), Rational(1)}}) {
     const auto s = with_error(alpha, beta);
     const auto sim =
         gkt::test::run_rough_hcs_dsmc(3, alpha.to_double(), beta.to_double(), 0.4, s[0], 8000, 20, 10, 10, 5);

@@ -198,9 +198,10 @@ class RoughModel final : public TransportModel {
               "coefficients: orientation_correlation needs dimension = 3 (disks spin normal to the plane)");
         // Beyond the first approximation C is the oriented linear Sonine HCS's (theory.md §19.14).
         if (!first && scheme != "linear")
-          throw std::invalid_argument("hcs: orientation_correlation at order > 1 or with a tolerance comes from the "
-                                      "oriented Sonine HCS, solved in the linear scheme only: use hcs = \"linear\" "
-                                      "or order = 1");
+          throw std::invalid_argument(
+              "hcs: orientation_correlation at order > 1 or with a tolerance comes from the "
+              "oriented Sonine HCS, solved in the linear scheme only: use hcs = \"linear\" "
+              "or order = 1");
         if (!first && !order.tolerance && order.order > kMaxRoughHcsOrder)
           throw std::invalid_argument("order: orientation_correlation of model rough takes orders 1 to " +
                                       std::to_string(kMaxRoughHcsOrder) + ", got " + std::to_string(order.order));
