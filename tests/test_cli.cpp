@@ -719,6 +719,25 @@ TEST(CliRough, SonineOrdersOfTheCoolingState) {
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
   }
+  // The orientation columns (theory.md §19.14): order 1 is the first approximation of §19.8 (C = 1/3 + b00/5,
+  // b10 truncated), order 2 the oriented Sonine HCS (θ, C and b_pq of one solution, with errors); disks refused.
+  const std::string orient =
+      " --set 'alpha=[0.9]' --set 'coefficients=[\"orientation_correlation\", \"b00\", \"b10\"]'";
+  const CliRun o1 = run_gkt("table " + scene_path("rough_hcs.toml") + orient);
+  const CliRun o2 = run_gkt("table " + scene_path("rough_hcs.toml") + orient + " --set order=2");
+  ASSERT_EQ(o1.status, 0) << o1.err;
+  ASSERT_EQ(o2.status, 0) << o2.err;
+  const auto r1 = parse_csv(o1.out), r2 = parse_csv(o2.out);
+  EXPECT_NEAR(std::stod(r1[1][1]), 1.0 / 3 + std::stod(r1[1][2]) / 5, 1e-15);
+  EXPECT_EQ(r1[1][3], "0");
+  EXPECT_NEAR(std::stod(r2[1][1]), 0.32983, 2e-5);
+  EXPECT_NEAR(std::stod(r2[1][2]), -0.01948, 2e-5);
+  EXPECT_NE(r2[1][3], "0");
+  EXPECT_LT(std::stod(r2[1][4]), 2e-3);  // error |C_3 − C_2|
+  const CliRun disks = run_gkt("table " + scene_path("rough_hcs.toml") + orient + " --set dimension=2 --set order=2");
+  EXPECT_EQ(disks.status, 2);
+  EXPECT_NE(disks.err.find("coefficients: orientation_correlation needs dimension = 3"), std::string::npos)
+      << disks.err;
   const CliRun maxwellian =
       run_gkt("table " + scene_path("rough_hcs.toml") + hcs + " --set order=2 --set 'hcs=\"maxwellian\"'");
   EXPECT_EQ(maxwellian.status, 2);

@@ -91,6 +91,20 @@ std::optional<std::array<int, 2>> cumulant_of(const std::string& name) {
   return std::array<int, 2>{p, q};
 }
 
+/// Returns (p, q) of an orientation column b<p><q> with p + q ≤ kMaxRoughHcsOrder − 1 (theory.md (19.26a)), or none.
+std::optional<std::array<int, 2>> orientation_of(const std::string& name) {
+  if (name.size() != 3 || name[0] != 'b' || name[1] < '0' || name[1] > '9' || name[2] < '0' || name[2] > '9')
+    return std::nullopt;
+  const int p = name[1] - '0', q = name[2] - '0';
+  if (p + q > kMaxRoughHcsOrder - 1) return std::nullopt;
+  return std::array<int, 2>{p, q};
+}
+
+/// Returns true for the columns of the velocity–spin orientation: C and the b_pq (3D only; theory.md §19.8, §19.14).
+bool is_orientation_column(const std::string& name) {
+  return name == "orientation_correlation" || orientation_of(name).has_value();
+}
+
 /// Returns the HCS columns that take a Sonine order (θ, ζ*, every a_pq).
 bool is_hcs_column(const std::string& name) {
   return name == "rotational_temperature_ratio" || name == "cooling_rate" || cumulant_of(name).has_value();
@@ -141,6 +155,13 @@ class RoughModel final : public TransportModel {
     // The higher cumulants of the Sonine HCS (theory.md §19.14), by total degree p + q.
     for (int n = 3; n <= kMaxRoughHcsOrder + 1; ++n)
       for (int q = 0; q <= n; ++q) names.push_back(cumulant_column(n - q, q));
+    // The orientation coefficients b_pq of the oriented Sonine HCS (3D, theory.md (19.26a)).
+    for (int n = 0; n <= kMaxRoughHcsOrder - 1; ++n)
+      for (int q = 0; q <= n; ++q) {
+        std::string b = cumulant_column(n - q, q);
+        b[0] = 'b';
+        names.push_back(b);
+      }
     for (const auto& c : stability_coefficient_names()) names.push_back(c);
     return names;
   }
@@ -192,18 +213,17 @@ class RoughModel final : public TransportModel {
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     const bool hcs_sonine = scheme == "nonlinear" || !first;
     for (const auto& name : coefficients) {
-      if (name == "orientation_correlation") {
+      if (is_orientation_column(name)) {
         if (d != 3)
-          throw std::invalid_argument(
-              "coefficients: orientation_correlation needs dimension = 3 (disks spin normal to the plane)");
-        // Beyond the first approximation C is the oriented linear Sonine HCS's (theory.md §19.14).
+          throw std::invalid_argument("coefficients: " + name +
+                                      " needs dimension = 3 (disks spin normal to the plane)");
+        // Beyond the first approximation C and b_pq are the oriented linear Sonine HCS's (theory.md §19.14).
         if (!first && scheme != "linear")
-          throw std::invalid_argument(
-              "hcs: orientation_correlation at order > 1 or with a tolerance comes from the "
-              "oriented Sonine HCS, solved in the linear scheme only: use hcs = \"linear\" "
-              "or order = 1");
+          throw std::invalid_argument("hcs: " + name +
+                                      " at order > 1 or with a tolerance comes from the oriented Sonine HCS, "
+                                      "solved in the linear scheme only: use hcs = \"linear\" or order = 1");
         if (!first && !order.tolerance && order.order > kMaxRoughHcsOrder)
-          throw std::invalid_argument("order: orientation_correlation of model rough takes orders 1 to " +
+          throw std::invalid_argument("order: " + name + " of model rough takes orders 1 to " +
                                       std::to_string(kMaxRoughHcsOrder) + ", got " + std::to_string(order.order));
         continue;
       }
@@ -252,7 +272,7 @@ class RoughModel final : public TransportModel {
     std::optional<HcsStability> stability;
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
-      if ((hcs_sonine && is_hcs_column(name)) || (!first && name == "orientation_correlation")) {
+      if ((hcs_sonine && is_hcs_column(name)) || (!first && is_orientation_column(name))) {
         out.push_back(hcs_sonine_value(hcs_states, name, order));
         continue;
       }
@@ -287,6 +307,9 @@ class RoughModel final : public TransportModel {
         x = 0;  // first Sonine: the higher cumulants are truncated
       } else if (name == "orientation_correlation") {
         x = rough_orientation_correlation(alpha, beta, kappa).correlation;  // first approximation, theory.md §19.8
+      } else if (const auto pq = orientation_of(name)) {
+        // First approximation (19.14): b00 alone; the higher b_pq are truncated.
+        x = *pq == std::array<int, 2>{0, 0} ? rough_orientation_correlation(alpha, beta, kappa).b : 0.0;
       } else if (name == "thermal_conductivity") {
         x = rough_thermal_conductivity(d, alpha, beta, kappa).total;  // theory.md §19.7; NaN at β = −1
       } else if (name == "density_heat_coefficient") {
@@ -343,6 +366,7 @@ class RoughModel final : public TransportModel {
       if (name == "rotational_temperature_ratio") return st.temperature_ratio;
       if (name == "cooling_rate") return st.cooling_rate;
       if (name == "orientation_correlation") return st.orientation_correlation;
+      if (const auto b = orientation_of(name)) return st.orientation_coefficient((*b)[0], (*b)[1]);
       const auto pq = *cumulant_of(name);
       return st.cumulant(pq[0], pq[1]);
     };

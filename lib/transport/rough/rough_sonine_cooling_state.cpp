@@ -172,6 +172,13 @@ double RoughSonineCoolingState::cumulant(int p, int q) const {
   return 0;
 }
 
+double RoughSonineCoolingState::orientation_coefficient(int p, int q) const {
+  if (!solved || std::isnan(orientation_correlation)) return kNaN;
+  for (std::size_t i = 0; i < orientation_indices.size(); ++i)
+    if (orientation_indices[i][0] == p && orientation_indices[i][1] == q) return orientation_coefficients[i];
+  return 0;
+}
+
 RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational& alpha, const Rational& beta,
                                                    const Rational& kappa, int order, RoughSonineScheme scheme) {
   return rough_sonine_cooling_state(dimension, alpha, beta, kappa, order, scheme, RoughSonineAnsatz::isotropic);

@@ -46,6 +46,9 @@ struct RoughSonineCoolingState {
   /// Returns a_pq: 0 beyond the order (the truncation), NaN for a spin cumulant at β = −1 or when
   /// not solved.
   [[nodiscard]] double cumulant(int p, int q) const;
+  /// Returns b_pq: 0 beyond the order or without orientation terms (isotropic ansatz, β = −1), NaN for disks
+  /// (no orientation variable) or when not solved.
+  [[nodiscard]] double orientation_coefficient(int p, int q) const;
 };
 
 /// Returns the HCS at Sonine order N ≥ 1 for d ∈ {2, 3}, α ∈ (0, 1], β ∈ [−1, 1], κ ∈ (0, 1]
