@@ -186,3 +186,20 @@ TEST(RoughOrientedCoolingState, AgainstTheDsmc) {
     EXPECT_LT(s[2], 1.0 / 3 - 5e-4);
   }
 }
+
+// β → −1⁺ at α = 0.5 (theory.md §19.14): θ ~ 1/η_t² diverges, C tends to a limit below 1/3 at orders 1 and 2
+// (the closed form's 1/3 − 3(1 − α)/(8(7 − α)) = 0.3045 at first approximation), while β = −1 itself has
+// C = 1/3: the quasi-smooth limit is singular.
+TEST(RoughOrientedCoolingState, QuasiSmoothLimitOfTheCorrelationIsSingular) {
+  const Rational alpha(1, 2), kappa(2, 5);
+  for (int order : {1, 2}) {
+    const auto near = oriented(3, alpha, Rational(-9999, 10000), kappa, order);
+    const auto nearer = oriented(3, alpha, Rational(-99999, 100000), kappa, order);
+    const auto at = oriented(3, alpha, Rational(-1), kappa, order);
+    ASSERT_TRUE(near.solved && nearer.solved && at.solved) << order;
+    EXPECT_GT(nearer.temperature_ratio, 50 * near.temperature_ratio);                          // θ ∝ 1/(1 + β)²
+    EXPECT_NEAR(nearer.orientation_correlation, near.orientation_correlation, 1e-4) << order;  // a limit
+    EXPECT_LT(nearer.orientation_correlation, 1.0 / 3 - 0.01) << order;
+    EXPECT_EQ(at.orientation_correlation, 1.0 / 3);
+  }
+}
