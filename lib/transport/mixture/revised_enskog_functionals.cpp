@@ -146,7 +146,8 @@ std::vector<double> revised_enskog_functionals(const Mixture& mixture) {
   if (g.phi == 0 || g.sigma[0] == g.sigma[1]) return out;  // (18.20): the midpoint expansion is then exact
   const int d = g.d;
   const std::vector<double> hessian = excess_hessian(g);
-  // (18.20): ½ σ_ij^d χ_ij I_ℓij = ∂_ℓ(μ_i^ex/T)/(2B_2) − Σ_k σ_ik^d [χ_ik δ_kℓ + ½ n_k ∂_ℓ χ_ik], j ≠ i.
+  // (18.20), from the consistency (18.19) of the revised theory [vanbeijeren1973], [lopezdeharo1983]:
+  // ½ σ_ij^d χ_ij I_ℓij = ∂_ℓ(μ_i^ex/T)/(2B_2) − Σ_k σ_ik^d [χ_ik δ_kℓ + ½ n_k ∂_ℓ χ_ik], j ≠ i.
   for (std::size_t i = 0; i < s; ++i) {
     const std::size_t j = 1 - i;
     for (std::size_t l = 0; l < s; ++l) {
