@@ -16,6 +16,7 @@
 #include "gkt/transport/mixture/mixture.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 #include "gkt/transport/mixture/mixture_transport_table.hpp"
+#include "gkt/transport/mixture/revised_enskog_functionals.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
 #include "mixture_test_helpers.hpp"
 
@@ -291,13 +292,13 @@ TEST(MixtureEnskog, ThermalDiffusionFactor) {
 // Reciprocity of the elastic dense mixture. The elastic Enskog operator is symmetric in
 // ⟨X, Y⟩ = Σ_i ∫X_i Y_i/f_i, so ⟨ℬ^l, S^𝒜⟩ = ⟨𝒜, S^l⟩. For equal-temperature Maxwellians the adjoint of
 // the ∇T transfer source is −q^c(f^(1))/T (the collisional heat flux) and that of the ∇n_l source is
-// −2B_2 Σ_ij σ_ij^d χ_ij [δ_jl + ½ n_j ∂_l ln χ_ij] × (number flux of species i), since
-// ∫dv2 dσ̂ Θ(σ̂·g)(σ̂·g) σ̂ f_j(v2) = B_2 n_j V1 and the same with (2θ_j V2² − d) vanishes. With
-// ⟨⟨ΔE_1⟩⟩ = 0 (equal temperatures) this gives, at every Galerkin order,
-//     T D''_l/n_l − (d/2)(m_l/ρ) Σ_i D_il = ρ D^T_l/(m_l n_l) + 2B_2 Σ_ij (ρ D^T_i/m_i) σ_ij^d χ_ij [δ_jl + ½ n_j ∂_l
-//     ln χ_ij],
-// the dense form of (17.12). Nothing in the assembly imposes it: it ties the K sources, the
-// collisional heat flux (unequal masses), p and ∂p/∂n_l together. Unequal masses and diameters.
+// −2B_2 Σ_ij σ_ij^d χ_ij [δ_jl + ½(n_j ∂_l ln χ_ij + I_lij)] × (number flux of species i), since
+// ∫dv2 dσ̂ Θ(σ̂·g)(σ̂·g) σ̂ f_j(v2) = B_2 n_j V1 and the same with (2θ_j V2² − d) vanishes; by (18.19) the
+// sum over j is ∂(μ_i/T)/∂n_l − δ_il/n_i. With ⟨⟨ΔE_1⟩⟩ = 0 (equal temperatures) this gives, at every
+// Galerkin order, the Onsager relation in the forces ∇(μ_i/T) (theory.md (18.12)):
+//     T D''_l/n_l − (d/2)(m_l/ρ) Σ_i D_il = Σ_i (ρ D^T_i/m_i) ∂(μ_i/T)/∂n_l.
+// Nothing in the assembly imposes it: it ties the K sources, the collisional heat flux (unequal
+// masses), p, ∂p/∂n_l and the I_lij of (18.19) together. Unequal masses and diameters.
 TEST(MixtureEnskog, ElasticReciprocity) {
   const double T = 1;
   for (int d : {2, 3})
@@ -309,22 +310,17 @@ TEST(MixtureEnskog, ElasticReciprocity) {
         // κ0 = (d(d+2)/(2(d−1))) η0/m̄ and D0 = (2d/(d+2)) η0/(ρ) (docs/conventions.md).
         const double kappa0 = d * (d + 2) / (2.0 * (d - 1)) * eta0 / mbar;
         const double d0 = 2.0 * d / (d + 2) * eta0 / (n * mbar);
-        const double rho = n * mbar, b2 = b_constant(d, 2);
-        const auto chi = m.contact_values(), dchi = m.contact_value_derivatives();
+        const double rho = n * mbar;
+        const auto mu = gkt::chemical_potential_derivatives(m);  // n_i ∂(μ_i/T)/∂n_l
         for (int order : {1, 3}) {
           const auto v = ns.coefficients(order);
           for (std::size_t l = 0; l < 2; ++l) {
             const double ml = m.species[l].mass.value(), nl = n * m.species[l].fraction;
-            double lhs = v.dufour[l] * kappa0 / nl, rhs = rho * v.thermal_diffusion[l] * d0 / (ml * nl);
+            double lhs = v.dufour[l] * kappa0 / nl, rhs = 0;
             for (std::size_t i = 0; i < 2; ++i) {
               lhs -= d / 2.0 * ml / rho * v.mutual_diffusion[i * 2 + l] * n * d0;
-              for (std::size_t j = 0; j < 2; ++j) {
-                const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter);
-                rhs +=
-                    2 * b2 * rho * v.thermal_diffusion[i] * d0 / m.species[i].mass.value() * std::pow(sigma, d) *
-                    chi[i * 2 + j] *
-                    ((j == l ? 1.0 : 0.0) + 0.5 * m.species[j].fraction * dchi[(i * 2 + j) * 2 + l] / chi[i * 2 + j]);
-              }
+              rhs += rho * v.thermal_diffusion[i] * d0 / m.species[i].mass.value() * mu[i * 2 + l] /
+                     (n * m.species[i].fraction);
             }
             EXPECT_LT(std::abs(lhs - rhs), 1e-12 * std::abs(lhs)) << d << " " << phi << " " << s2 << " " << order;
           }

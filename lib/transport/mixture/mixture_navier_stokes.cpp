@@ -14,6 +14,7 @@
 #include "gkt/operators/linearized_operator.hpp"
 #include "gkt/operators/mixture_collisional_transfer.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
+#include "gkt/transport/mixture/revised_enskog_functionals.hpp"
 #include "transport/common/galerkin_pieces.hpp"
 #include "transport/mixture/cumulant_sources.hpp"
 
@@ -152,6 +153,9 @@ struct MixtureNavierStokes::Impl {
   std::vector<double> rate_, length_, alpha_;
   std::vector<PairTransferMoments> transfer_;
   std::vector<double> dchi_, pressure_derivative_;
+  // The revised-Enskog functionals I_ℓij at (i·s + j)·s + ℓ (theory.md (18.18)–(18.20)): a dense binary only,
+  // empty otherwise (zero).
+  std::vector<double> functionals_;
   double pressure_ = 1;
 };
 
@@ -243,6 +247,7 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
   scalar_d_ = to_matrix(detail::rounded(detail::scalar_pieces(d, ns - 1, 0)).d);
   const std::vector<double> dchi = mixture.contact_value_derivatives();
   for (std::size_t k = 0; k < dchi.size(); ++k) dchi_.push_back(dchi[k] / chi[k / s_]);
+  if (s_ == 2) functionals_ = revised_enskog_functionals(mixture);
   // p = nT + B_2 Σ_ij μ_ji (1+α_ij) σ_ij^d χ_ij n_i n_j T_i, B_2 = π^{(d−1)/2} Γ(3/2)/Γ(d/2 + 1) (18.2);
   // its derivative at fixed T also moves χ_ij and γ_i.
   const double b2 = std::pow(std::numbers::pi, (d - 1) / 2.0) * std::tgamma(1.5) / std::tgamma(d / 2.0 + 1);
@@ -371,8 +376,8 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
 MixtureNavierStokes::Impl::TransferSources MixtureNavierStokes::Impl::transfer_sources(int order,
                                                                                        bool per_particle) const {
   // (18.4): the K_i of the Enskog operator's gradient expansion projected on c_i S_p(X_i), per pair
-  // L_ij R_ij x_i x_j ⟨⟨σ̂·Δ[c1 S_p]·(∂ ln f_j + ½ ∂ ln χ_ij)⟩⟩; per particle the rows are divided by x_i
-  // and the density modes are per ∇ln n_l (× x_l).
+  // L_ij R_ij x_i x_j ⟨⟨σ̂·Δ[c1 S_p]·(∂ ln f_j + ½ ∂ ln χ_ij + ½ Σ_ℓ I_ℓij ∂n_ℓ/n_j)⟩⟩ (18.21); per particle the rows
+  // are divided by x_i and the density modes are per ∇ln n_l (× x_l).
   TransferSources out;
   if (!dense_) return out;
   const int n = order + 1;
@@ -391,9 +396,9 @@ MixtureNavierStokes::Impl::TransferSources MixtureNavierStokes::Impl::transfer_s
         out.heat(row) += f * fraction_[j] * t.source_temperature[P_];
         for (std::size_t l = 0; l < s_; ++l) {
           const double g = sensitivity_.temperature_ratio[j * s_ + l];
-          const double v =
-              (j == l ? t.source_density[P_] : 0.0) +
-              fraction_[j] * (g * t.source_temperature[P_] + 0.5 * dchi_[P * s_ + l] * t.source_density[P_]);
+          double v = (j == l ? t.source_density[P_] : 0.0) +
+                     fraction_[j] * (g * t.source_temperature[P_] + 0.5 * dchi_[P * s_ + l] * t.source_density[P_]);
+          if (!functionals_.empty()) v += 0.5 * functionals_[P * s_ + l] * t.source_density[P_];  // (18.21)
           out.density[l](row) += f * (per_particle ? fraction_[l] : 1.0) * v;
         }
       }
@@ -564,10 +569,11 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
         for (std::size_t k = 0; k < s; ++k) {
           const PairTransferMoments& t = transfer_[pair_index(i, k)];
           const double gi = sensitivity_.temperature_ratio[i * s + j], gk = sensitivity_.temperature_ratio[k * s + j];
-          const double v =
-              (k == j ? fraction_[i] : 0.0) * t.energy - (i == j ? fraction_[k] : 0.0) * t.energy +
-              fraction_[i] * fraction_[k] *
-                  (gk * (t.energy_partner - 0.5 * d * t.energy) - gi * (t.energy_self - 0.5 * d * t.energy));
+          double v = (k == j ? fraction_[i] : 0.0) * t.energy - (i == j ? fraction_[k] : 0.0) * t.energy +
+                     fraction_[i] * fraction_[k] *
+                         (gk * (t.energy_partner - 0.5 * d * t.energy) - gi * (t.energy_self - 0.5 * d * t.energy));
+          if (!functionals_.empty())  // (18.22): the off-midpoint contact value, I_jik/x_k per ∇n_j
+            v += fraction_[i] * functionals_[pair_index(i, k) * s + j] * t.energy;
           heat += gradient_heat(i, k) * v;
         }
     }

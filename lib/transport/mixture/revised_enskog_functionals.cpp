@@ -1,0 +1,167 @@
+#include "gkt/transport/mixture/revised_enskog_functionals.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Eigenvalues>
+
+namespace gkt {
+
+namespace {
+
+/// The closures (16.1) as χ_ij = F(φ, a_ij y) = Σ_k c_k u^k (1 − φ)^{−(k+1)}, u = a_ij y, with their
+/// first and second derivatives: 3D [boublik1970], [mansoori1971] c = (1, 3/2, 1/2); 2D [jenkins1987]
+/// c = (1, 9/16) (the same numbers as Mixture::contact_values, which the tests compare).
+struct ContactFunction {
+  double f = 0, f_phi = 0, f_u = 0, f_phiphi = 0, f_phiu = 0, f_uu = 0;
+};
+
+ContactFunction contact_function(int dimension, double phi, double u) {
+  const std::array<double, 3> c =
+      dimension == 3 ? std::array<double, 3>{1, 1.5, 0.5} : std::array<double, 3>{1, 0.5625, 0};
+  const double g = 1 - phi;
+  ContactFunction out;
+  for (int k = 0; k < 3; ++k) {
+    const double ck = c[static_cast<std::size_t>(k)] * std::pow(g, -(k + 1));
+    out.f += ck * std::pow(u, k);
+    out.f_phi += ck * (k + 1) * std::pow(u, k) / g;
+    out.f_phiphi += ck * (k + 1) * (k + 2) * std::pow(u, k) / (g * g);
+    if (k >= 1) {
+      out.f_u += ck * k * std::pow(u, k - 1);
+      out.f_phiu += ck * k * (k + 1) * std::pow(u, k - 1) / g;
+    }
+    if (k >= 2) out.f_uu += ck * k * (k - 1) * std::pow(u, k - 2);
+  }
+  return out;
+}
+
+/// Gauss–Legendre rule on [0, 1] (Golub–Welsch): the λ integrands of (18.17) are rational in λ with
+/// their poles at λ ≥ 1/φ > 1.4, so 24 nodes integrate them to rounding.
+struct LambdaRule {
+  std::array<double, 24> node{}, weight{};
+};
+
+const LambdaRule& lambda_rule() {
+  static const LambdaRule rule = [] {
+    constexpr int n = 24;
+    Eigen::MatrixXd jacobi = Eigen::MatrixXd::Zero(n, n);
+    for (int k = 1; k < n; ++k) jacobi(k, k - 1) = jacobi(k - 1, k) = k / std::sqrt(4.0 * k * k - 1);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(jacobi);
+    LambdaRule r;
+    for (int q = 0; q < n; ++q) {
+      r.node[static_cast<std::size_t>(q)] = 0.5 * (1 + solver.eigenvalues()(q));
+      r.weight[static_cast<std::size_t>(q)] = solver.eigenvectors()(0, q) * solver.eigenvectors()(0, q);
+    }
+    return r;
+  }();
+  return rule;
+}
+
+/// The mixture in the units σ̄ = 1 with absolute partial densities n_k = n x_k, n = φ/(v_d Σ x σ^d):
+/// φ = v_d Σ n_k σ_k^d and y = v_d Σ n_k σ_k^{d−1} (3D y = φM2/M3, 2D y = φM1/M2 of (18.1)).
+struct Geometry {
+  int d = 3;
+  std::size_t s = 0;
+  std::vector<double> sigma, density;
+  double v_d = 0, b2 = 0, phi = 0, y = 0;
+
+  explicit Geometry(const Mixture& m) : d(m.dimension), s(m.size()) {
+    m.validate();
+    v_d = std::pow(std::numbers::pi, d / 2.0) / (std::pow(2.0, d) * std::tgamma(d / 2.0 + 1));
+    b2 = std::pow(std::numbers::pi, d / 2.0) / (2 * std::tgamma(d / 2.0 + 1));  // B_2 of (18.2)
+    double volume = 0;
+    for (const Species& sp : m.species) {
+      sigma.push_back(sp.diameter / m.mean_diameter());
+      volume += sp.fraction * std::pow(sigma.back(), d);
+    }
+    const double n = m.packing_fraction / (v_d * volume);
+    for (std::size_t k = 0; k < s; ++k) {
+      density.push_back(n * m.species[k].fraction);
+      phi += v_d * density[k] * std::pow(sigma[k], d);
+      y += v_d * density[k] * std::pow(sigma[k], d - 1);
+    }
+  }
+  [[nodiscard]] double pair_diameter(std::size_t i, std::size_t j) const { return 0.5 * (sigma[i] + sigma[j]); }
+  [[nodiscard]] double pair_width(std::size_t i, std::size_t j) const {  // a_ij = σ_iσ_j/σ_ij
+    return sigma[i] * sigma[j] / pair_diameter(i, j);
+  }
+  /// χ_jk and ∂χ_jk/∂n_l at the densities λ n_k.
+  [[nodiscard]] double contact_derivative(const ContactFunction& f, std::size_t j, std::size_t k, std::size_t l) const {
+    return v_d * (f.f_phi * std::pow(sigma[l], d) + f.f_u * pair_width(j, k) * std::pow(sigma[l], d - 1));
+  }
+};
+
+/// Returns ∂(μ_i^ex/T)/∂n_l at i·s + l: ∫_0^1 dλ ∂_i∂_l (p^ex/T)(λn) with p^ex/T = B_2 Σ_jk n_j n_k σ_jk^d χ_jk
+/// (18.17).
+std::vector<double> excess_hessian(const Geometry& g) {
+  const std::size_t s = g.s;
+  const int d = g.d;
+  std::vector<double> out(s * s, 0.0);
+  const LambdaRule& rule = lambda_rule();
+  for (std::size_t q = 0; q < rule.node.size(); ++q) {
+    const double lambda = rule.node[q], w = rule.weight[q] * g.b2;
+    for (std::size_t j = 0; j < s; ++j)
+      for (std::size_t k = 0; k < s; ++k) {
+        const double a = g.pair_width(j, k), wjk = std::pow(g.pair_diameter(j, k), d);
+        const ContactFunction f = contact_function(d, lambda * g.phi, a * lambda * g.y);
+        const double nj = lambda * g.density[j], nk = lambda * g.density[k];
+        for (std::size_t i = 0; i < s; ++i)
+          for (std::size_t l = 0; l < s; ++l) {
+            const double si = std::pow(g.sigma[i], d), si1 = std::pow(g.sigma[i], d - 1);
+            const double sl = std::pow(g.sigma[l], d), sl1 = std::pow(g.sigma[l], d - 1);
+            const double d2chi =
+                g.v_d * g.v_d *
+                (f.f_phiphi * si * sl + f.f_phiu * a * (si * sl1 + sl * si1) + f.f_uu * a * a * si1 * sl1);
+            const double h = ((j == i && k == l ? 1.0 : 0.0) + (j == l && k == i ? 1.0 : 0.0)) * f.f +
+                             ((j == i ? nk : 0.0) + (k == i ? nj : 0.0)) * g.contact_derivative(f, j, k, l) +
+                             ((j == l ? nk : 0.0) + (k == l ? nj : 0.0)) * g.contact_derivative(f, j, k, i) +
+                             nj * nk * d2chi;
+            out[i * s + l] += w * wjk * h;
+          }
+      }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> chemical_potential_derivatives(const Mixture& mixture) {
+  const Geometry g(mixture);
+  std::vector<double> out = excess_hessian(g);
+  for (std::size_t i = 0; i < g.s; ++i)
+    for (std::size_t l = 0; l < g.s; ++l) out[i * g.s + l] = (i == l ? 1.0 : 0.0) + g.density[i] * out[i * g.s + l];
+  return out;
+}
+
+std::vector<double> revised_enskog_functionals(const Mixture& mixture) {
+  const Geometry g(mixture);
+  const std::size_t s = g.s;
+  if (s != 2)
+    throw std::invalid_argument("species: the chemical potentials fix the functionals I_lij for a binary only, got " +
+                                std::to_string(s) + " species");
+  std::vector<double> out(s * s * s, 0.0);
+  if (g.phi == 0 || g.sigma[0] == g.sigma[1]) return out;  // (18.20): the midpoint expansion is then exact
+  const int d = g.d;
+  const std::vector<double> hessian = excess_hessian(g);
+  // (18.20), from the consistency (18.19) of the revised theory [vanbeijeren1973], [lopezdeharo1983]:
+  // ½ σ_ij^d χ_ij I_ℓij = ∂_ℓ(μ_i^ex/T)/(2B_2) − Σ_k σ_ik^d [χ_ik δ_kℓ + ½ n_k ∂_ℓ χ_ik], j ≠ i.
+  for (std::size_t i = 0; i < s; ++i) {
+    const std::size_t j = 1 - i;
+    for (std::size_t l = 0; l < s; ++l) {
+      double rest = hessian[i * s + l] / (2 * g.b2);
+      for (std::size_t k = 0; k < s; ++k) {
+        const ContactFunction f = contact_function(d, g.phi, g.pair_width(i, k) * g.y);
+        rest -= std::pow(g.pair_diameter(i, k), d) *
+                ((k == l ? f.f : 0.0) + 0.5 * g.density[k] * g.contact_derivative(f, i, k, l));
+      }
+      const double chi = contact_function(d, g.phi, g.pair_width(i, j) * g.y).f;
+      out[(i * s + j) * s + l] = 2 * rest / (std::pow(g.pair_diameter(i, j), d) * chi);
+    }
+  }
+  return out;
+}
+
+}  // namespace gkt
