@@ -113,7 +113,7 @@ RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionMap<Ring>
   // Normal block over (v1n, v2n, ŵ1n, ŵ2n) (the spin part only for d = 3), tangential block A over
   // (v1t, v2t, ŝ1, ŝ2) and, for forms coupling v and w, its rotation part B (theory.md (19.5a)).
   PolyMatrix4<Ring> mn, mt, mb;
-  // The reference Gaussians exp(−Σ width_r x_r²) (theory.md §19.2, (19.17)).
+  // The reference Gaussians exp(−Σ width_r x_r²) (theory.md §19.2, (19.52)).
   for (int r = 0; r < 4; ++r) {
     if (rows.width[r].sign() <= 0) throw std::invalid_argument("RoughCollisionMoments: Gaussian widths must be > 0");
     mn[r][r].add(Box{}, Ring(rows.width[r]));

@@ -1,4 +1,4 @@
-// The rough collision at fixed σ̂ as a linear map (docs/theory.md (19.4), (19.17)): every one of the
+// The rough collision at fixed σ̂ as a linear map (docs/theory.md (19.4), (19.52)): every one of the
 // eight vectors of RoughSlot is a linear combination of the normal coordinates (v1n, v2n) resp.
 // (ŵ1n, ŵ2n) and of the tangential coordinates (v1t, v2t, ŝ1, ŝ2) (ŝ = ŵ × σ̂; disks: ŵ ẑ × σ̂),
 // and the pre-collisional coordinates carry the Gaussian weight

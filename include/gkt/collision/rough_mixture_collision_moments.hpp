@@ -5,7 +5,7 @@
 //
 // of products of quadratic forms in (v1, v2, w1, w2, v1', v2', w1', w2') (RoughSlot; slot 1 is
 // species i, slot 2 species j), exact in Ring. Same closed form (19.5)/(19.5a) and Euler recurrence
-// as one species (rough_collision_moments.hpp); only the collision map (19.18) and the widths differ.
+// as one species (rough_collision_moments.hpp); only the collision map (19.52) and the widths differ.
 #pragma once
 
 #include <functional>
@@ -33,9 +33,11 @@ RoughCollisionMoments<Ring> rough_mixture_collision_moments(const RoughMixturePa
 /// by √(width_a width_b), rational when the caller chooses so) build every matrix element.
 RoughForm rough_mixture_reduced_square(const RoughMixtureParameters<Rational>& parameters, RoughSlot slot);
 
+/// Explicit instantiation for numeric parameters (compiled once in the library).
 extern template RoughCollisionMoments<Rational> rough_mixture_collision_moments<Rational>(
     const RoughMixtureParameters<Rational>&, const std::vector<RoughForm>&, const std::vector<int>&,
     std::function<bool(const RoughExponents&)>);
+/// Explicit instantiation for one symbolic parameter (compiled once in the library).
 extern template RoughCollisionMoments<RationalPolynomial> rough_mixture_collision_moments<RationalPolynomial>(
     const RoughMixtureParameters<RationalPolynomial>&, const std::vector<RoughForm>&, const std::vector<int>&,
     std::function<bool(const RoughExponents&)>);

@@ -6,7 +6,7 @@
 //     g_c = v1 − v2 + (w1 + w2) × σ̂          (disks: (w1 + w2) ẑ × σ̂),
 // and the pair restitutions α_ij, β_ij send σ̂·g_c → −α σ̂·g_c, g_c,t → −β g_c,t. With the reduced
 // mass μ_ij = m_i m_j/(m_i + m_j) and the tangential (effective) mass
-//     1/M_ij = (1 + κ_i)/(κ_i m_i) + (1 + κ_j)/(κ_j m_j),                         (theory.md (19.17))
+//     1/M_ij = (1 + κ_i)/(κ_i m_i) + (1 + κ_j)/(κ_j m_j),                         (theory.md (19.50))
 // the impulse on 1 is J = −(1+α) μ_ij u σ̂ − (1+β) M_ij g_c,t (−J on 2) and
 //     v1' = v1 + J/m_i,  v2' = v2 − J/m_j,  w1' = w1 + σ̂ × J/(κ_i m_i),  w2' = w2 + σ̂ × J/(κ_j m_j).
 // The diameters drop out of every average normalised by the collision rate (they only set w ↔ ω
@@ -49,19 +49,29 @@ struct RoughMixtureParameters {
   /// Tangential restitution β_ij.
   Ring beta{-1L};
   /// Masses m_i, m_j.
+  /// @{
   Rational mass_i{1}, mass_j{1};
+  /// @}
   /// Reduced moments of inertia κ_i, κ_j.
+  /// @{
   Rational kappa_i{2, 5}, kappa_j{2, 5};
+  /// @}
   /// Translational Gaussian widths a_i, a_j.
+  /// @{
   Rational velocity_width_i{1}, velocity_width_j{1};
+  /// @}
   /// Spin scales λ_i, λ_j: w = λ ŵ.
+  /// @{
   Ring spin_scale_i{1L}, spin_scale_j{1L};
+  /// @}
   /// Spin Gaussian widths b_i, b_j of ŵ.
+  /// @{
   Rational spin_width_i{5, 2}, spin_width_j{5, 2};
+  /// @}
 
-  /// Returns the tangential mass M_ij of (19.17), in the unit of the masses.
+  /// Returns the tangential mass M_ij of (19.50), in the unit of the masses.
   [[nodiscard]] Rational tangential_mass() const;
-  /// Returns the collision as a linear map at fixed σ̂ (theory.md (19.18)) with the widths (a_i, a_j, b_i, b_j).
+  /// Returns the collision as a linear map at fixed σ̂ (theory.md (19.52)) with the widths (a_i, a_j, b_i, b_j).
   [[nodiscard]] RoughCollisionMap<Ring> collision_map() const;
 };
 
