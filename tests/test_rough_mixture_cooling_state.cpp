@@ -14,6 +14,7 @@
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_mixture_cooling_state.hpp"
+#include "rough_mixture_dsmc.hpp"
 
 using gkt::Rational;
 using gkt::RoughBinaryMixture;
@@ -161,6 +162,34 @@ TEST(RoughMixtureCoolingState, PolydisperseDisksMimicTheMonodisperseGas) {
     EXPECT_LT(mimic, 2e-3) << "alpha=" << alpha << " beta=" << beta;
     EXPECT_GT(deviation(2, Rational(1, 2), Rational(1), Rational(4)), 10 * mimic);
     EXPECT_GT(deviation(3, Rational(2, 5), Rational(7, 2), Rational(11, 2)), 10 * mimic);
+  }
+}
+
+// A DSMC of the binary mixture (tests/rough_mixture_dsmc.hpp: the rigid-body rule, no engine; it gives the
+// one-component θ = 0.852 ± 0.005 at (0.9, 0.5), as the library's DSMC, §19.6) against the Maxwellian HCS at
+// unequal masses (1, 4), sizes (1, 2), κ (2/5, 1/2) and x (0.3, 0.7). The Maxwellian approximation is not
+// exact (one component: θ 1.8 % above the DSMC at (0.9, 0.5)), so γ_i within 0.01, θ_i within 4 % and the
+// ratio θ_2/θ_1 within 3 %; in the first state the DSMC must tell the two components' θ apart (> 10 %).
+TEST(RoughMixtureCoolingState, AgainstDsmc) {
+  const std::array<gkt::test::McRoughSpecies, 2> species{gkt::test::McRoughSpecies{1.0, 1.0, 0.4, 1.0, 1.0},
+                                                         gkt::test::McRoughSpecies{4.0, 2.0, 0.5, 1.0, 1.0}};
+  const Rational a(9, 10), half(1, 2), one(1);
+  for (const Rational& beta : {half, one}) {
+    const auto state = gkt::rough_mixture_cooling_state(binary(3, kLight, kHeavy, {a, a, a}, {beta, beta, beta}));
+    const double b = beta.to_double();
+    const auto dsmc =
+        gkt::test::run_rough_mixture_dsmc(species, {600, 1400}, {0.9, 0.9, 0.9}, {b, b, b}, 40, 40, 2, 20261202);
+    const std::array<double, 4> maxwellian{state.temperature_ratio[0], state.temperature_ratio[1],
+                                           state.rotational_ratio[0], state.rotational_ratio[1]};
+    for (std::size_t k = 0; k < 4; ++k)
+      std::printf("rough mixture DSMC beta=%.1f: %s = %.4f +- %.4f (Maxwellian %.4f)\n", b, k < 2 ? "gamma" : "theta",
+                  dsmc.mean[k], dsmc.error[k], maxwellian[k]);
+    for (std::size_t k = 0; k < 2; ++k) EXPECT_NEAR(dsmc.mean[k], maxwellian[k], 0.01) << "gamma " << k;
+    for (std::size_t k = 2; k < 4; ++k) EXPECT_NEAR(dsmc.mean[k] / maxwellian[k], 1.0, 0.04) << "theta " << k;
+    EXPECT_NEAR((dsmc.mean[3] / dsmc.mean[2]) / (maxwellian[3] / maxwellian[2]), 1.0, 0.03);
+    if (beta == half) {
+      EXPECT_GT(dsmc.mean[3] / dsmc.mean[2], 1.1);
+    }
   }
 }
 
