@@ -46,7 +46,8 @@ TEST(RoughMixtureCoolingState, EnergyChangesAreTheClosedForm) {
   const Rational one(1), two(2);
   const std::array<Rational, 4> t{Rational(2, 3), Rational(5, 7), Rational(3, 11), Rational(4, 5)};
   for (int d : {2, 3})
-    for (const auto& [alpha, beta] : {std::pair{Rational(7, 10), Rational(2, 5)}, {Rational(1, 2), Rational(-3, 5)}}) {
+    for (const auto& restitution : {std::pair{Rational(7, 10), Rational(2, 5)}, {Rational(1, 2), Rational(-3, 5)}}) {
+      const Rational alpha = restitution.first, beta = restitution.second;  // captured below (clang 14)
       const auto c = gkt::rough_pair_energy_changes(d, alpha, beta, kLight, kHeavy);
       const Rational mi = kLight.mass, mj = kHeavy.mass, ki = kLight.kappa, kj = kHeavy.kappa;
       const Rational big_m = one / ((one + ki) / (ki * mi) + (one + kj) / (kj * mj));
@@ -150,7 +151,8 @@ TEST(RoughMixtureCoolingState, FourRatesAreEqualAtTheHcs) {
 // components. Here σ2/σ1 = 2, x_i = 1/2: masses 7/2 and 11/2 keep θ_i within 0.2 % of the
 // one-component θ, while equal-density disks (m ∝ σ²) and spheres with the same masses do not.
 TEST(RoughMixtureCoolingState, PolydisperseDisksMimicTheMonodisperseGas) {
-  for (const auto& [alpha, beta] : {std::pair{Rational(9, 10), Rational(1, 2)}, {Rational(7, 10), Rational(0)}}) {
+  for (const auto& restitution : {std::pair{Rational(9, 10), Rational(1, 2)}, {Rational(7, 10), Rational(0)}}) {
+    const Rational alpha = restitution.first, beta = restitution.second;  // captured below (clang 14)
     const std::array<Rational, 3> a{alpha, alpha, alpha}, b{beta, beta, beta};
     const auto deviation = [&](int d, const Rational& kappa, const Rational& m1, const Rational& m2) {
       const auto mix = gkt::rough_mixture_cooling_state(binary(d, {m1, kappa, 1.0, 0.5}, {m2, kappa, 2.0, 0.5}, a, b));
