@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "gkt/algebra/sonine.hpp"
+#include "gkt/collision/collision_moments.hpp"
 #include "gkt/collision/quadratic_form_moments.hpp"
 #include "gkt/collision/rough_mixture_collision_moments.hpp"
 #include "rough_mixture_monte_carlo.hpp"
@@ -147,6 +149,53 @@ TEST(RoughMixtureCollisionMoments, SmoothLimitIsTheSmoothMixtureEngine) {
           EXPECT_TRUE(rough.moment({a, b, c, 1}).is_zero());
         }
   }
+}
+
+// (b') Sonine × spherical-harmonic matrix elements ⟨ψ_q(c2)·ψ_p(c1')⟩/⟨1⟩, ψ_n = S_m^(n)(c²) Y_r(c), ranks
+// 0, 1, 2, from the rough mixture table of c2², c1'² and c2·c1' (rough_mixture_reduced_dot; widths 1 and 4,
+// so √(a_i a_j) = 2): at β = −1 every element equals the smooth mixture engine's sonine_collision_moments.
+TEST(RoughMixtureCollisionMoments, SonineMatrixElementsAtBetaMinusOneAreTheSmoothMixture) {
+  const RoughSpecies i{Rational(1), Rational(2, 5), Rational(1, 2), Rational(1, 3)};
+  const RoughSpecies j{Rational(3), Rational(1, 2), Rational(3, 8), Rational(2)};
+  const Rational alpha(7, 10);
+  const int n_max = 2;
+  for (int d : {2, 3}) {
+    const auto p = gkt::rough_mixture_parameters(d, alpha, Rational(-1), i, j);
+    const RoughForm xu = gkt::rough_mixture_reduced_square(p, RoughSlot::v2);
+    const RoughForm xt = gkt::rough_mixture_reduced_square(p, RoughSlot::v1_post);
+    const RoughForm c = gkt::rough_mixture_reduced_dot(p, RoughSlot::v2, RoughSlot::v1_post);
+    const auto table = gkt::rough_mixture_collision_moments(p, {xu, xt, c}, {n_max + 1, n_max + 1, 2});
+    gkt::CollisionPair pair;
+    pair.dimension = d;
+    pair.mass_i = i.mass;
+    pair.mass_j = j.mass;
+    pair.theta_i = p.velocity_width_i;
+    pair.theta_j = p.velocity_width_j;
+    for (int rank = 0; rank <= 2; ++rank) {
+      const auto smooth =
+          gkt::sonine_collision_moments<Rational>(pair, alpha, gkt::Slot::v2, gkt::Slot::v1_post, rank, n_max);
+      const auto sonine = gkt::sonine_table(gkt::sonine_twice_m(d, rank), n_max);
+      // ⟨X_u^k X_t^l Y_r⟩ with Y_0 = 1, Y_1 = c_u·c_t, Y_2 contracted = (c_u·c_t)² − X_u X_t/d.
+      const auto harmonic = [&table, rank, d](int k, int l) {
+        if (rank == 0) return table.moment(std::array<int, 3>{k, l, 0});
+        if (rank == 1) return table.moment(std::array<int, 3>{k, l, 1});
+        return table.moment(std::array<int, 3>{k, l, 2}) -
+               table.moment(std::array<int, 3>{k + 1, l + 1, 0}) / Rational(d);
+      };
+      for (int tp = 0; tp <= n_max; ++tp)
+        for (int uq = 0; uq <= n_max; ++uq) {
+          Rational element(0);
+          for (int k = 0; k <= uq; ++k)
+            for (int l = 0; l <= tp; ++l)
+              element += sonine[static_cast<std::size_t>(uq)][static_cast<std::size_t>(k)] *
+                         sonine[static_cast<std::size_t>(tp)][static_cast<std::size_t>(l)] * harmonic(k, l);
+          EXPECT_EQ(element, smooth(tp, uq)) << "d=" << d << " rank=" << rank << " p=" << tp << " q=" << uq;
+        }
+    }
+  }
+  // c_a·c_b needs a rational √(width_a width_b).
+  const auto p = gkt::rough_mixture_parameters(3, alpha, Rational(0), kSpeciesI, kSpeciesJ);
+  EXPECT_THROW(gkt::rough_mixture_reduced_dot(p, RoughSlot::v1, RoughSlot::v2), std::invalid_argument);
 }
 
 // (c) Balances, exactly. P = |m_i Δv1 + m_j Δv2|² and S = |κ_i m_i Δw1 − κ_j m_j Δw2|² vanish on every

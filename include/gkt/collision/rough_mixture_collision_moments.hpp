@@ -29,9 +29,15 @@ RoughCollisionMoments<Ring> rough_mixture_collision_moments(const RoughMixturePa
 
 /// Returns the form c² of a slot in the species' reduced velocity: a_k v² at a translational slot,
 /// b_k ŵ² = b_k w² at a spin slot (numeric temperatures, λ = 1), k the slot's species
-/// (1, 1' → i; 2, 2' → j). Sonine polynomials in c², ŵ² and products c_a·c_b (rough_dot_form scaled
-/// by √(width_a width_b), rational when the caller chooses so) build every matrix element.
+/// (1, 1' → i; 2, 2' → j). Sonine polynomials in c², ŵ² and the products c_a·c_b of
+/// rough_mixture_reduced_dot build every matrix element. Throws std::invalid_argument if a spin scale is not 1.
 RoughForm rough_mixture_reduced_square(const RoughMixtureParameters<Rational>& parameters, RoughSlot slot);
+
+/// Returns the form c_a·c_b of two slots in their reduced velocities, √(width_a width_b) W_a·W_b (widths as
+/// in rough_mixture_reduced_square; λ = 1); the rank-one and rank-two (c c − c²I/d) spherical-harmonic
+/// contractions are built from it. Throws std::invalid_argument if width_a width_b is not the square of a
+/// rational (the moment would not be rational) or a spin scale is not 1.
+RoughForm rough_mixture_reduced_dot(const RoughMixtureParameters<Rational>& parameters, RoughSlot a, RoughSlot b);
 
 /// Explicit instantiation for numeric parameters (compiled once in the library).
 extern template RoughCollisionMoments<Rational> rough_mixture_collision_moments<Rational>(
