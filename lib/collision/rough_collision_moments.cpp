@@ -10,50 +10,6 @@ namespace gkt {
 
 namespace {
 
-// Coordinates at fixed σ̂ (theory.md §19.2): normal velocity block (v1n, v2n), normal spin block
-// (ŵ1n, ŵ2n) (d = 3), and, per tangential direction, (v1t, v2t, ŝ1, ŝ2) with ŝ = ŵ × σ̂
-// (disks: ŝ = ŵ ẑ × σ̂), a rotation of the tangential spin, so that g_c,t = v1t − v2t + λ(ŝ1 + ŝ2).
-template <class Ring>
-struct SlotRows {
-  std::array<std::array<Ring, 2>, 8> normal;  // velocity slots: over (v1n, v2n); spin: over (ŵ1n, ŵ2n)
-  std::array<std::array<Ring, 4>, 8> tangential;
-};
-
-template <class Ring>
-SlotRows<Ring> slot_rows(const RoughCollisionParameters<Ring>& p) {
-  const Ring zero(0L), one(1L);
-  const Ring en = p.normal_factor(), et = p.tangential_factor();
-  Ring et_over_kappa = et;
-  detail::divide(et_over_kappa, p.kappa);
-  const Ring& lambda = p.spin_scale;
-  SlotRows<Ring> r;
-  for (auto& row : r.normal) row.fill(zero);
-  for (auto& row : r.tangential) row.fill(zero);
-  // Pre-collisional slots.
-  r.normal[0] = {one, zero};
-  r.normal[1] = {zero, one};
-  r.normal[2] = {lambda, zero};
-  r.normal[3] = {zero, lambda};
-  r.tangential[0][0] = one;
-  r.tangential[1][1] = one;
-  r.tangential[2][2] = lambda;
-  r.tangential[3][3] = lambda;
-  // Post-collisional: normal parts (u = v1n − v2n), spin normal parts unchanged.
-  r.normal[4] = {one - en, en};
-  r.normal[5] = {en, one - en};
-  r.normal[6] = r.normal[2];
-  r.normal[7] = r.normal[3];
-  // Tangential parts: g_c,t = (1, −1, λ, λ); Δv1 = −η_t g_c,t, Δv2 = +η_t g_c,t, Δŝ_k·λ = −(η_t/κ) g_c,t.
-  const std::array<Ring, 4> gct{one, -one, lambda, lambda};
-  for (int c = 0; c < 4; ++c) {
-    r.tangential[4][c] = r.tangential[0][c] - et * gct[c];
-    r.tangential[5][c] = r.tangential[1][c] + et * gct[c];
-    r.tangential[6][c] = r.tangential[2][c] - et_over_kappa * gct[c];
-    r.tangential[7][c] = r.tangential[3][c] - et_over_kappa * gct[c];
-  }
-  return r;
-}
-
 constexpr std::size_t kRoughVariables = kMaxRoughForms;
 using Box = detail::ExponentVector<kRoughVariables>;
 template <class Ring>
@@ -138,25 +94,30 @@ template <class Ring>
 RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters,
                                                    const std::vector<RoughForm>& forms, const std::vector<int>& degrees,
                                                    std::function<bool(const RoughExponents&)> keep)
+    : RoughCollisionMoments(parameters.collision_map(), forms, degrees, std::move(keep)) {}
+
+template <class Ring>
+RoughCollisionMoments<Ring>::RoughCollisionMoments(const RoughCollisionMap<Ring>& rows,
+                                                   const std::vector<RoughForm>& forms, const std::vector<int>& degrees,
+                                                   std::function<bool(const RoughExponents&)> keep)
     : keep_(std::move(keep)) {
   if (forms.size() > kRoughVariables || forms.size() != degrees.size())
     throw std::invalid_argument("RoughCollisionMoments: at most eight forms, one degree each");
-  const int d = parameters.dimension;
+  const int d = rows.dimension;
   if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3");
   Box box{};
   for (std::size_t v = 0; v < forms.size(); ++v) {
     if (degrees[v] < 0) throw std::invalid_argument("RoughCollisionMoments: negative degree");
     box[v] = degrees[v];
   }
-  const auto rows = slot_rows(parameters);
   // Normal block over (v1n, v2n, ŵ1n, ŵ2n) (the spin part only for d = 3), tangential block A over
   // (v1t, v2t, ŝ1, ŝ2) and, for forms coupling v and w, its rotation part B (theory.md (19.5a)).
   PolyMatrix4<Ring> mn, mt, mb;
-  // The reference Gaussians exp(−v1² − v2² − s(ŵ1² + ŵ2²)) (theory.md §19.2).
-  const Ring one(1L), width(parameters.spin_width);
+  // The reference Gaussians exp(−Σ width_r x_r²) (theory.md §19.2, (19.52)).
   for (int r = 0; r < 4; ++r) {
-    mn[r][r].add(Box{}, r < 2 ? one : width);
-    mt[r][r].add(Box{}, r < 2 ? one : width);
+    if (rows.width[r].sign() <= 0) throw std::invalid_argument("RoughCollisionMoments: Gaussian widths must be > 0");
+    mn[r][r].add(Box{}, Ring(rows.width[r]));
+    mt[r][r].add(Box{}, Ring(rows.width[r]));
   }
   bool mixed = false;
   // exp(+Σ x_v F_v): each form subtracts x_v Σ_ab F_ab (row_a row_bᵀ) from the blocks.

@@ -56,6 +56,11 @@ class RoughCollisionMoments {
   /// total degree of groups of forms; the cost falls with its size (docs/performance.md).
   RoughCollisionMoments(const RoughCollisionParameters<Ring>& parameters, const std::vector<RoughForm>& forms,
                         const std::vector<int>& degrees, std::function<bool(const RoughExponents&)> keep);
+  /// As above for any rough collision map (e.g. a pair of species, rough_mixture_collision_moments.hpp):
+  /// moments ⟨Π F_v^{k_v}⟩/⟨1⟩ with the map's Gaussian weights. Throws std::invalid_argument as
+  /// above and for a width ≤ 0.
+  RoughCollisionMoments(const RoughCollisionMap<Ring>& map, const std::vector<RoughForm>& forms,
+                        const std::vector<int>& degrees, std::function<bool(const RoughExponents&)> keep = {});
   /// Returns ⟨Π F_v^{k_v}⟩/⟨1⟩ (velocities in units of √(2T_t/m)); throws std::out_of_range
   /// outside the expanded box or the kept set. Unlisted trailing exponents are 0 (`moment({i, j})`).
   [[nodiscard]] Ring moment(const RoughExponents& k) const;

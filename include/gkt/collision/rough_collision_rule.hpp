@@ -17,6 +17,7 @@
 
 #include "gkt/algebra/rational.hpp"
 #include "gkt/algebra/rational_polynomial.hpp"
+#include "gkt/collision/rough_collision_map.hpp"
 
 namespace gkt {
 
@@ -53,6 +54,8 @@ struct RoughCollisionParameters {
   [[nodiscard]] Ring normal_factor() const;
   /// Returns η_t = (1+β)κ/(2(1+κ)).
   [[nodiscard]] Ring tangential_factor() const;
+  /// Returns the collision (19.4) as a linear map at fixed σ̂ with the widths (1, 1, s, s).
+  [[nodiscard]] RoughCollisionMap<Ring> collision_map() const;
 };
 
 /// Returns the parameters for numeric α, β, κ and θ = T_r/T_t (λ = 1, spin_width = κ/θ). Throws
