@@ -642,6 +642,7 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
     }
     if (dense_) {
       heat += collisional_heat(b);
+      if (!weighted_transfer_.empty()) heat += cumulant_gradient_heat(j);  // (17.24)
       for (std::size_t i = 0; i < s; ++i)
         for (std::size_t k = 0; k < s; ++k) {
           const PairTransferMoments& t = transfer_[pair_index(i, k)];
@@ -652,7 +653,6 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
                   (gk * (t.energy_partner - 0.5 * d * t.energy) - gi * (t.energy_self - 0.5 * d * t.energy));
           heat += gradient_heat(i, k) * v;
         }
-      if (!weighted_transfer_.empty()) heat += cumulant_gradient_heat(j);
     }
     out.dufour[j] = -fraction_[j] * heat / (temperature * kappa0);  // (17.10)
   }
