@@ -1,7 +1,8 @@
 // The mixture's Navier–Stokes solution about an HCS with cumulants in f⁰ (theory.md §17.11):
 // identical species equal the one-component gas of §10 (which keeps the a_k in f⁰) at every
 // Sonine order and HCS order; α = 1 and the Maxwellian reference are unchanged; the cumulant
-// reference's density derivatives against the exact Maxwellian ones; the tracer limit.
+// reference's density derivatives against the exact Maxwellian ones; the tracer limit. The dense
+// mixture with cumulants: test_mixture_dense_reference.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -150,13 +151,6 @@ TEST(MixtureReference, TracerLimitIsContinuous) {
     for (std::size_t k = 0; k < 4; ++k) EXPECT_LT(relative(a.drift[k], b.drift[k]), 1e-5) << k;
     EXPECT_LT(relative(a.thermal_drift[0], b.thermal_drift[0]), 1e-5);
   }
-}
-
-// A dense mixture with cumulants in f⁰ is refused, naming the key.
-TEST(MixtureReference, DenseCumulantReferenceIsRefused) {
-  gkt::Mixture m = binary(3, 2, 1, 0.5, 0.8);
-  m.packing_fraction = 0.2;
-  EXPECT_THROW(gkt::MixtureNavierStokes(m, 1, {MixtureHcsScheme::linear, 2}), std::invalid_argument);
 }
 
 // An inelastic ternary with a restitution matrix about the HCS with cumulants: the fluxes still sum

@@ -94,7 +94,7 @@ class MixtureModel final : public TransportModel {
                             {"standard", "published"}),
         detail::choice_spec("reference_state",
                             "species distributions f0 of the Navier-Stokes coefficients: Maxwellian at T_i (GDH) or "
-                            "the HCS of `hcs` with its cumulants a_2 ... a_K (K = hcs_order; dilute only)",
+                            "the HCS of `hcs` with its cumulants a_2 ... a_K (K = hcs_order)",
                             {"maxwellian", "hcs"}),
         {"hcs_order",
          ParameterSpec::Kind::integer,

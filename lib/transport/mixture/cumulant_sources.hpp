@@ -18,4 +18,13 @@ struct CumulantSources {
 /// Returns the averages for vector indices p ≤ n_vector, tensor p ≤ n_tensor and k ≤ k_max (exact, rounded once).
 CumulantSources cumulant_sources(int d, int n_vector, int n_tensor, int k_max);
 
+/// The scalar (∇·u) mode's averages of a reference with cumulants, at [p][k] (scalar S_p, p ≤ n_scalar;
+/// S_k, k ≤ k_max; theory.md (17.25)): weight ⟨S_p S_k⟩, temperature ⟨S_p ((x − d/2) S_k − x S_k')⟩.
+struct ScalarCumulantSources {
+  std::vector<std::vector<double>> weight, temperature;
+};
+
+/// Returns the scalar averages (exact, rounded once).
+ScalarCumulantSources scalar_cumulant_sources(int d, int n_scalar, int k_max);
+
 }  // namespace gkt::detail

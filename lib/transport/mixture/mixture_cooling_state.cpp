@@ -522,35 +522,48 @@ MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, co
 }
 
 /// The HCS density derivatives of a cumulant reference at fixed T (theory.md §17.11): n ∂ln γ_i/∂n_j,
-/// n (∂ζ/∂n_j)/ν0 (ν0 held at the state) and n ∂a_k,i/∂n_j, by a five-point stencil in n_j (step 10⁻³ n;
-/// one-sided when x_j < 2·10⁻³) of the solved HCS. In the dilute gas the reduced HCS depends on the
-/// composition only, and ζ = ζ*(x) ν0 with ν0 ∝ n σ̄^{d−1} (T/m̄)^{1/2}.
+/// n (∂ζ/∂n_j)/ν0 (ν0 held at the state) and n ∂a_k,i/∂n_j, by a central stencil in n_j (step 10⁻³ n; five
+/// points dilute, seven dense; one-sided five points when x_j < 2·10⁻³, dense 3·10⁻³) of the solved HCS. The
+/// reduced HCS depends on the composition and, dense, on φ = v_d Σ_k n_k σ_k^d (moved with n_j);
+/// ζ = ζ*(x, φ) ν0 with ν0 ∝ n σ̄^{d−1} (T/m̄)^{1/2}.
 MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureReference& reference,
                                                       std::vector<std::vector<double>>* cumulant_derivatives) {
   mixture.validate();
-  if (mixture.packing_fraction > 0)
-    throw std::invalid_argument("packing_fraction: the stencil HCS derivatives are for the dilute gas (0), got " +
-                                std::to_string(mixture.packing_fraction));
   std::vector<std::vector<double>> local;
   std::vector<std::vector<double>>& cumulants = cumulant_derivatives ? *cumulant_derivatives : local;
   const std::size_t s = mixture.size();
   const int d = mixture.dimension;
   const auto K = static_cast<std::size_t>(reference.scheme == MixtureHcsScheme::maxwellian ? 2 : reference.hcs_order);
   const double m_bar = mixture.mean_mass(), sigma_bar = mixture.mean_diameter(), h = 1e-3;
+  double volume = 0;  // Σ_k x_k σ_k^d
+  for (const auto& species : mixture.species) volume += species.fraction * std::pow(species.diameter, d);
   MixtureCoolingSensitivity out;
   out.temperature_ratio.assign(s * s, 0.0);
   out.cooling_rate.assign(s, 0.0);
   cumulants.assign(s * s, std::vector<double>(K + 1, 0.0));
   for (std::size_t j = 0; j < s; ++j) {
-    const bool central = mixture.species[j].fraction >= 2 * h;
-    const std::vector<int> steps = central ? std::vector<int>{-2, -1, 1, 2} : std::vector<int>{0, 1, 2, 3, 4};
-    const std::vector<double> weights =
-        central ? std::vector<double>{1, -8, 8, -1} : std::vector<double>{-25, 48, -36, 16, -3};
+    // Dense: seven points (truncation h⁶ f⁽⁷⁾/140), since χ(φ) makes f⁽⁵⁾ large (the five-point stencil's
+    // h⁴ f⁽⁵⁾/30 reached 1.5·10⁻¹¹ in n∂ζ/∂n_j at φ = 0.4); dilute: five.
+    const bool dense = mixture.packing_fraction > 0;
+    const bool central = mixture.species[j].fraction >= (dense ? 3 : 2) * h;
+    std::vector<int> steps{0, 1, 2, 3, 4};
+    std::vector<double> weights{-25, 48, -36, 16, -3};
+    double denominator = 12;
+    if (central && dense) {
+      steps = {-3, -2, -1, 1, 2, 3};
+      weights = {-1, 9, -45, 45, -9, 1};
+      denominator = 60;
+    } else if (central) {
+      steps = {-2, -1, 1, 2};
+      weights = {1, -8, 8, -1};
+    }
     for (std::size_t m = 0; m < steps.size(); ++m) {
-      const double dn = steps[m] * h, w = weights[m] / (12 * h);
+      const double dn = steps[m] * h, w = weights[m] / (denominator * h);
       Mixture moved = mixture;
       for (std::size_t k = 0; k < s; ++k)
         moved.species[k].fraction = (mixture.species[k].fraction + (k == j ? dn : 0.0)) / (1 + dn);
+      // Dense: φ = v_d Σ_k n_k σ_k^d grows with n_j (theory.md §17.11).
+      moved.packing_fraction = mixture.packing_fraction * (1 + dn * std::pow(mixture.species[j].diameter, d) / volume);
       const MixtureCoolingState state = mixture_cooling_state(moved, reference.scheme, reference.hcs_order);
       if (!state.solved) throw std::invalid_argument("reference_state: the HCS did not converge near the state");
       const double scale =

@@ -13,6 +13,7 @@
 #include "gkt/collision/collision_moments.hpp"
 #include "gkt/operators/linearized_operator.hpp"
 #include "gkt/operators/mixture_collisional_transfer.hpp"
+#include "gkt/operators/weighted_pair_transfer.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/revised_enskog_functionals.hpp"
 #include "transport/common/galerkin_pieces.hpp"
@@ -113,6 +114,15 @@ struct MixtureNavierStokes::Impl {
     std::vector<Eigen::VectorXd> density;
   };
   [[nodiscard]] TransferSources transfer_sources(int order, bool per_particle) const;
+  /// Cumulant reference, dense (theory.md (17.23)): adds to the ∇n_l sources the partner's n ∂a_m,j/∂n_l terms
+  /// L R x_i x_j Σ_m n∂_l a_m,j Σ_k a_k,i ⟨⟨S_k(X1) S_m(X2) σ̂·Δ[c1 S_p]⟩⟩ (scaled as transfer_sources).
+  void add_cumulant_density_sources(TransferSources& out, int order, bool per_particle) const;
+  /// Cumulant reference, dense (theory.md (17.24)): the f0 ∂f0 collisional heat flux per ∇n_j from the
+  /// cumulants' density derivatives, −(1/(4d)) Σ_ik L² R x_i x_k ⟨⟨ΔE_1 (∂_j φ_k(X2) φ_i − φ_k ∂_j φ_i(X1))⟩⟩.
+  [[nodiscard]] double cumulant_gradient_heat(std::size_t j) const;
+  /// Cumulant reference, dense (theory.md (17.25)): the kinetic rows of the ∇·u mode for species i,
+  /// x_i ⟨S_p T_i⟩ [2(p* − 1)/d + ζ_U + gamma_sum] + x_i Σ_k (Σ_l x_l n∂_l a_k,i) ⟨S_p S_k⟩ (ζ_U in column N).
+  void add_cumulant_scalar_rows(Eigen::MatrixXd& m, Eigen::VectorXd& rhs, std::size_t i, double gamma_sum) const;
   /// The ∇·u mode (theory.md (18.6)–(18.8)) in the units of the solver: ζ_U, the bulk viscosity's
   /// part from the scalar components of f^(1), and the S_1 coefficients δ_i1 of every species.
   struct ScalarMode {
@@ -152,6 +162,10 @@ struct MixtureNavierStokes::Impl {
   bool dense_ = false;
   std::vector<double> rate_, length_, alpha_;
   std::vector<PairTransferMoments> transfer_;
+  // Cumulant reference, dense (theory.md §17.11): the pairs' weighted transfer averages (transfer_ holds them
+  // contracted with a_k,i, a_l,j) and the scalar mode's source averages.
+  std::vector<WeightedPairTransferMoments> weighted_transfer_;
+  detail::ScalarCumulantSources scalar_cumulant_sources_;
   std::vector<double> dchi_, pressure_derivative_;
   // The revised-Enskog functionals I_ℓij at (i·s + j)·s + ℓ (theory.md (18.18)–(18.20)): a dense binary only,
   // empty otherwise (zero).
@@ -164,16 +178,14 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
   mixture.validate();
   if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
   const bool with_cumulants = reference.scheme != MixtureHcsScheme::maxwellian;
-  if (with_cumulants && mixture.packing_fraction > 0)
-    throw std::invalid_argument(
-        "reference_state: the HCS cumulants in f0 are implemented for the dilute gas only (packing_fraction = 0); "
-        "use the Maxwellian reference for the dense mixture");
   state_ = mixture_cooling_state(mixture, reference.scheme, reference.hcs_order);
   if (with_cumulants) {
     if (!state_.solved) throw std::invalid_argument("reference_state: the HCS with cumulants did not converge");
     cumulants_ = state_.cumulants;
     sensitivity_ = mixture_cooling_sensitivity(mixture, reference, &cumulant_sensitivity_);
     cumulant_sources_ = detail::cumulant_sources(mixture.dimension, max_order, max_order - 1, reference.hcs_order);
+    if (mixture.packing_fraction > 0)
+      scalar_cumulant_sources_ = detail::scalar_cumulant_sources(mixture.dimension, max_order + 1, reference.hcs_order);
   } else {
     sensitivity_ = mixture_cooling_sensitivity(mixture, state_);
   }
@@ -227,7 +239,13 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
         add_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
                  rate * fraction_[i]);
       }
-      if (dense_) {
+      if (dense_ && with_cumulants) {  // theory.md (17.22)–(17.23)
+        add_weighted_pair(scalar_operator_, scalar_operator_, pair, alpha, 0, ns - 1, i, j, rate * fraction_[j],
+                          rate * fraction_[i], cumulants_[i], cumulants_[j]);
+        weighted_transfer_.push_back(
+            weighted_pair_transfer_moments(d, mass_ratio, r, alpha, ns - 1, reference.hcs_order, mass_[i], theta_[j]));
+        transfer_.push_back(contracted_pair_transfer(weighted_transfer_.back(), cumulants_[i], cumulants_[j]));
+      } else if (dense_) {
         add_pair(scalar_operator_, scalar_operator_, pair, alpha, 0, ns - 1, i, j, rate * fraction_[j],
                  rate * fraction_[i]);
         transfer_.push_back(pair_transfer_moments(d, mass_ratio, r, alpha, ns - 1, mass_[i], theta_[j]));
@@ -403,7 +421,67 @@ MixtureNavierStokes::Impl::TransferSources MixtureNavierStokes::Impl::transfer_s
         }
       }
     }
+  if (!weighted_transfer_.empty()) add_cumulant_density_sources(out, order, per_particle);
   return out;
+}
+
+void MixtureNavierStokes::Impl::add_cumulant_density_sources(TransferSources& out, int order, bool per_particle) const {
+  const int n = order + 1;
+  for (std::size_t i = 0; i < s_; ++i)
+    for (std::size_t j = 0; j < s_; ++j) {
+      const std::size_t P = pair_index(i, j);
+      const WeightedPairTransferMoments& w = weighted_transfer_[P];
+      const double f = length_[P] * rate_[P] * (per_particle ? 1.0 : fraction_[i]) * fraction_[j];
+      for (std::size_t l = 0; l < s_; ++l) {
+        const std::vector<double>& da = cumulant_sensitivity_[j * s_ + l];  // n ∂a_m,j/∂n_l
+        for (int p = 0; p < n; ++p) {
+          double v = 0;
+          for (int m = 2; m <= w.k_max; ++m)
+            for (int k = 0; k <= w.k_max; ++k)
+              v += da[static_cast<std::size_t>(m)] * cumulants_[i][static_cast<std::size_t>(k)] *
+                   w.source_density[w.index(p, k, m)];
+          out.density[l](static_cast<Eigen::Index>(i) * n + p) += f * (per_particle ? fraction_[l] : 1.0) * v;
+        }
+      }
+    }
+}
+
+double MixtureNavierStokes::Impl::cumulant_gradient_heat(std::size_t j) const {
+  double q = 0;
+  for (std::size_t i = 0; i < s_; ++i)
+    for (std::size_t k = 0; k < s_; ++k) {
+      const std::size_t P = pair_index(i, k);
+      const WeightedPairTransferMoments& w = weighted_transfer_[P];
+      const std::vector<double>&da_i = cumulant_sensitivity_[i * s_ + j], &da_k = cumulant_sensitivity_[k * s_ + j];
+      double v = 0;
+      for (int a = 0; a <= w.k_max; ++a)
+        for (int b = 0; b <= w.k_max; ++b) {
+          const auto A = static_cast<std::size_t>(a), B = static_cast<std::size_t>(b);
+          v += (cumulants_[i][A] * da_k[B] - da_i[A] * cumulants_[k][B]) * w.energy[w.index(a, b)];
+        }
+      q -= length_[P] * length_[P] * rate_[P] / (4 * dimension_) * fraction_[i] * fraction_[k] * v;
+    }
+  return q;
+}
+
+void MixtureNavierStokes::Impl::add_cumulant_scalar_rows(Eigen::MatrixXd& m, Eigen::VectorXd& rhs, std::size_t i,
+                                                         double gamma_sum) const {
+  const auto nq = static_cast<Eigen::Index>(m.rows() - 1) / static_cast<Eigen::Index>(s_), N = m.rows() - 1;
+  const std::vector<double>& a = cumulants_[i];
+  const detail::ScalarCumulantSources& cs = scalar_cumulant_sources_;
+  for (Eigen::Index p = 0; p < nq; ++p) {
+    const auto row = static_cast<Eigen::Index>(i) * nq + p;
+    const auto P = static_cast<std::size_t>(p) + 1;  // rows S_1 … S_{N+1}
+    double u = 0, w = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      double da = 0;  // Σ_l x_l n ∂a_k,i/∂n_l
+      for (std::size_t l = 0; l < s_; ++l) da += fraction_[l] * cumulant_sensitivity_[i * s_ + l][k];
+      u += a[k] * cs.temperature[P][k];
+      w += da * cs.weight[P][k];
+    }
+    m(row, N) = -fraction_[i] * u;
+    rhs(row) = fraction_[i] * (u * (2 * (pressure_ - 1) / dimension_ + gamma_sum) + w);
+  }
 }
 
 MixtureNavierStokes::Impl::ScalarMode MixtureNavierStokes::Impl::scalar_mode(int order) const {
@@ -423,8 +501,12 @@ MixtureNavierStokes::Impl::ScalarMode MixtureNavierStokes::Impl::scalar_mode(int
     double gamma_sum = 0;
     for (std::size_t l = 0; l < s_; ++l) gamma_sum += fraction_[l] * sensitivity_.temperature_ratio[I * s_ + l];
     // ⟨S_p (X − d/2)⟩ = −d/2 δ_p1 (S_1 = d/2 − X).
-    m(i * nq, N) = fraction_[I] * d / 2.0;
-    rhs(i * nq) = -fraction_[I] * d / 2.0 * (2 * (pressure_ - 1) / d + gamma_sum);
+    if (cumulants_.empty()) {
+      m(i * nq, N) = fraction_[I] * d / 2.0;
+      rhs(i * nq) = -fraction_[I] * d / 2.0 * (2 * (pressure_ - 1) / d + gamma_sum);
+    } else {
+      add_cumulant_scalar_rows(m, rhs, I, gamma_sum);
+    }
     for (std::size_t j = 0; j < s_; ++j) {
       const std::size_t P = pair_index(I, j);
       const double f = length_[P] * rate_[P] * fraction_[I] * fraction_[j] * 2 * std::sqrt(theta_[j]) / d;
@@ -565,6 +647,7 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
     }
     if (dense_) {
       heat += collisional_heat(b);
+      if (!weighted_transfer_.empty()) heat += cumulant_gradient_heat(j);  // (17.24)
       for (std::size_t i = 0; i < s; ++i)
         for (std::size_t k = 0; k < s; ++k) {
           const PairTransferMoments& t = transfer_[pair_index(i, k)];

@@ -109,11 +109,12 @@ struct MixtureCoolingSensitivity {
 /// dependence in the dense gas (theory.md (18.1)); exact up to rounding.
 MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureCoolingState& state);
 
-/// Returns the derivatives of the dilute mixture's HCS in the `reference` scheme (K = hcs_order) with respect
-/// to the partial densities at fixed T — n ∂ln γ_i/∂n_j and n (∂ζ/∂n_j)/ν0 as above — and, if
-/// `cumulant_derivatives` is given, n ∂a_k,i/∂n_j at [i·s + j][k] (k = 0 … K), by a five-point stencil in n_j
-/// of the solved HCS (step 10⁻³ n, one-sided when x_j < 2·10⁻³; theory.md §17.11). Throws
-/// std::invalid_argument naming the field for φ > 0 or bad input, or if a stencil state does not converge.
+/// Returns the derivatives of the mixture's HCS (dilute or dense) in the `reference` scheme (K = hcs_order) with
+/// respect to the partial densities at fixed T — n ∂ln γ_i/∂n_j and n (∂ζ/∂n_j)/ν0 as above — and, if
+/// `cumulant_derivatives` is given, n ∂a_k,i/∂n_j at [i·s + j][k] (k = 0 … K), by a central stencil in n_j
+/// of the solved HCS (step 10⁻³ n; five points dilute, seven dense, where φ moves with n_j; one-sided five
+/// points when x_j < 2·10⁻³, dense 3·10⁻³; theory.md §17.11). Throws
+/// std::invalid_argument naming the field on bad input, or if a stencil state does not converge.
 MixtureCoolingSensitivity mixture_cooling_sensitivity(const Mixture& mixture, const MixtureReference& reference,
                                                       std::vector<std::vector<double>>* cumulant_derivatives = nullptr);
 

@@ -72,8 +72,9 @@ class MixtureNavierStokes {
  public:
   /// Builds the operator for `mixture` (validated) about its HCS in the `reference` (Maxwellian by
   /// default), with vector trial functions c S_0 … c S_max_order, tensor ones Y_2 S_0 … Y_2 S_{max_order−1}
-  /// and, for φ > 0, scalar ones S_1 … S_{max_order+1} per species. Throws std::invalid_argument naming
-  /// the field on bad input, and for a cumulant reference with φ > 0 (implemented for the dilute gas only).
+  /// and, for φ > 0, scalar ones S_1 … S_{max_order+1} per species; a cumulant reference carries the a_k,i
+  /// into the operator, the sources, ζ and, for φ > 0, the collisional transfer (theory.md §17.11). Throws
+  /// std::invalid_argument naming the field on bad input.
   MixtureNavierStokes(const Mixture& mixture, int max_order, MixtureReference reference = {});
   /// Copies carry the built operator (deep copy); a moved-from solver may only be assigned to or destroyed.
   ~MixtureNavierStokes();
