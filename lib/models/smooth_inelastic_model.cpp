@@ -26,7 +26,8 @@ namespace {
 
 // Order N keeps a_2 … a_{N+1}; its error estimate needs orders N + 1, N + 2 (NS operators to index
 // N + 4 with the solver's headroom, cumulants to a_{N+3}). The cap is set by the cold cost of the
-// exact operators (docs/performance.md: ≈ 30 s for a 2D tolerance scan that reaches it).
+// exact operators (docs/performance.md: ≈ 25 s for a 2D tolerance scan that reaches it); higher
+// orders gain nothing at 2D α = 0.8, where the series turns asymptotic near N ≈ 20 (theory.md §6).
 constexpr int kMaxOrder = 16;
 constexpr int kHighestCumulant = kMaxOrder + 1;
 
