@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <numbers>
 
 #include "dsmc.hpp"
 #include "gkt/algebra/sonine.hpp"
@@ -125,6 +126,38 @@ TEST(Hcs, ConvergencePatternInSonineOrder) {
     a2_previous = s.a[2];
   }
   EXPECT_TRUE(breaks_down);
+}
+
+// Why the Sonine series is asymptotic at every α < 1 (theory.md §10.6, §6): the HCS has the tail
+// exp(−A c), A = 2β/ζ_r [vannoije1998], and the Maxwellian moment of order k peaks at c ≈ √k, which reaches the
+// tail at c ≈ A/2: the cumulants decay only up to k ≈ A²/4 and grow beyond. 2D, K = 16: at α = 0.7
+// (A²/4 ≈ 9.8) the even cumulants turn between A²/8 and A²/4 + 2 and |a_16| exceeds |a_8|; at
+// α = 0.9 (A²/4 ≈ 71) they still decay. The same turn near k ≈ 20 (A²/4 = 19.8) stops κ*, μ* at
+// ≈ 2e-8 in 2D at α = 0.8 (docs/performance.md).
+TEST(Hcs, SonineCumulantsTurnWhereTheTailBegins) {
+  const int d = 2;
+  gkt::HomogeneousCoolingState h(d);
+  const double beta = std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma((d + 1) / 2.0);
+  const double nu = std::sqrt(2.0) * std::pow(std::numbers::pi, (d - 1) / 2.0) / std::tgamma(d / 2.0);
+  auto onset = [&](const gkt::HcsState& s) {  // A²/4 with ζ_r = 4ν ζ*/(d + 2)
+    const double a = 2 * beta / (4 * nu * s.cooling_rate / (d + 2));
+    return a * a / 4;
+  };
+  const auto strong = h.solve(Rational(7, 10), 16, HcsScheme::nonlinear);
+  ASSERT_TRUE(strong.solved);
+  const double k_star = onset(strong);
+  ASSERT_LT(k_star, 16.0);
+  int k_min = 2;
+  for (int k = 4; k <= 16; k += 2)
+    if (std::abs(strong.a[k]) < std::abs(strong.a[k_min])) k_min = k;
+  EXPECT_GE(k_min, k_star / 2);
+  EXPECT_LE(k_min, k_star + 2);
+  EXPECT_GT(std::abs(strong.a[16]), 3 * std::abs(strong.a[8]));
+
+  const auto mild = h.solve(Rational(9, 10), 16, HcsScheme::nonlinear);
+  ASSERT_TRUE(mild.solved);
+  EXPECT_GT(onset(mild), 16.0);
+  EXPECT_LT(std::abs(mild.a[16]), 0.05 * std::abs(mild.a[8]));
 }
 
 namespace {
