@@ -38,7 +38,7 @@ struct UniformShearMoments {
 /// Returns the moment solutions at orders 1 … max_order (element N − 1 is order N), each
 /// started from the previous one (order 1 from Grad's (22.7)) and solved by Newton's method to
 /// rounding. With `linear` terms, order 1 is Grad's solution (22.6)–(22.7) recomputed from the
-/// quadrature. Cost: see docs/performance.md (d = 3, N = 3: ~10 s). Throws std::invalid_argument
+/// quadrature. Cost: see docs/performance.md (d = 3, N = 3: ~25 s of CPU). Throws std::invalid_argument
 /// naming the argument for d ∉ {2, 3}, α outside (0, 1) or max_order outside [1, 6] (d = 2) /
 /// [1, 3] (d = 3); std::runtime_error if Newton's method does not converge.
 std::vector<UniformShearMoments> uniform_shear_flow_moments(
