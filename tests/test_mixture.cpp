@@ -104,7 +104,7 @@ TEST(Mixture, NonlinearSchemeMatchesOneComponentNonlinear) {
   for (int d : {2, 3}) {
     gkt::HomogeneousCoolingState one(d);
     for (const double alpha : {0.9, 0.5, 0.2})
-      for (int k = 2; k <= 4; ++k) {  // (16.8) with the products: the X^p balances of two species
+      for (int k = 2; k <= 4; ++k) {  // (16.7a) with the products: the X^p balances of two species
         if (k > 2 && alpha == 0.9) continue;
         const auto state =
             gkt::mixture_cooling_state(binary(d, 1.0, 1.0, 0.4, alpha, 0.2), gkt::MixtureHcsScheme::nonlinear, k);
@@ -370,7 +370,7 @@ TEST(MixtureDsmc, TemperatureRatioAgreesWithFirstSonine) {
     std::cout << "[ DSMC ] d=" << d << " T1/T = " << dsmc << " ± " << sigma << " (first Sonine " << linear
               << ", Maxwellian " << maxwellian << "); a2,1 = " << sample.a2[0] << " ± " << sample.a2_error[0]
               << ", a2,2 = " << sample.a2[1] << " ± " << sample.a2_error[1] << "\n";
-    // The cumulants: first Sonine (K = 2) against the linear scheme carrying a_2 … a_4 (16.8).
+    // The cumulants: first Sonine (K = 2) against the linear scheme carrying a_2 … a_4 (16.7a).
     const auto k4 = gkt::mixture_cooling_state(m, gkt::MixtureHcsScheme::linear, 4);
     const auto k2 = gkt::mixture_cooling_state(m, gkt::MixtureHcsScheme::linear, 2);
     std::cout << "[ DSMC ]   a2,1 at K = 2: " << k2.a2[0] << ", K = 4: " << k4.a2[0] << "; a2,2: " << k2.a2[1] << ", "

@@ -181,7 +181,7 @@ MixtureCoolingState mixture_cooling_state(const Mixture& mixture, MixtureHcsSche
   for (auto& c : out.cumulants) c[0] = 1;
   bool fixed_point = true;
   if (scheme != MixtureHcsScheme::maxwellian) {
-    // Cumulants a_2 … a_K of every species (theory.md §16.3, (16.8)): for every species and p = 2 … K,
+    // Cumulants a_2 … a_K of every species (theory.md §16.3, (16.7a)): for every species and p = 2 … K,
     // p ζ_i(a) ⟨X^p⟩_i(a) + Λ B^p_i(a) = 0, B^p_i = Σ_j c_ij Σ_{k,l} A_ik A_jl Δ^p_ij[k,l] (A_i0 = 1,
     // A_ik = a_k,i), ζ_i = −(2/d) Λ B^1_i, ⟨X^p⟩_i(a) = M_p + Σ_k a_k,i ⟨X^p S_k⟩. The nonlinear scheme
     // keeps every product; the linear one drops the a_k,i a_l,j terms of B and the product
@@ -346,7 +346,7 @@ MixtureCoolingRates cooling_rates(const Mixture& mixture, std::span<const double
   for (std::size_t i = 0; i < s; ++i) {
     const double zeta = out.cooling_rate[i];
     out.mixture_cooling_rate += mixture.species[i].fraction * temperature_ratio[i] * zeta;
-    // d⟨X^p⟩_i/dτ = Σ_{k≤p} ⟨X^p S_k⟩ da_k,i/dτ = R_p, the residual of (16.8) (p ζ_i⟨X^p⟩_i + Λ B^p_i with
+    // d⟨X^p⟩_i/dτ = Σ_{k≤p} ⟨X^p S_k⟩ da_k,i/dτ = R_p, the residual of (16.7a) (p ζ_i⟨X^p⟩_i + Λ B^p_i with
     // the scheme's products): triangular in k.
     std::vector<double>& rate = out.cumulant_rate[i];
     for (int p = 2; p <= K; ++p) {

@@ -55,7 +55,7 @@ struct MixtureCoolingState {
 
 /// Returns the HCS of the mixture (validated first; throws std::invalid_argument on bad input),
 /// carrying the cumulants a_2 … a_K of every species, K = sonine_order ∈ [2, 6] (theory.md §16.3,
-/// (16.8)); ignored by the Maxwellian scheme.
+/// (16.7a)); ignored by the Maxwellian scheme.
 MixtureCoolingState mixture_cooling_state(const Mixture& mixture,
                                           MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian, int sonine_order = 2);
 
@@ -68,7 +68,7 @@ struct MixtureCoolingRates {
 
 /// Returns the rates of a homogeneous mixture at temperature ratios γ_i = T_i/T (Σ x_i γ_i = 1) with
 /// cumulants a_k,i (`cumulants[i][k]`, k = 0 … K, K ∈ [2, 6]; ignored by the Maxwellian scheme):
-/// the X^p balances (16.8) without the HCS condition, ⟨X^p⟩_i(a) changing as p ζ_i⟨X^p⟩_i + Λ B^p_i
+/// the X^p balances (16.7a) without the HCS condition, ⟨X^p⟩_i(a) changing as p ζ_i⟨X^p⟩_i + Λ B^p_i
 /// (the scheme's products kept or dropped as in mixture_cooling_state, so that its HCS is the rest
 /// point), and ζ_i* of (16.6). Throws std::invalid_argument naming the field on bad input.
 MixtureCoolingRates mixture_cooling_rates(const Mixture& mixture, std::span<const double> temperature_ratio,
