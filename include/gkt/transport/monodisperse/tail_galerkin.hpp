@@ -13,9 +13,9 @@
 
 namespace gkt {
 
-/// Highest resolution (polynomial degree N in c² of the transport modes) the tail scheme accepts.
-inline constexpr int kTailGalerkinMaxOrder =
-    12;  // cost; N = 12 at α = 0.2 works since the row scaling (theory.md §10.6)
+/// Highest resolution (polynomial degree N of the transport modes) the tail scheme accepts; a cost cap:
+/// N = 12 at α = 0.2 works since the row scaling of the linear solves (theory.md §10.6).
+inline constexpr int kTailGalerkinMaxOrder = 12;
 
 /// The tail-scheme quantities at one resolution N (dilute).
 struct TailGalerkinValues {
@@ -34,7 +34,8 @@ struct TailGalerkinValues {
 enum class TailTrialSpace {
   even,       ///< w(c) × polynomials in c² (10.11): `scheme = "tail"` and the shipped tables
   power_law,  ///< α < 1: w(c)(1 + c²)^{γ/2} × polynomials in c, γ the power of the HCS tail (10.15),
-              ///< γ − 2 for the vector modes; α = 1: as `even`. Converges much faster at α ≤ 0.5.
+              ///< γ − 2 for the vector modes; α = 1: as `even`. Much closer at a given N for α ≤ 0.5,
+              ///< but its sequences overshoot and return (no geometric error estimate yet).
 };
 
 /// Returns the tail-scheme values at resolutions N = 1 … max_order for dimension d = 2 or 3 and
