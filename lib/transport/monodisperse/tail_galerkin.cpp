@@ -2,7 +2,8 @@
 // smooth inelastic hard spheres and disks (tail_galerkin.hpp; docs/theory.md §10.6).
 //
 // Trial functions F_k(c) = w(c) Q_k(c²), w(c) = exp(−2c²/(1 + √(1 + 4c²/A²))) (Gaussian for
-// c ≪ A, exp(−A c) for c ≫ A; theory.md (10.11)), Q_k orthonormal in ∫ w Q_k Q_l dc; test
+// c ≪ A, exp(−A c) for c ≫ A; theory.md (10.11)), Q_k orthonormal in ∫ w Q_k Q_l dc
+// (TailTrialSpace::power_law: w(c)(1 + c²)^{γ/2} × polynomials in c, theory.md (10.15)); test
 // functions the Sonine polynomials of the standard scheme. Collision moments of a polynomial test
 // function: the σ̂ integral is a polynomial in s = ĝ·σ̂ and cos φ (exact Gauss rules), the angle
 // between v1 and v2 becomes |g| with dμ = g dg/(c1 c2) (3D, polynomial integrand, exact Gauss
@@ -324,9 +325,10 @@ Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& m, const Eigen::Vector
   return (scale.asDiagonal() * m).fullPivLu().solve(scale.asDiagonal() * rhs);
 }
 
-/// One resolution N with the weight's exponent `tail` (trial spaces: TrialWeight): the HCS with trial/test degree K = N
-/// + 1 (Newton from `start`, φ on the 1-D rule — the previous solution, or the Maxwellian if empty; the solution is
-/// left there), then the three Chapman–Enskog modes with degree N (theory.md (10.12)–(10.14)).
+/// One resolution N with the weight's exponent `tail` and the trial space `trial` (TrialWeight): the HCS
+/// with trial/test degree K = N + 1 (Newton from `start`, φ on the 1-D rule — the previous solution, or
+/// the Maxwellian if empty; the solution is left there), then the three Chapman–Enskog modes with
+/// degree N (theory.md (10.12)–(10.14)).
 TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, double alpha, TailTrialSpace trial,
                                     double tail, int order, std::vector<double>& start) {
   const double d = grid.dimension, m = d / 2 - 1, nu = frequency_factor(grid.dimension);
