@@ -3,7 +3,7 @@
 //
 // Trial functions F_k(c) = w(c) Q_k(c²), w(c) = exp(−2c²/(1 + √(1 + 4c²/A²))) (Gaussian for
 // c ≪ A, exp(−A c) for c ≫ A; theory.md (10.11)), Q_k orthonormal in ∫ w Q_k Q_l dc
-// (TailTrialSpace::power_law: w(c)(1 + c²)^{γ/2} × polynomials in c, theory.md (10.15)); test
+// (TailTrialSpace::power_law: w(c)(1 + c²)^{γ/2} × polynomials in √(4 + c²) − 2, theory.md (10.15)); test
 // functions the Sonine polynomials of the standard scheme. Collision moments of a polynomial test
 // function: the σ̂ integral is a polynomial in s = ĝ·σ̂ and cos φ (exact Gauss rules), the angle
 // between v1 and v2 becomes |g| with dμ = g dg/(c1 c2) (3D, polynomial integrand, exact Gauss
@@ -78,16 +78,17 @@ double log_weight(double c, double tail) {
   return -2 * c * c / (std::sqrt(1 + z) + 1);
 }
 
-/// A trial space: weight w(c) (1 + c²)^{γ/2} times polynomials in c (TailTrialSpace::power_law: the tail of
-/// the solutions is c^{γ + j} exp(−A c), j = 0, 1, 2, …, theory.md §10.6) or w(c) times polynomials in c².
+/// A trial space: weight w(c) (1 + c²)^{γ/2} times polynomials in y = √(4 + c²) − 2 (TailTrialSpace::power_law:
+/// the tail of the solutions is c^{γ + j} exp(−A c), j = 0, 1, 2, …, and y ≈ c²/4 in the core, ≈ c − 2 in
+/// the tail; theory.md §10.6) or w(c) times polynomials in c².
 struct TrialWeight {
   double tail = INFINITY;  ///< A
   double power = 0;        ///< γ
-  bool in_speed = false;   ///< polynomials in c (else in c²)
+  bool in_speed = false;   ///< polynomials in y (else in c²)
   [[nodiscard]] double operator()(double c) const {
     return std::exp(log_weight(c, tail) + (power == 0 ? 0.0 : 0.5 * power * std::log1p(c * c)));
   }
-  [[nodiscard]] double variable(double c) const { return in_speed ? c : c * c; }
+  [[nodiscard]] double variable(double c) const { return in_speed ? std::sqrt(4 + c * c) - 2 : c * c; }
 };
 
 /// ν = √2 π^{(d−1)/2}/Γ(d/2): the factor that turns the reduced operator of (9.1) into the
