@@ -2,7 +2,8 @@
 // smooth inelastic hard spheres and disks (tail_galerkin.hpp; docs/theory.md §10.6).
 //
 // Trial functions F_k(c) = w(c) Q_k(c²), w(c) = exp(−2c²/(1 + √(1 + 4c²/A²))) (Gaussian for
-// c ≪ A, exp(−A c) for c ≫ A; theory.md (10.11)), Q_k orthonormal in ∫ w Q_k Q_l dc; test
+// c ≪ A, exp(−A c) for c ≫ A; theory.md (10.11)), Q_k orthonormal in ∫ w Q_k Q_l dc
+// (TailTrialSpace::power_law: w(c)(1 + c²)^{γ/2} × polynomials in √(4 + c²) − 2, theory.md (10.15)); test
 // functions the Sonine polynomials of the standard scheme. Collision moments of a polynomial test
 // function: the σ̂ integral is a polynomial in s = ĝ·σ̂ and cos φ (exact Gauss rules), the angle
 // between v1 and v2 becomes |g| with dμ = g dg/(c1 c2) (3D, polynomial integrand, exact Gauss
@@ -76,6 +77,19 @@ double log_weight(double c, double tail) {
   const double z = std::isinf(tail) ? 0.0 : 4 * c * c / (tail * tail);
   return -2 * c * c / (std::sqrt(1 + z) + 1);
 }
+
+/// A trial space: weight w(c) (1 + c²)^{γ/2} times polynomials in y = √(4 + c²) − 2 (TailTrialSpace::power_law:
+/// the tail of the solutions is c^{γ + j} exp(−A c), j = 0, 1, 2, …, and y ≈ c²/4 in the core, ≈ c − 2 in
+/// the tail; theory.md §10.6) or w(c) times polynomials in c².
+struct TrialWeight {
+  double tail = INFINITY;  ///< A
+  double power = 0;        ///< γ
+  bool in_speed = false;   ///< polynomials in y (else in c²)
+  [[nodiscard]] double operator()(double c) const {
+    return std::exp(log_weight(c, tail) + (power == 0 ? 0.0 : 0.5 * power * std::log1p(c * c)));
+  }
+  [[nodiscard]] double variable(double c) const { return in_speed ? std::sqrt(4 + c * c) - 2 : c * c; }
+};
 
 /// ν = √2 π^{(d−1)/2}/Γ(d/2): the factor that turns the reduced operator of (9.1) into the
 /// units of ν0 (theory.md (9.4)); 2√(2π) in 3D, √(2π) in 2D.
@@ -254,12 +268,14 @@ Kernel collision_kernel(const Grid& grid, double alpha, int p_max) {
   return k;
 }
 
-/// Orthonormal polynomials Q_k(x), x = c², in ∫ w Q_k Q_l d³c (Stieltjes on the 1-D rule).
+/// Orthonormal polynomials Q_k(y), y = c or c² (TrialWeight), in ∫ w Q_k Q_l d^d c (Stieltjes on the 1-D rule).
 struct TrialBasis {
-  double tail = 0;
+  TrialWeight weight;
   std::vector<double> a, b;  // three-term recurrence
   double q0 = 0;
-  void values(double x, int k_max, double* out) const {
+  /// Q_0 … Q_k_max at speed c.
+  void values(double c, int k_max, double* out) const {
+    const double x = weight.variable(c);
     out[0] = q0;
     if (k_max >= 1) out[1] = (x - a[0]) * out[0] / b[1];
     for (int k = 1; k < k_max; ++k)
@@ -268,29 +284,27 @@ struct TrialBasis {
   }
 };
 
-TrialBasis trial_basis(const Grid& grid, double tail, int k_max) {
+TrialBasis trial_basis(const Grid& grid, const TrialWeight& weight, int k_max) {
   const std::size_t n = grid.c.size();
   std::vector<double> wt(n), p(n, 1.0), prev(n, 0.0), next(n);
   double norm = 0;
   for (std::size_t i = 0; i < n; ++i) {
     // 3D: the shell factor multiplied in the order the shipped 3D table was computed with (bit-identical).
     const double shell = grid.dimension == 3 ? grid.w[i] * 4 * kPi * grid.c[i] * grid.c[i] : grid.shell[i];
-    wt[i] = shell * std::exp(log_weight(grid.c[i], tail));
+    wt[i] = shell * weight(grid.c[i]);
     norm += wt[i];
   }
-  TrialBasis basis;
-  basis.tail = tail;
-  basis.q0 = 1 / std::sqrt(norm);
-  basis.a.assign(static_cast<std::size_t>(k_max + 1), 0.0);
-  basis.b.assign(static_cast<std::size_t>(k_max + 2), 0.0);
+  TrialBasis basis{weight, std::vector<double>(static_cast<std::size_t>(k_max + 1), 0.0),
+                   std::vector<double>(static_cast<std::size_t>(k_max + 2), 0.0), 1 / std::sqrt(norm)};
   for (auto& v : p) v = basis.q0;
   for (int k = 0; k <= k_max; ++k) {
     double a = 0;
-    for (std::size_t i = 0; i < n; ++i) a += wt[i] * grid.c[i] * grid.c[i] * p[i] * p[i];
+    for (std::size_t i = 0; i < n; ++i) a += wt[i] * weight.variable(grid.c[i]) * p[i] * p[i];
     basis.a[static_cast<std::size_t>(k)] = a;
     double b = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      next[i] = (grid.c[i] * grid.c[i] - a) * p[i] - (k > 0 ? basis.b[static_cast<std::size_t>(k)] : 0.0) * prev[i];
+      next[i] =
+          (weight.variable(grid.c[i]) - a) * p[i] - (k > 0 ? basis.b[static_cast<std::size_t>(k)] : 0.0) * prev[i];
       b += wt[i] * next[i] * next[i];
     }
     b = std::sqrt(b);
@@ -303,15 +317,30 @@ TrialBasis trial_basis(const Grid& grid, double tail, int k_max) {
   return basis;
 }
 
-/// One resolution N with the weight's exponent `tail`: the HCS with trial/test degree K = N + 1
-/// (Newton from `start`, φ on the 1-D rule — the previous solution, or the Maxwellian if empty; the
-/// solution is left there), then the three Chapman–Enskog modes with degree N (theory.md (10.12)–(10.14)).
-TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, double tail, int order,
-                                    std::vector<double>& start) {
+/// Returns the solution x of m x = rhs with every row scaled to unit norm first. The rows of the Sonine
+/// tests S_p differ in size by up to 1e15 at N ≥ 11 and α = 0.2 (the tail reaches c ≈ 30 there), and
+/// full-pivoting LU of the unscaled matrix then loses the small rows: the tensor mode broke down at
+/// N = 11 (2D) and 12 (3D) with a condition number 1.6e15, 2e6 after the scaling (theory.md §10.6).
+Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& m, const Eigen::VectorXd& rhs) {
+  const Eigen::VectorXd scale = m.rowwise().norm().cwiseInverse();
+  return (scale.asDiagonal() * m).fullPivLu().solve(scale.asDiagonal() * rhs);
+}
+
+/// One resolution N with the weight's exponent `tail` and the trial space `trial` (TrialWeight): the HCS
+/// with trial/test degree K = N + 1 (Newton from `start`, φ on the 1-D rule — the previous solution, or
+/// the Maxwellian if empty; the solution is left there), then the three Chapman–Enskog modes with
+/// degree N (theory.md (10.12)–(10.14)).
+TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, double alpha, TailTrialSpace trial,
+                                    double tail, int order, std::vector<double>& start) {
   const double d = grid.dimension, m = d / 2 - 1, nu = frequency_factor(grid.dimension);
   const int k_max = order + 1, n_max = order;
   const auto kk = static_cast<std::size_t>(k_max + 1);
-  const TrialBasis basis = trial_basis(grid, tail, k_max);
+  // power_law: HCS and tensor mode c^γ, vector modes c^{γ−2} (theory.md §10.6).
+  const bool power_law = trial == TailTrialSpace::power_law && alpha < 1;
+  const double gamma = power_law ? hcs_tail_power(grid.dimension, alpha) : 0.0;
+  const TrialWeight hcs_weight{tail, gamma, power_law}, vector_weight{tail, power_law ? gamma - 2 : 0.0, power_law},
+      tensor_weight{tail, gamma, power_law};
+  const TrialBasis basis = trial_basis(grid, hcs_weight, k_max);
   TailGalerkinValues out;
   out.order = order;
   // 1-D moments over the trial functions: ∫S_p F_k, ∫ x S_p' F_k, ∫F_k, ∫x F_k.
@@ -324,8 +353,8 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   std::vector<double> q(kk), s(kk);
   for (std::size_t i = 0; i < grid.c.size(); ++i) {
     const double x = grid.c[i] * grid.c[i];
-    const double wt = grid.shell[i] * std::exp(log_weight(grid.c[i], tail));
-    basis.values(x, k_max, q.data());
+    const double wt = grid.shell[i] * hcs_weight(grid.c[i]);
+    basis.values(grid.c[i], k_max, q.data());
     sonine_values(k_max, m, x, s.data());
     for (std::size_t k = 0; k < kk; ++k) {
       const double f = wt * q[k];
@@ -343,9 +372,9 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   std::vector<double> q1(kk), q2(kk);
   for (std::size_t node = 0; node < grid.pairs.size(); ++node) {
     const auto& r = grid.pairs[node];
-    basis.values(r.c1 * r.c1, k_max, q1.data());
-    basis.values(r.c2 * r.c2, k_max, q2.data());
-    const double w1 = std::exp(log_weight(r.c1, tail)), w2 = std::exp(log_weight(r.c2, tail));
+    basis.values(r.c1, k_max, q1.data());
+    basis.values(r.c2, k_max, q2.data());
+    const double w1 = hcs_weight(r.c1), w2 = hcs_weight(r.c2);
     const double* ker = kernel.at(node, kScalar);
     for (std::size_t p = 0; p < kk; ++p)
       for (std::size_t k = 0; k < kk; ++k) {
@@ -360,7 +389,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   for (std::size_t i = 0; i < grid.c.size(); ++i) {  // the start projected on the basis: b_k = ∫ φ Q_k
     const double x = grid.c[i] * grid.c[i];
     const double phi = start.empty() ? std::pow(kPi, -d / 2) * std::exp(-x) : start[i];
-    basis.values(x, k_max, q.data());
+    basis.values(grid.c[i], k_max, q.data());
     for (std::size_t k = 0; k < kk; ++k) b[static_cast<Eigen::Index>(k)] += grid.shell[i] * phi * q[k];
   }
   auto residual = [&](const Eigen::VectorXd& v, Eigen::MatrixXd* jac) {
@@ -387,7 +416,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   bool converged = false;
   for (int it = 0; it < 100 && !converged; ++it) {
     const Eigen::VectorXd f = residual(b, &jac);
-    const Eigen::VectorXd step = jac.fullPivLu().solve(f);
+    const Eigen::VectorXd step = solve_equilibrated(jac, f);
     double lambda = 1;
     for (int h = 0; h < 30; ++h, lambda /= 2)
       if (residual(b - lambda * step, nullptr).norm() < f.norm() || f.norm() < 1e-13) break;
@@ -414,20 +443,20 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
     std::vector<double> sk(static_cast<std::size_t>(k + 1));
     for (std::size_t i = 0; i < grid.c.size(); ++i) {
       const double x = grid.c[i] * grid.c[i];
-      basis.values(x, k_max, q.data());
+      basis.values(grid.c[i], k_max, q.data());
       sonine_values(k, m, x, sk.data());
       double phi = 0;
       for (std::size_t j = 0; j < kk; ++j) phi += b[static_cast<Eigen::Index>(j)] * q[j];
-      sum += grid.shell[i] * std::exp(log_weight(grid.c[i], tail)) * phi * sk[static_cast<std::size_t>(k)];
+      sum += grid.shell[i] * hcs_weight(grid.c[i]) * phi * sk[static_cast<std::size_t>(k)];
     }
     return sum / norm2;
   };
   start.resize(grid.c.size());
   for (std::size_t i = 0; i < grid.c.size(); ++i) {
-    basis.values(grid.c[i] * grid.c[i], k_max, q.data());
+    basis.values(grid.c[i], k_max, q.data());
     double phi = 0;
     for (std::size_t j = 0; j < kk; ++j) phi += b[static_cast<Eigen::Index>(j)] * q[j];
-    start[i] = phi * std::exp(log_weight(grid.c[i], tail));
+    start[i] = phi * hcs_weight(grid.c[i]);
   }
   out.a2 = cumulant(2);
   out.a3 = cumulant(3);
@@ -437,18 +466,23 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   // Chapman–Enskog: trial F_q c_i (vector), F_q Y2 (tensor), q = 0 … N; tests c_i S_p^{(d/2)}, Y2 S_p^{(d/2+1)}.
   const auto nn = static_cast<std::size_t>(n_max + 1);
   const auto ni = static_cast<Eigen::Index>(nn);
+  const TrialBasis vector_basis = trial_basis(grid, vector_weight, n_max);
+  const TrialBasis tensor_basis = trial_basis(grid, tensor_weight, n_max);
+  std::vector<double> qv(nn), qt(nn), qv1(nn), qv2(nn), qt1(nn), qt2(nn);
   Eigen::MatrixXd mv = Eigen::MatrixXd::Zero(ni, ni), dv = mv, dt = mv, lv = mv, lt = mv;
-  Eigen::VectorXd ua = Eigen::VectorXd::Zero(ni), ub = ua, ue = ua, flux = ua;
+  Eigen::VectorXd ua = Eigen::VectorXd::Zero(ni), ub = ua, ue = ua, vector_flux = ua, tensor_flux = ua;
   std::vector<double> sv(nn), st(nn);
   for (std::size_t i = 0; i < grid.c.size(); ++i) {
-    const double x = grid.c[i] * grid.c[i];
-    const double wt = grid.shell[i] * std::exp(log_weight(grid.c[i], tail));
-    basis.values(x, k_max, q.data());
+    const double c = grid.c[i], x = c * c;
+    const double wv = grid.shell[i] * vector_weight(c), wt = grid.shell[i] * tensor_weight(c);
+    basis.values(c, k_max, q.data());
+    vector_basis.values(c, n_max, qv.data());
+    tensor_basis.values(c, n_max, qt.data());
     sonine_values(n_max, m + 1, x, sv.data());
     sonine_values(n_max, m + 2, x, st.data());
     double phi = 0;
     for (std::size_t j = 0; j < kk; ++j) phi += b[static_cast<Eigen::Index>(j)] * q[j];
-    phi *= wt;
+    phi *= grid.shell[i] * hcs_weight(c);
     for (int p = 0; p <= n_max; ++p) {
       const auto pu = static_cast<std::size_t>(p);
       const double xv = x_derivative(sv, p, m + 1), xt = x_derivative(st, p, m + 2);
@@ -456,19 +490,28 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
       ub[p] += phi * ((d / 2) * sv[pu] + xv - x * sv[pu]);
       ue[p] -= phi * x * ((d + 1 - 2 / d) * st[pu] + 2 * ((d - 1) / d) * xt);
       for (int k = 0; k <= n_max; ++k) {
-        const double f = wt * q[static_cast<std::size_t>(k)];
-        mv(p, k) += f * x * sv[pu];
-        dv(p, k) += f * (x * sv[pu] + 2 * x * xv);
-        dt(p, k) += f * x * x * (st[pu] + 2 * xt);
+        const double fv = wv * qv[static_cast<std::size_t>(k)], ft = wt * qt[static_cast<std::size_t>(k)];
+        mv(p, k) += fv * x * sv[pu];
+        dv(p, k) += fv * (x * sv[pu] + 2 * x * xv);
+        dt(p, k) += ft * x * x * (st[pu] + 2 * xt);
       }
     }
-    for (int k = 0; k <= n_max; ++k) flux[k] += wt * q[static_cast<std::size_t>(k)] * x * x;
+    for (int k = 0; k <= n_max; ++k) {
+      vector_flux[k] += wv * qv[static_cast<std::size_t>(k)] * x * x;
+      tensor_flux[k] += wt * qt[static_cast<std::size_t>(k)] * x * x;
+    }
   }
   for (std::size_t node = 0; node < grid.pairs.size(); ++node) {  // 𝓛*X = −(J*[φ, X] + J*[X, φ])
     const auto& r = grid.pairs[node];
-    basis.values(r.c1 * r.c1, k_max, q1.data());
-    basis.values(r.c2 * r.c2, k_max, q2.data());
-    const double w1 = std::exp(log_weight(r.c1, tail)), w2 = std::exp(log_weight(r.c2, tail));
+    basis.values(r.c1, k_max, q1.data());
+    basis.values(r.c2, k_max, q2.data());
+    vector_basis.values(r.c1, n_max, qv1.data());
+    vector_basis.values(r.c2, n_max, qv2.data());
+    tensor_basis.values(r.c1, n_max, qt1.data());
+    tensor_basis.values(r.c2, n_max, qt2.data());
+    const double w1 = hcs_weight(r.c1), w2 = hcs_weight(r.c2);
+    const double wv1 = vector_weight(r.c1), wv2 = vector_weight(r.c2);
+    const double wt1 = tensor_weight(r.c1), wt2 = tensor_weight(r.c2);
     double phi1 = 0, phi2 = 0;
     for (std::size_t j = 0; j < kk; ++j) {
       phi1 += b[static_cast<Eigen::Index>(j)] * q1[j] * w1;
@@ -478,9 +521,9 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
     const double *ts = kernel.at(node, kTensorSelf), *tp = kernel.at(node, kTensorPartner);
     for (std::size_t p = 0; p < nn; ++p)
       for (std::size_t k = 0; k < nn; ++k) {
-        const double partner = phi1 * q2[k] * w2, self = q1[k] * w1 * phi2;
-        lv(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(k)) -= partner * vp[p] + self * vs[p];
-        lt(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(k)) -= partner * tp[p] + self * ts[p];
+        const auto pi = static_cast<Eigen::Index>(p), ki = static_cast<Eigen::Index>(k);
+        lv(pi, ki) -= phi1 * qv2[k] * wv2 * vp[p] + qv1[k] * wv1 * phi2 * vs[p];
+        lt(pi, ki) -= phi1 * qt2[k] * wt2 * tp[p] + qt1[k] * wt1 * phi2 * ts[p];
       }
   }
   // Row p = 0 of the vector modes is the solubility condition ∫ c·c X = 0 (no momentum).
@@ -488,15 +531,15 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   la.row(0) = mv.row(0);
   lb.row(0) = mv.row(0);
   ua[0] = 0;
-  const Eigen::VectorXd heat = la.fullPivLu().solve(ua);
+  const Eigen::VectorXd heat = solve_equilibrated(la, ua);
   Eigen::VectorXd rb = ub + zeta_r * (mv * heat);
   rb[0] = 0;
-  const Eigen::VectorXd density = lb.fullPivLu().solve(rb);
-  const Eigen::VectorXd shear = (lt - (zeta_r / 2) * ((d - 1) / d) * dt).fullPivLu().solve(ue);
+  const Eigen::VectorXd density = solve_equilibrated(lb, rb);
+  const Eigen::VectorXd shear = solve_equilibrated(lt - (zeta_r / 2) * ((d - 1) / d) * dt, ue);
   const double kappa_factor = -16 * (d - 1) * nu / (d * d * (d + 2) * (d + 2));  // theory.md (10.6)
-  out.thermal_conductivity = kappa_factor * flux.dot(heat);
-  out.density_heat_coefficient = kappa_factor * flux.dot(density);
-  out.shear_viscosity = -8 * nu / (d * (d + 2) * (d + 2)) * flux.dot(shear);  // theory.md (10.7)
+  out.thermal_conductivity = kappa_factor * vector_flux.dot(heat);
+  out.density_heat_coefficient = kappa_factor * vector_flux.dot(density);
+  out.shear_viscosity = -8 * nu / (d * (d + 2) * (d + 2)) * tensor_flux.dot(shear);  // theory.md (10.7)
   out.solved = std::isfinite(out.thermal_conductivity) && std::isfinite(out.shear_viscosity) &&
                std::isfinite(out.density_heat_coefficient);
   return out;
@@ -504,7 +547,20 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
 
 }  // namespace
 
-std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order) {
+double hcs_tail_power(int dimension, double alpha) {
+  if (dimension != 2 && dimension != 3)
+    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  if (!(alpha > 0 && alpha <= 1))
+    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + std::to_string(alpha));
+  // (ζ_r/2)(d + γ) φ, the scaling term beyond its leading −β c φ, balances the gain G φ from grazing
+  // collisions of a fast particle with a thermal one: c'² = c²(1 − k s²), s = ĝ·σ̂, so the gain is
+  // φ(c) c ∫dσ̂ s exp(−A c k s²/2) = (2π/(A k)) φ (3D), (2/(A k)) φ (2D); with A = 2β/ζ_r, β = π (3D), 2 (2D).
+  const double k = (1 + alpha) * (3 - alpha) / 4;
+  return -dimension + (dimension == 3 ? 2.0 : 1.0) / k;
+}
+
+std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order,
+                                                       TailTrialSpace trial) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
   if (!(alpha > 0 && alpha <= 1))
@@ -539,7 +595,7 @@ std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alp
     double tail = tail0;
     TailGalerkinValues v;
     for (int pass = 0; pass < kWeightPasses; ++pass) {
-      v = solve_resolution(grid, kernel, tail, n, start);
+      v = solve_resolution(grid, kernel, alpha, trial, tail, n, start);
       if (!v.solved || alpha == 1) break;
       tail = v.tail_exponent;
     }

@@ -13,8 +13,9 @@
 
 namespace gkt {
 
-/// Highest resolution (polynomial degree N in c² of the transport modes) the tail scheme accepts.
-inline constexpr int kTailGalerkinMaxOrder = 12;  // N = 12 fails in the tensor mode at α = 0.2 (theory.md §10.6)
+/// Highest resolution (polynomial degree N of the transport modes) the tail scheme accepts; a cost cap:
+/// N = 12 at α = 0.2 works since the row scaling of the linear solves (theory.md §10.6).
+inline constexpr int kTailGalerkinMaxOrder = 12;
 
 /// The tail-scheme quantities at one resolution N (dilute).
 struct TailGalerkinValues {
@@ -29,11 +30,25 @@ struct TailGalerkinValues {
   double density_heat_coefficient = 0;  ///< μ* = nμ/(Tκ0)
 };
 
+/// The trial functions of the tail scheme (docs/theory.md §10.6).
+enum class TailTrialSpace {
+  even,       ///< w(c) × polynomials in c² (10.11): `scheme = "tail"` and the shipped tables
+  power_law,  ///< α < 1: w(c)(1 + c²)^{γ/2} × polynomials in √(4 + c²) − 2, γ the power of the HCS
+              ///< tail (10.15), γ − 2 for the vector modes; α = 1: as `even`. Much closer at a given N
+              ///< for α ≤ 0.5; not yet behind `scheme = "tail"`.
+};
+
 /// Returns the tail-scheme values at resolutions N = 1 … max_order for dimension d = 2 or 3 and
-/// restitution α ∈ (0, 1] (element N − 1 is resolution N). The collision kernel on the quadrature
-/// grid is computed once for max_order and shared by all resolutions (each resolution uses the
-/// leading Sonine test functions). Throws std::invalid_argument naming the field for d ∉ {2, 3},
-/// α outside (0, 1] or max_order outside [1, kTailGalerkinMaxOrder].
-std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order);
+/// restitution α ∈ (0, 1] (element N − 1 is resolution N) with the trial functions `trial`. The
+/// collision kernel on the quadrature grid is computed once for max_order and shared by all
+/// resolutions (each resolution uses the leading Sonine test functions). Throws
+/// std::invalid_argument naming the field for d ∉ {2, 3}, α outside (0, 1] or max_order outside
+/// [1, kTailGalerkinMaxOrder].
+std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order,
+                                                       TailTrialSpace trial = TailTrialSpace::even);
+
+/// Returns γ of the HCS tail φ ~ c^γ exp(−A c) (dimensionless; theory.md (10.15)): −d + 2/k in 3D,
+/// −d + 1/k in 2D, k = (1 + α)(3 − α)/4. Throws std::invalid_argument for d ∉ {2, 3} or α ∉ (0, 1].
+double hcs_tail_power(int dimension, double alpha);
 
 }  // namespace gkt
