@@ -1,11 +1,10 @@
 #include "gkt/collision/rough_mixture_collision_rule.hpp"
 
-#include <array>
-#include <cstddef>
 #include <stdexcept>
 #include <string>
 
 #include "collision/ring.hpp"
+#include "collision/rough_pair_map.hpp"
 
 namespace gkt {
 
@@ -17,12 +16,7 @@ void check_positive(const Rational& x, const std::string& field) {
 
 void check_parameters(int dimension, const Rational& alpha, const Rational& beta, const RoughSpecies& i,
                       const RoughSpecies& j) {
-  if (dimension != 2 && dimension != 3)
-    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
-  if (alpha.sign() <= 0 || alpha > Rational(1))
-    throw std::invalid_argument("alpha: must be a number in (0, 1], got " + alpha.to_decimal_string());
-  if (beta < Rational(-1) || beta > Rational(1))
-    throw std::invalid_argument("beta: must be a number in [-1, 1], got " + beta.to_decimal_string());
+  detail::check_rough_restitution(dimension, alpha, beta);
   for (const auto& [s, name] : {std::pair<const RoughSpecies&, const char*>{i, "species_i"}, {j, "species_j"}}) {
     const std::string prefix(name);
     check_positive(s.mass, prefix + ".mass");
@@ -64,7 +58,7 @@ Rational RoughMixtureParameters<Ring>::tangential_mass() const {
 
 template <class Ring>
 RoughCollisionMap<Ring> RoughMixtureParameters<Ring>::collision_map() const {
-  const Ring zero(0L), one(1L);
+  const Ring one(1L);
   const Rational total = mass_i + mass_j, m_t = tangential_mass();
   // Normal impulse J_n/m_i = −(1+α)(m_j/(m_i+m_j)) u σ̂, J_n/m_j = −(1+α)(m_i/(m_i+m_j)) u σ̂.
   Ring n_i = alpha + one, n_j = alpha + one;
@@ -77,32 +71,16 @@ RoughCollisionMap<Ring> RoughMixtureParameters<Ring>::collision_map() const {
   Ring r_i = t_i, r_j = t_j;
   detail::divide(r_i, kappa_i);
   detail::divide(r_j, kappa_j);
-  RoughCollisionMap<Ring> r;
-  r.dimension = dimension;
-  r.width = {velocity_width_i, velocity_width_j, spin_width_i, spin_width_j};
-  for (auto& row : r.normal) row.fill(zero);
-  for (auto& row : r.tangential) row.fill(zero);
-  r.normal[0] = {one, zero};
-  r.normal[1] = {zero, one};
-  r.normal[2] = {spin_scale_i, zero};
-  r.normal[3] = {zero, spin_scale_j};
-  r.tangential[0][0] = one;
-  r.tangential[1][1] = one;
-  r.tangential[2][2] = spin_scale_i;
-  r.tangential[3][3] = spin_scale_j;
-  // u = v1n − v2n: v1n' = v1n − n_i u, v2n' = v2n + n_j u; the normal spin is unchanged.
-  r.normal[4] = {one - n_i, n_i};
-  r.normal[5] = {n_j, one - n_j};
-  r.normal[6] = r.normal[2];
-  r.normal[7] = r.normal[3];
-  const std::array<Ring, 4> gct{one, -one, spin_scale_i, spin_scale_j};
-  for (std::size_t c = 0; c < 4; ++c) {
-    r.tangential[4][c] = r.tangential[0][c] - t_i * gct[c];
-    r.tangential[5][c] = r.tangential[1][c] + t_j * gct[c];
-    r.tangential[6][c] = r.tangential[2][c] - r_i * gct[c];
-    r.tangential[7][c] = r.tangential[3][c] - r_j * gct[c];
-  }
-  return r;
+  return detail::assemble_rough_pair_map<Ring>(
+      dimension, {.width = {velocity_width_i, velocity_width_j, spin_width_i, spin_width_j},
+                  .spin_scale_i = spin_scale_i,
+                  .spin_scale_j = spin_scale_j,
+                  .normal_i = n_i,
+                  .normal_j = n_j,
+                  .tangential_i = t_i,
+                  .tangential_j = t_j,
+                  .spin_i = r_i,
+                  .spin_j = r_j});
 }
 
 RoughMixtureParameters<Rational> rough_mixture_parameters(int dimension, const Rational& alpha, const Rational& beta,
