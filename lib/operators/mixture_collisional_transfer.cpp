@@ -6,6 +6,7 @@
 #include "gkt/algebra/sonine.hpp"
 #include "gkt/collision/collision_rule.hpp"
 #include "gkt/collision/quadratic_form_moments.hpp"
+#include "operators/transfer_contractions.hpp"
 
 namespace gkt {
 
@@ -16,15 +17,7 @@ using Poly = std::vector<Rational>;  // coefficients of x^a
 
 /// The Sonine polynomials of the index with twice_m, as polynomials in x = u² for X = w x.
 std::vector<Poly> sonine_in(long twice_m, int n_max, const Rational& w) {
-  std::vector<Poly> out = sonine_table(twice_m, n_max);
-  for (auto& s : out) {
-    Rational power(1);
-    for (auto& c : s) {
-      c *= power;
-      power *= w;
-    }
-  }
-  return out;
+  return detail::scaled_argument(sonine_table(twice_m, n_max), w);
 }
 
 int degree(const std::vector<Poly>& t) {

@@ -16,6 +16,18 @@ namespace gkt::detail {
 
 using Table = std::vector<std::vector<Rational>>;  // rows: coefficients of x^j
 
+/// Returns the polynomials of `t` in X rewritten as polynomials in x for X = w x (row j scaled by w^j).
+inline Table scaled_argument(Table t, const Rational& w) {
+  for (auto& row : t) {
+    Rational power(1);
+    for (auto& c : row) {
+      c *= power;
+      power *= w;
+    }
+  }
+  return t;
+}
+
 /// D_l = 2(S_l' − S_l), the partner factor of ∂_c φ = f_M c Σ a_l D_l (theory.md (15.2)).
 inline Table derivative_factors(int d, int k_max) {
   Table out;

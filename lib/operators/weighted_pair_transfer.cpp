@@ -16,20 +16,9 @@ namespace {
 using detail::contract2;
 using detail::contract3;
 using detail::max_degree;
+using detail::scaled_argument;
 using detail::Table;
 using Q = QuadraticFormMoments<Rational>;
-
-/// The polynomials of `t` in X as polynomials in u² for X = w u².
-Table scaled(Table t, const Rational& w) {
-  for (auto& row : t) {
-    Rational power(1);
-    for (auto& c : row) {
-      c *= power;
-      power *= w;
-    }
-  }
-  return t;
-}
 
 /// G_l = −½ D_l = S_l − S_l': the factor of ∂_V(f_M S_l) = −2θV f_M G_l.
 Table gradient_factors(int d, int k_max) {
@@ -68,14 +57,14 @@ WeightedPairTransferMoments weighted_pair_transfer_moments(int dimension, const 
   // Weights: S_k, T_k, G_k of X2 (partner) and, scaled by r², of X1 (particle 1).
   const Table s2 = sonine_table(sonine_twice_m(d, 0), k_max), t2 = detail::temperature_factors(d, k_max),
               g2 = gradient_factors(d, k_max);
-  const Table s1 = scaled(s2, r2), t1 = scaled(t2, r2), g1 = scaled(g2, r2);
+  const Table s1 = scaled_argument(s2, r2), t1 = scaled_argument(t2, r2), g1 = scaled_argument(g2, r2);
   const int nw = std::max({max_degree(s2), max_degree(t2), max_degree(g2)});
   // Test and basis polynomials, as pair_transfer_moments.
-  const Table vec1 = scaled(sonine_table(sonine_twice_m(d, 1), n_max), r2),
+  const Table vec1 = scaled_argument(sonine_table(sonine_twice_m(d, 1), n_max), r2),
               vec2 = sonine_table(sonine_twice_m(d, 1), n_max);
-  const Table ten1 = scaled(sonine_table(sonine_twice_m(d, 2), n_max), r2),
+  const Table ten1 = scaled_argument(sonine_table(sonine_twice_m(d, 2), n_max), r2),
               ten2 = sonine_table(sonine_twice_m(d, 2), n_max);
-  const Table sca1 = scaled(sonine_table(sonine_twice_m(d, 0), n_max), r2),
+  const Table sca1 = scaled_argument(sonine_table(sonine_twice_m(d, 0), n_max), r2),
               sca2 = sonine_table(sonine_twice_m(d, 0), n_max);
   const int nv = max_degree(vec1), nt = max_degree(ten1), ns = max_degree(sca1);
 
