@@ -61,20 +61,35 @@ GravityColumnDsmcProfile run_gravity_column_dsmc(const GravityColumnDsmcParamete
   std::vector<std::vector<std::size_t>> members(cells);
   std::vector<double> majorant(cells, 5 * wall), remainder(cells, 0);
   std::vector<double> count(cells, 0), energy(cells, 0), vertical(cells, 0), drift(cells, 0), flux(cells, 0);
+  std::vector<double> transfer(cells, 0), loss(cells, 0);
   double energy_in = 0, samples = 0;
   const auto settle_steps = static_cast<long>(std::llround(p.settle_time / dt));
   const long steps = settle_steps + static_cast<long>(std::llround(p.sample_time / dt));
   auto cell_of = [&](double z) { return std::min(static_cast<std::size_t>(std::max(z, 0.0) / dz), cells - 1); };
 
   for (long step = 0; step < steps; ++step) {
-    const bool sampling = step >= settle_steps;
+    const bool sampling = step >= settle_steps, sample_flux = sampling && (step - settle_steps) % 5 == 0;
+    // The kinetic flux is sampled at the middle of each flight (z + w Δt/2 − Δt²/8, w − Δt/2, after
+    // a floor hit before then): sampled at its start, n⟨(m/2)V²V_z⟩ would differ from the flight's
+    // time average by (Δt/2)[∂_z(n⟨½V²V_z²⟩) + g n⟨V_z² + ½V²⟩], 2.5 % of q at Δt = 0.02 (docs/theory.md §23.3).
+    const double half = dt / 2;
+    auto add_flux = [&](double z, double w, double horizontal) {
+      if (z >= height) z = 2 * height - z, w = -w;  // past the lid: the mirror image
+      flux[cell_of(z)] += (horizontal + w * w) / 2 * w;
+    };
+    auto horizontal_v2 = [&](const Particle& a) {
+      double h = 0;
+      for (int k = 0; k < d; ++k) h += k == up ? 0 : a.v[k] * a.v[k];
+      return h;
+    };
     for (auto& a : gas) {  // free flight under gravity, the walls
       const double z0 = a.z, w0 = a.v[up];
       a.z = z0 + w0 * dt - dt * dt / 2;
       a.v[up] = w0 - dt;
+      const double hit = a.z < 0 ? std::clamp(w0 + std::sqrt(w0 * w0 + 2 * z0), 0.0, dt) : dt;
+      if (sample_flux && hit >= half) add_flux(z0 + w0 * half - half * half / 2, w0 - half, horizontal_v2(a));
       if (a.z < 0) {  // hits the floor at s: z0 + w0 s − s²/2 = 0; re-emitted at the wall temperature
-        double s = w0 + std::sqrt(w0 * w0 + 2 * z0);
-        s = std::clamp(s, 0.0, dt);
+        const double s = hit;
         a.v[up] = w0 - s;
         double before = 0, after = 0;
         for (int k = 0; k < d; ++k) before += a.v[k] * a.v[k];
@@ -82,7 +97,10 @@ GravityColumnDsmcProfile run_gravity_column_dsmc(const GravityColumnDsmcParamete
         a.v[up] = wall * std::sqrt(-2 * std::log(1 - rng.uniform()));  // flux-weighted normal speed
         for (int k = 0; k < d; ++k) after += a.v[k] * a.v[k];
         if (sampling) energy_in += (after - before) / 2;
-        const double rest = dt - s;
+        const double rest = dt - s, after_hit = half - s;
+        if (sample_flux && s < half)
+          add_flux(std::max(a.v[up] * after_hit - after_hit * after_hit / 2, 0.0), a.v[up] - after_hit,
+                   horizontal_v2(a));
         a.z = std::max(a.v[up] * rest - rest * rest / 2, 0.0);
         a.v[up] -= rest;
       }
@@ -117,6 +135,12 @@ GravityColumnDsmcProfile run_gravity_column_dsmc(const GravityColumnDsmcParamete
         majorant[c] = std::max(majorant[c], std::abs(gn));
         if (std::abs(gn) < rng.uniform() * majorant[c]) continue;
         const double f = (1 + p.alpha) / 2 * gn;
+        if (sampling) {  // cell transfer [alexander1998cell]: ½(δE_j − δE_i) = f (v_i + v_j)·n̂/2 moved by z_j − z_i
+          double sn = 0;
+          for (int k = 0; k < d; ++k) sn += (gas[i].v[k] + gas[j].v[k]) * n[k];
+          transfer[c] += f * sn / 2 * (gas[j].z - gas[i].z);
+          loss[c] += f * (gn - f);  // −(δE_i + δE_j)
+        }
         for (int k = 0; k < d; ++k) {
           gas[i].v[k] -= f * n[k];
           gas[j].v[k] += f * n[k];
@@ -133,12 +157,12 @@ GravityColumnDsmcProfile run_gravity_column_dsmc(const GravityColumnDsmcParamete
         energy[c] += v2;
         vertical[c] += a.v[up] * a.v[up];
         drift[c] += a.v[up];
-        flux[c] += v2 / 2 * a.v[up];
       }
     }
   }
   GravityColumnDsmcProfile out;
-  out.floor_heat_flux = energy_in * weight / (static_cast<double>(steps - settle_steps) * dt);
+  const double sampled_time = static_cast<double>(steps - settle_steps) * dt;
+  out.floor_heat_flux = energy_in * weight / sampled_time;
   for (std::size_t c = 0; c < cells; ++c) {
     out.z.push_back((static_cast<double>(c) + 0.5) * dz);
     out.number_density.push_back(count[c] / samples * weight / dz);
@@ -146,7 +170,10 @@ GravityColumnDsmcProfile run_gravity_column_dsmc(const GravityColumnDsmcParamete
     const double empty = std::numeric_limits<double>::quiet_NaN();  // no particle ever sampled there
     out.temperature.push_back(count[c] > 0 ? (energy[c] / count[c] - u * u) / d : empty);
     out.vertical_temperature.push_back(count[c] > 0 ? vertical[c] / count[c] - u * u : empty);
-    out.heat_flux.push_back(flux[c] / samples * weight / dz);
+    out.kinetic_heat_flux.push_back(flux[c] / samples * weight / dz);
+    out.collisional_heat_flux.push_back(transfer[c] * weight / (sampled_time * dz));
+    out.heat_flux.push_back(out.kinetic_heat_flux.back() + out.collisional_heat_flux.back());
+    out.dissipation.push_back(loss[c] * weight / (sampled_time * dz));
   }
   return out;
 }

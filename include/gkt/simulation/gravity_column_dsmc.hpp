@@ -37,13 +37,24 @@ struct GravityColumnDsmcParameters {
 };
 
 /// The sampled column: cell centres z, n σ^d, T = m⟨V²⟩/d, T_z = m⟨V_z²⟩ (mgσ), the upward energy
-/// flux q (m g^{3/2} σ^{5/2−d}), and the energy per unit time and area the floor gave the gas; T and
-/// T_z are NaN in a cell no sampled particle was ever in.
+/// flux q (m g^{3/2} σ^{5/2−d}) and its two parts, the collisional dissipation per unit volume, and
+/// the energy per unit time and area the floor gave the gas; T and T_z are NaN in a cell no sampled
+/// particle was ever in.
 struct GravityColumnDsmcProfile {
-  /// Per cell: centre z (σ), n σ^d, T = m⟨V²⟩/d and T_z = m⟨V_z²⟩ (mgσ), upward energy flux q (m g^{3/2} σ^{5/2−d}).
+  /// Per cell: centre z (σ), n σ^d, T = m⟨V²⟩/d and T_z = m⟨V_z²⟩ (mgσ), upward energy flux
+  /// q = kinetic + collisional (m g^{3/2} σ^{5/2−d}); all averaged over the cell.
   /// @{
   std::vector<double> z, number_density, temperature, vertical_temperature, heat_flux;
   /// @}
+  /// Per cell: the kinetic flux n⟨(m/2)V²V_z⟩ (the flight of particles across a plane), and the
+  /// collisional cell transfer Σ ½(δE_j − δE_i)(z_j − z_i)/(Δz t A): the energy NTC collisions move
+  /// between partners at different heights of one cell (docs/theory.md §23.3, [alexander1998cell]),
+  /// both m g^{3/2} σ^{5/2−d}.
+  /// @{
+  std::vector<double> kinetic_heat_flux, collisional_heat_flux;
+  /// @}
+  /// Per cell: energy lost in collisions per unit time and volume (m g^{3/2} σ^{3/2−d}).
+  std::vector<double> dissipation;
   /// Energy per unit time and area the floor gave the gas (m g^{3/2} σ^{5/2−d}).
   double floor_heat_flux = 0;
 };
