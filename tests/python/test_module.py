@@ -434,3 +434,133 @@ def test_binary_table_refuses_a_pole_of_the_truncated_solution():
     assert table.interpolation_error <= 1e-3
     with pytest.raises(ValueError, match=r"^fraction_1: must be a number in \[0, 0\.9\] \(the table's fraction_range\), got 0\.95$"):
         table.evaluate(0.95, 1.0, 1.0)
+
+
+# The dilute ternary of tests/test_ternary_transport_table.cpp: three unequal species and a full
+# restitution matrix, tabulated cheaply (5 x 5 starting nodes, tolerance 5e-2: about a second).
+TERNARY_MASS, TERNARY_DIAMETER = (1, 2, 3.5), (1, 1.3, 0.8)
+TERNARY_ALPHA = [[0.9, 0.85, 0.75], [0.85, 0.8, 0.8], [0.75, 0.8, 0.7]]
+TERNARY_TOLERANCE = 5e-2
+
+
+@pytest.fixture(scope="module")
+def ternary_table():
+    return gkt.TernaryTransportTable(TERNARY_MASS, TERNARY_DIAMETER, TERNARY_ALPHA, order=1, nodes=5,
+                                     tolerance=TERNARY_TOLERANCE)
+
+
+def ternary_solve(x1, x2, coefficients):
+    """Returns the mixture model's columns (gkt table, order 1, hcs = "maxwellian": the expansion the
+    table solves) of the ternary at (x_1, x_2), one row."""
+    fractions = (x1, x2, 1 - x1 - x2)
+    return gkt.table({"model": "mixture", "alpha": TERNARY_ALPHA, "order": 1, "hcs": "maxwellian",
+                      "coefficients": coefficients,
+                      "species": [{"mass": m, "diameter": s, "fraction": x}
+                                  for m, s, x in zip(TERNARY_MASS, TERNARY_DIAMETER, fractions)]})
+
+
+def ternary_scales(x1, x2, n, temperature):
+    """Returns {column: the physical scale of its reduced value} for the reference gas of
+    m̄ = Σ x_i m_i, σ̄ = Σ x_i σ_i (gkt/transport/common/reference_gas.hpp, 3D, k_B = 1):
+    η0 = (5/(16 σ̄²)) √(m̄ T/π), κ0 = (15/4) η0/m̄, D0 = (3/(8 √π)) √(T/m̄)/(n σ̄²), ν0 = nT/η0;
+    D_ij scales as n D0, D^T_i and D^p_i as D0, D''_j as κ0/T, T_i/T as 1."""
+    fractions = np.array([x1, x2, 1 - x1 - x2])
+    mbar, sbar = fractions @ np.array(TERNARY_MASS, float), fractions @ np.array(TERNARY_DIAMETER, float)
+    eta0 = 5 / (16 * sbar**2) * np.sqrt(mbar * temperature / np.pi)
+    kappa0 = 15 / 4 * eta0 / mbar
+    d0 = 3 / (8 * np.sqrt(np.pi)) * np.sqrt(temperature / mbar) / (n * sbar**2)
+    scales = {"cooling_rate": n * temperature / eta0, "shear_viscosity": eta0, "thermal_conductivity": kappa0}
+    for i in (1, 2, 3):
+        scales[f"temperature_ratio_{i}"] = np.ones_like(eta0)
+        scales[f"thermal_diffusion_{i}"] = scales[f"pressure_diffusion_{i}"] = d0
+        scales[f"dufour_{i}"] = kappa0 / temperature
+        for j in (1, 2, 3):
+            scales[f"mutual_diffusion_{i}_{j}"] = n * d0
+    return scales
+
+
+def test_ternary_table_at_a_node_equals_the_mixture_table(ternary_table):
+    """At a node of the Duffy square (u = v = 1/2: x_1 = 1/2, x_2 = 1/4, kept by every refinement
+    and split) the interpolated ternary equals the solved mixture column by column (the names map to
+    the right coefficients), through the reference gas of (m̄, σ̄) (rtol 1e-10: the reduction and the
+    product by the scales round differently; zeros to 1e-12 of the scale)."""
+    assert 0 < ternary_table.interpolation_error <= TERNARY_TOLERANCE
+    assert ternary_table.validation_error <= ternary_table.interpolation_error
+    cost = ternary_table.build_cost
+    assert cost["pieces"] >= 1 and cost["nodes_per_axis"] >= 5 and cost["seconds"] > 0
+    assert cost["solves"] >= 25 + 16  # nodes and midpoints at least
+    n, temperature = np.array([1.0, 0.2]), np.array([1.0, 4.0])
+    cells = ternary_table.evaluate(0.5, 0.25, n, temperature)
+    scales = ternary_scales(0.5, 0.25, n, temperature)
+    assert sorted(cells) == sorted([*scales, "pressure"])
+    solved = ternary_solve(0.5, 0.25, list(scales))
+    for name, scale in scales.items():
+        np.testing.assert_allclose(cells[name] / scale, solved[name][0], rtol=1e-10, atol=1e-12, err_msg=name)
+    assert np.any(np.abs(solved["pressure_diffusion_1"]) > 1e-3)  # the columns compared are not all zero
+    np.testing.assert_array_equal(cells["pressure"], n * temperature)
+
+
+def test_ternary_table_off_the_nodes_agrees_with_direct_solves(ternary_table):
+    """Off the nodes the table agrees with direct solves within the tolerance it was built for
+    (relative to max(1, |value|) of the reduced value, as the table measures its error), and is an
+    interpolation there, not a lookup."""
+    worst = 0.0
+    for x1, x2 in ((0.21, 0.44), (0.05, 0.9), (0.63, 0.1)):
+        n, temperature = 1.7, 0.6
+        scales = ternary_scales(x1, x2, n, temperature)
+        solved = ternary_solve(x1, x2, list(scales))
+        cells = ternary_table.evaluate(x1, x2, n, temperature)
+        for name, scale in scales.items():
+            exact = solved[name][0]
+            worst = max(worst, abs(cells[name] / scale - exact) / max(1.0, abs(exact)))
+    assert 0 < worst <= TERNARY_TOLERANCE
+
+
+def test_ternary_table_arrays_equal_single_calls_and_the_cpp_batch(ternary_table):
+    """Broadcast arrays give, cell by cell, the same bits as single-state calls: both are
+    gkt::evaluate of gkt/cell.hpp, which the C API's test (tests/c_api/test_c_api_ternary.cpp) shows
+    equal bit for bit to TernaryTransportTable::evaluate and gkt_ternary_table_evaluate."""
+    x1 = np.array([0.21, 0.05, 0.0, 1.0, 0.0])[:, None]
+    x2 = np.array([0.44, 0.9, 0.0, 0.0, 1.0])[:, None]
+    n, temperature = np.array([2.0, 0.3]), 1.5
+    cells = ternary_table.evaluate(x1, x2, n, temperature)
+    assert cells["mutual_diffusion_3_2"].shape == (5, 2)
+    for r in range(5):
+        for c in range(2):
+            single = ternary_table.evaluate(x1[r, 0], x2[r, 0], n[c], temperature)
+            for name, column in cells.items():
+                assert column[r, c] == single[name][()], (name, r, c)
+    assert np.all(np.isfinite(cells["shear_viscosity"]))  # the vertices are states too
+
+
+def test_ternary_table_errors():
+    with pytest.raises(ValueError, match="^alpha: must be a number or a 3 x 3 restitution matrix$"):
+        gkt.TernaryTransportTable(TERNARY_MASS, TERNARY_DIAMETER, [[0.9, 0.8], [0.8, 0.7]])
+    with pytest.raises(ValueError, match="^alpha_1_2: the restitution matrix must be symmetric, got 0.85 and 0.8$"):
+        gkt.TernaryTransportTable(TERNARY_MASS, TERNARY_DIAMETER, [[0.9, 0.85, 0.75], [0.8, 0.8, 0.8], [0.75, 0.8, 0.7]])
+    with pytest.raises(ValueError, match="mass"):
+        gkt.TernaryTransportTable((1, 0, 2), TERNARY_DIAMETER, 0.9)
+    with pytest.raises(ValueError, match=r"^nodes: must be an integer in \[3, 33\], got 2$"):
+        gkt.TernaryTransportTable(TERNARY_MASS, TERNARY_DIAMETER, 0.9, nodes=2)
+    with pytest.raises(ValueError, match=r"^max_nodes: must be an integer in \[nodes, 33\]"):
+        gkt.TernaryTransportTable(TERNARY_MASS, TERNARY_DIAMETER, 0.9, nodes=9, max_nodes=8)
+    with pytest.raises(ValueError, match=r"^tolerance: must be a number in \(0, 1\], got 0$"):
+        gkt.TernaryTransportTable(TERNARY_MASS, TERNARY_DIAMETER, 0.9, tolerance=0)
+    table = gkt.TernaryTransportTable(TERNARY_MASS, TERNARY_DIAMETER, 0.9, order=1, nodes=3, tolerance=1.0)
+    with pytest.raises(ValueError, match=r"^fraction_2: must be a number in \[0, 1 - fraction_1\], got 0\.5$"):
+        table.evaluate(0.6, 0.5, 1.0, 1.0)
+    with pytest.raises(ValueError, match="^fraction_1"):
+        table.evaluate(-0.1, 0.5, 1.0, 1.0)
+    with pytest.raises(ValueError, match="^number_density"):
+        table.evaluate(0.1, 0.5, [1.0, 0.0], 1.0)
+    with pytest.raises(ValueError, match="^temperature"):
+        table.evaluate(0.1, 0.5, 1.0, np.nan)
+
+
+def test_ternary_table_refuses_a_pole_of_the_truncated_solution():
+    """Species 2 ten times heavier than 1 and 3 at order 1: the binary's pole runs along the triangle
+    (theory.md §17.8); the table is refused with the library's one-line message naming the region."""
+    pattern = r"^tolerance: the interpolation error .* on x_1 in \[0\.97.*, x_2/\(1 - x_1\) in \["
+    with pytest.raises(ValueError, match=pattern) as refused:  # 3 x 3 nodes, no refinement: cheap
+        gkt.TernaryTransportTable((1, 10, 1), (1, 1, 1), 0.8, order=1, nodes=3, tolerance=5e-2, max_nodes=3)
+    assert "\n" not in str(refused.value)

@@ -362,6 +362,17 @@ py::dict enskog_first_sonine(const py::object& alpha, const py::object& packing_
       shape_of(in[0]));
 }
 
+/// Returns the row-major s × s restitution matrix α_ij of `alpha`, a number (every pair) or an
+/// s × s array; Mixture::validate checks the values and the symmetry.
+std::vector<double> restitution_matrix(const py::object& alpha, py::ssize_t s) {
+  const py::array_t<double, py::array::c_style | py::array::forcecast> a(alpha);
+  const auto size = static_cast<std::size_t>(s * s);
+  if (a.ndim() == 0) return std::vector<double>(size, *a.data());
+  if (a.ndim() == 2 && a.shape(0) == s && a.shape(1) == s) return {a.data(), a.data() + size};
+  const std::string n = std::to_string(s);
+  throw std::invalid_argument("alpha: must be a number or a " + n + " x " + n + " restitution matrix");
+}
+
 /// A binary's Navier–Stokes table (gkt/transport/mixture/mixture_transport_table.hpp) built once,
 /// evaluated per cell over NumPy arrays of (x_1, n, T).
 class BinaryTable {
@@ -434,18 +445,88 @@ class BinaryTable {
                                                                 const std::array<double, 2>& fraction_range) {
     gkt::Mixture mixture =
         gkt::make_mixture(dimension, {{mass[0], diameter[0], 0.5, ""}, {mass[1], diameter[1], 0.5, ""}}, 1.0);
-    const py::array_t<double, py::array::c_style | py::array::forcecast> a(alpha);
-    if (a.ndim() == 0) {
-      mixture.alpha.assign(4, *a.data());
-    } else if (a.ndim() == 2 && a.shape(0) == 2 && a.shape(1) == 2) {
-      mixture.alpha.assign(a.data(), a.data() + 4);
-    } else {
-      throw std::invalid_argument("alpha: must be a number or a 2 x 2 restitution matrix");
-    }
+    mixture.alpha = restitution_matrix(alpha, 2);
     mixture.validate();
     py::gil_scoped_release release;
     return std::make_shared<const gkt::BinaryTransportTable>(mixture, order, nodes, max_packing_fraction, packing_nodes,
                                                              tolerance, fraction_range);
+  }
+};
+
+/// A dilute ternary's Navier–Stokes table (gkt/transport/mixture/ternary_transport_table.hpp)
+/// built once, evaluated per cell over NumPy arrays of (x_1, x_2, n, T).
+class TernaryTable {
+ public:
+  TernaryTable(const std::array<double, 3>& mass, const std::array<double, 3>& diameter, const py::object& alpha,
+               int dimension, int order, int nodes, double tolerance, int max_nodes)
+      : table_(build(mass, diameter, alpha, dimension, order, nodes, tolerance, max_nodes)) {}
+
+  [[nodiscard]] double interpolation_error() const { return table_->interpolation_error(); }
+  [[nodiscard]] double validation_error() const { return table_->validation_error(); }
+  /// Returns {pieces, nodes_per_axis, solves, seconds}: what the build cost.
+  [[nodiscard]] py::dict build_cost() const {
+    py::dict out;
+    out["pieces"] = table_->pieces();
+    out["nodes_per_axis"] = table_->nodes_per_axis();
+    out["solves"] = table_->build_solves();
+    out["seconds"] = table_->build_seconds();
+    return out;
+  }
+
+  /// Returns the Navier–Stokes set at every (x_1, x_2, n, T) (broadcast) in the caller's units.
+  py::dict evaluate(const py::object& fraction_1, const py::object& fraction_2, const py::object& number_density,
+                    const py::object& temperature) const {
+    const auto in = broadcast({fraction_1, fraction_2, number_density, temperature});
+    const auto n = static_cast<std::size_t>(in[0].size());
+    std::vector<gkt::TernaryTransport> cells(n);
+    {
+      py::gil_scoped_release release;
+      gkt::evaluate(*table_, {in[0].data(), n}, {in[1].data(), n}, {in[2].data(), n}, {in[3].data(), n}, cells);
+    }
+    using T = gkt::TernaryTransport;
+    py::dict out;
+    const auto shape = shape_of(in[0]);
+    const auto put = [&](const std::string& name, auto get) {
+      py::array_t<double> column(shape);
+      double* data = column.mutable_data();
+      for (std::size_t i = 0; i < n; ++i) data[i] = get(cells[i]);
+      out[py::str(name)] = column;
+    };
+    put("cooling_rate", [](const T& v) { return v.cooling_rate; });
+    for (std::size_t i = 0; i < 3; ++i)
+      put("temperature_ratio_" + std::to_string(i + 1), [i](const T& v) { return v.temperature_ratio[i]; });
+    put("shear_viscosity", [](const T& v) { return v.shear_viscosity; });
+    put("thermal_conductivity", [](const T& v) { return v.thermal_conductivity; });
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j)
+        put("mutual_diffusion_" + std::to_string(i + 1) + "_" + std::to_string(j + 1),
+            [k = 3 * i + j](const T& v) { return v.mutual_diffusion[k]; });
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::string at = "_" + std::to_string(i + 1);
+      put("thermal_diffusion" + at, [i](const T& v) { return v.thermal_diffusion[i]; });
+      put("pressure_diffusion" + at, [i](const T& v) { return v.pressure_diffusion[i]; });
+      put("dufour" + at, [i](const T& v) { return v.dufour[i]; });
+    }
+    put("pressure", [](const T& v) { return v.pressure; });
+    return out;
+  }
+
+ private:
+  std::shared_ptr<const gkt::TernaryTransportTable> table_;
+
+  static std::shared_ptr<const gkt::TernaryTransportTable> build(const std::array<double, 3>& mass,
+                                                                 const std::array<double, 3>& diameter,
+                                                                 const py::object& alpha, int dimension, int order,
+                                                                 int nodes, double tolerance, int max_nodes) {
+    gkt::Mixture mixture = gkt::make_mixture(dimension,
+                                             {{mass[0], diameter[0], 1.0 / 3, ""},
+                                              {mass[1], diameter[1], 1.0 / 3, ""},
+                                              {mass[2], diameter[2], 1 - 2.0 / 3, ""}},
+                                             1.0);
+    mixture.alpha = restitution_matrix(alpha, 3);
+    mixture.validate();
+    py::gil_scoped_release release;
+    return std::make_shared<const gkt::TernaryTransportTable>(mixture, order, nodes, tolerance, max_nodes);
   }
 };
 
@@ -549,4 +630,36 @@ PYBIND11_MODULE(gkt, m) {
            "cooling_rate_first_order} at every (x_1, n, T), broadcast as NumPy does, in the caller's units "
            "(mass, length, T in energy); nan beyond the table's phi_max. Per cell: gkt::evaluate (gkt/cell.hpp), "
            "the GIL released.");
+
+  py::class_<TernaryTable>(m, "TernaryTransportTable",
+                           "The Navier-Stokes set of a dilute granular ternary, solved once on Chebyshev-Lobatto "
+                           "nodes of the Duffy square of the composition triangle (x_1 = u, x_2 = (1 - u) v) and "
+                           "interpolated per cell (docs/theory.md section 17.8, \"Ternary tables\").")
+      .def(py::init<const std::array<double, 3>&, const std::array<double, 3>&, const py::object&, int, int, int,
+                    double, int>(),
+           py::arg("mass"), py::arg("diameter"), py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
+           py::arg("order") = 1, py::arg("nodes") = 9, py::arg("tolerance") = 1e-3, py::arg("max_nodes") = 33,
+           "Solves the dilute ternary (masses and diameters of species 1, 2, 3; alpha a number or a symmetric "
+           "3 x 3 matrix) at Sonine order `order` on nodes x nodes points of the Duffy square; refines both axes "
+           "(K -> 2K - 1, up to max_nodes) and splits the square into rectangles until the interpolation error "
+           "is at most `tolerance` at every point checked, or raises ValueError naming the error reached, the "
+           "point (x_1, x_2) and the region of x_1 and x_2/(1 - x_1) (e.g. around a pole of the truncated "
+           "solution). The GIL is released while solving.")
+      .def_property_readonly("interpolation_error", &TernaryTable::interpolation_error,
+                             "Returns the largest interpolation error of the reduced coefficients measured at build "
+                             "time, at the midpoints and at independent validation points (relative to "
+                             "max(1, |value|)).")
+      .def_property_readonly("validation_error", &TernaryTable::validation_error,
+                             "Returns the interpolation error at the independent validation points alone.")
+      .def_property_readonly("build_cost", &TernaryTable::build_cost,
+                             "Returns {pieces, nodes_per_axis, solves, seconds}: the rectangles of the Duffy square, "
+                             "the largest nodes per axis of a piece, the mixture solves and the wall-clock seconds "
+                             "of the build.")
+      .def("evaluate", &TernaryTable::evaluate, py::arg("fraction_1"), py::arg("fraction_2"), py::arg("number_density"),
+           py::arg("temperature"),
+           "Returns {cooling_rate, temperature_ratio_i, shear_viscosity, thermal_conductivity, "
+           "mutual_diffusion_i_j, thermal_diffusion_i, pressure_diffusion_i, dufour_i, pressure} (i, j = 1, 2, 3) "
+           "at every (x_1, x_2, n, T), broadcast as NumPy does, in the caller's units (mass, length, T in "
+           "energy); x_1, x_2 >= 0 with x_1 + x_2 <= 1 (x_3 = 1 - x_1 - x_2). Per cell: gkt::evaluate "
+           "(gkt/cell.hpp), the GIL released.");
 }
