@@ -163,8 +163,10 @@ INSTANTIATE_TEST_SUITE_P(
                      "pair_correlation: must be one of"},
         DsmcBadInput{"dense_viscosity", kSmooth + "viscosity_kicks = 2\n", "--set packing_fraction=0.2",
                      "viscosity_kicks: the strained-HCS viscosity is simulated for the dilute gas only"},
-        DsmcBadInput{"dense_shear", kShear, "--set packing_fraction=0.2",
-                     "packing_fraction: unknown key for gkt dsmc with model \"uniform-shear\""},
+        DsmcBadInput{"dense_shear", kShear, "--set packing_fraction=0.8",
+                     "packing_fraction: must be a number in [0, 0.7], got 0.8"},
+        DsmcBadInput{"dense_rough", "model = \"rough\"\npacking_fraction = 0.2\n", "",
+                     "packing_fraction: unknown key for gkt dsmc with model \"rough\""},
         DsmcBadInput{"viscosity_haff", kSmooth + "viscosity_kicks = 2\n[output]\nhaff = true\n", "",
                      "viscosity_kicks: the shear viscosity is a summary column"},
         DsmcBadInput{"viscosity_shear_model", kShear, "--set viscosity_kicks=2",
@@ -396,6 +398,25 @@ TEST(CliDsmc, UniformShearAgreesWithTheDocumentedSteadyState) {
     }
     EXPECT_GT(rows[0][0] - doc.grad_gamma, 5 * rows[0][1]) << "d = " << doc.d << ": DSMC cannot tell γ from Grad's";
   }
+  fs::remove_all(dir);
+}
+
+// The Enskog uniform shear flow from the command line (theory.md §22.8): with a vanishing shear rate
+// the gas is in its cooling state, so the pressure (2/d) Σ_i P_ii/(2nT) = p/(nT) is the exact
+// 1 + 2^{d−2}(1+α)φχ of (15.5) (2D, α = 0.8, φ = 0.3, Henderson χ = 1.6122…) within 4σ, and P_xy = 0.
+TEST(CliDsmc, EnskogShearSceneHasTheDensePressure) {
+  const fs::path dir = fresh_dir("enskog_shear");
+  std::ofstream(dir / "scene.toml") << kShear;
+  const DsmcCliRun r = run_dsmc(dir, (dir / "scene.toml").string() +
+                                         " --set alpha=0.8 --set shear_rate=1e-9 --set packing_fraction=0.3 "
+                                         "--set relaxation=5 --set collisions_per_particle=10 --set runs=4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto row = numbers(r.out);
+  ASSERT_EQ(row.size(), 1U);
+  ASSERT_EQ(row[0].size(), 8U);  // γ, P_xx, P_yy, P_xy with errors (2D)
+  const double phi = 0.3, chi = (1 - 7 * phi / 16) / ((1 - phi) * (1 - phi));
+  EXPECT_NEAR(row[0][2] + row[0][4], 1 + 1.8 * phi * chi, 4 * std::hypot(row[0][3], row[0][5]));
+  EXPECT_NEAR(row[0][6], 0, 4 * row[0][7]);
   fs::remove_all(dir);
 }
 

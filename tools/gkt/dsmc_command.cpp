@@ -103,7 +103,8 @@ double model_number(const toml::table& t, const TransportModel& model, const std
 }
 
 /// Reads the optional packing_fraction (range of the model's schema at this dimension) and
-/// pair_correlation (its registry) of the dense smooth gas into s (theory.md §21.7).
+/// pair_correlation (its registry) of the dense smooth gas into s (theory.md §21.7, §22.8);
+/// `model` is smooth-inelastic's schema (uniform-shear's `gkt table` is dilute: the keys are not its own).
 void read_dense_scene(const toml::table& t, const TransportModel& model, DsmcScene& s) {
   ParameterPoint fixed;
   fixed.numbers["dimension"] = Rational(s.dimension);
@@ -221,7 +222,7 @@ DsmcScene read_dsmc_scene(toml::table t) {
       keys.insert({"alpha", "beta0", "moment_of_inertia", "friction", "temperature_ratio"});
       break;
     case Family::shear:
-      keys.insert({"alpha", "shear_rate"});
+      keys.insert({"alpha", "shear_rate", "packing_fraction", "pair_correlation"});
       break;
     case Family::column:  // the model's keys (no `height`: every cell is a row) and the column's schedule in time
       keys.insert({"alpha", "particles_per_area", "floor", "floor_value", "lid_height", "cell_height", "time_step",
@@ -351,6 +352,9 @@ DsmcScene read_dsmc_scene(toml::table t) {
       // a/ν0(T_initial); absent: Grad's steady a* (theory.md (22.6)), so T starts near its steady value.
       s.shear.shear_rate = t.contains("shear_rate") ? required_real(t, "shear_rate", 0, 100, false)
                                                     : uniform_shear_flow_grad(s.dimension, s.shear.alpha).shear_rate;
+      read_dense_scene(t, *make_transport_model("smooth-inelastic"), s);
+      s.shear.packing_fraction = s.packing_fraction;
+      s.shear.pair_correlation = s.pair_correlation;
       if (s.output != Output::summary)
         throw error(std::string(s.output == Output::haff ? "output.haff" : "output.distribution") +
                     ": not available for model \"uniform-shear\" (the steady state has no Haff law; no speed "
