@@ -157,6 +157,16 @@ INSTANTIATE_TEST_SUITE_P(
                      "viscosity_window: must be a number in (0, 1000]"},
         DsmcBadInput{"viscosity_without_kicks", kSmooth, "--set viscosity_kick=0.2",
                      "viscosity_kicks: required with viscosity_window or viscosity_kick"},
+        DsmcBadInput{"packing_fraction", kSmooth, "--set packing_fraction=0.6",
+                     "packing_fraction: must be a number in [0, 0.5], got 0.6"},
+        DsmcBadInput{"pair_correlation", kSmooth, "--set packing_fraction=0.2 --set pair_correlation=nope",
+                     "pair_correlation: must be one of"},
+        DsmcBadInput{"dense_viscosity", kSmooth + "viscosity_kicks = 2\n", "--set packing_fraction=0.2",
+                     "viscosity_kicks: the strained-HCS viscosity is simulated for the dilute gas only"},
+        DsmcBadInput{"dense_shear", kShear, "--set packing_fraction=0.8",
+                     "packing_fraction: must be a number in [0, 0.7], got 0.8"},
+        DsmcBadInput{"dense_rough", "model = \"rough\"\npacking_fraction = 0.2\n", "",
+                     "packing_fraction: unknown key for gkt dsmc with model \"rough\""},
         DsmcBadInput{"viscosity_haff", kSmooth + "viscosity_kicks = 2\n[output]\nhaff = true\n", "",
                      "viscosity_kicks: the shear viscosity is a summary column"},
         DsmcBadInput{"viscosity_shear_model", kShear, "--set viscosity_kicks=2",
@@ -257,6 +267,49 @@ TEST(CliDsmc, AgreesWithGktTable) {
   fs::remove_all(dir);
 }
 
+// The Enskog HCS (theory.md §21.7): at φ = 0.3 (3D, Carnahan–Starling χ = 2.478) and φ = 0.5 (2D,
+// Henderson χ = 3.125) `gkt dsmc` and the dense `gkt table` agree on a2, a3 and ζ* = χ ζ*_dilute within 4
+// standard errors (8 runs of 5000 particles, 60 collisions per particle); the dilute ζ* is excluded
+// by 20σ. Then Haff's law at φ = 0.3 with the table's dense ζ* (not the runs' own): T(t)/T0 within 4
+// standard errors of (1 + ζ* t ν0(T0)/2)^{−2} at every batch.
+TEST(CliDsmc, EnskogHcsAgreesWithDenseGktTable) {
+  const fs::path dir = fresh_dir("enskog");
+  std::ofstream(dir / "dsmc.toml") << kSmooth;
+  std::ofstream(dir / "table.toml") << "model = \"smooth-inelastic\"\nhcs = \"nonlinear\"\nalpha = 0.8\n"
+                                       "tolerance = 1e-6\ncoefficients = [\"a2\", \"a3\", \"cooling_rate\"]\n";
+  auto table = [&](const std::string& args) {
+    const std::string cmd = std::string(GKT_CLI_PATH) + " table " + (dir / "table.toml").string() + args + " > " +
+                            (dir / "table.csv").string();
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    return numbers(slurp(dir / "table.csv"));
+  };
+  for (const auto& [d, phi] : {std::pair{3, "0.3"}, std::pair{2, "0.5"}}) {
+    const std::string dim = " --set dimension=" + std::to_string(d),
+                      dense = " --set packing_fraction=" + std::string(phi);
+    const DsmcCliRun sim = run_dsmc(dir, (dir / "dsmc.toml").string() + dim + dense +
+                                             " --set particles=5000 --set runs=8 --set collisions_per_particle=60");
+    ASSERT_EQ(sim.status, 0) << sim.err;
+    const auto dsmc = numbers(sim.out), enskog = table(dim + dense), dilute = table(dim);
+    ASSERT_EQ(dsmc.size(), 1U);
+    ASSERT_EQ(enskog.size(), 1U);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(dsmc[0][2 * k], enskog[0][k], 4 * dsmc[0][2 * k + 1]) << "d = " << d << " column " << k;
+    EXPECT_GT(std::abs(dsmc[0][4] - dilute[0][2]), 20 * dsmc[0][5]) << "d = " << d << ": the dilute cooling rate";
+  }
+  const double zeta = table(" --set dimension=3 --set packing_fraction=0.3")[0][2];
+  std::ofstream(dir / "dsmc.toml") << kSmooth << "packing_fraction = 0.3\n[output]\nhaff = true\n";
+  const DsmcCliRun haff = run_dsmc(dir, (dir / "dsmc.toml").string() + " --set particles=2000 --set runs=6");
+  ASSERT_EQ(haff.status, 0) << haff.err;
+  const auto rows = numbers(haff.out);
+  ASSERT_EQ(rows.size(), 5U);
+  for (const auto& r : rows) {
+    const double law = 1 / ((1 + 0.5 * zeta * r[1]) * (1 + 0.5 * zeta * r[1]));
+    EXPECT_NEAR(r[3], law, 4 * r[4] + 1e-3 * law) << "t = " << r[1];
+  }
+  EXPECT_LT(rows.back()[3], 0.5);  // the gas did cool: the law is tested, not its t = 0 value
+  fs::remove_all(dir);
+}
+
 // The shear viscosity of the strained HCS (theory.md §21.6) is an extra summary column, after the
 // usual three, only when viscosity_kicks is given; α = 1: the elastic η* = 1.016034 within 5σ
 // (4 runs × 40 kicks of ε = 0.5, N = 1000: σ ≈ 0.02).
@@ -345,6 +398,25 @@ TEST(CliDsmc, UniformShearAgreesWithTheDocumentedSteadyState) {
     }
     EXPECT_GT(rows[0][0] - doc.grad_gamma, 5 * rows[0][1]) << "d = " << doc.d << ": DSMC cannot tell γ from Grad's";
   }
+  fs::remove_all(dir);
+}
+
+// The Enskog uniform shear flow from the command line (theory.md §22.8): with a vanishing shear rate
+// the gas is in its cooling state, so the pressure (2/d) Σ_i P_ii/(2nT) = p/(nT) is the exact
+// 1 + 2^{d−2}(1+α)φχ of (15.5) (2D, α = 0.8, φ = 0.3, Henderson χ = 1.6122…) within 4σ, and P_xy = 0.
+TEST(CliDsmc, EnskogShearSceneHasTheDensePressure) {
+  const fs::path dir = fresh_dir("enskog_shear");
+  std::ofstream(dir / "scene.toml") << kShear;
+  const DsmcCliRun r = run_dsmc(dir, (dir / "scene.toml").string() +
+                                         " --set alpha=0.8 --set shear_rate=1e-9 --set packing_fraction=0.3 "
+                                         "--set relaxation=5 --set collisions_per_particle=10 --set runs=4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto row = numbers(r.out);
+  ASSERT_EQ(row.size(), 1U);
+  ASSERT_EQ(row[0].size(), 8U);  // γ, P_xx, P_yy, P_xy with errors (2D)
+  const double phi = 0.3, chi = (1 - 7 * phi / 16) / ((1 - phi) * (1 - phi));
+  EXPECT_NEAR(row[0][2] + row[0][4], 1 + 1.8 * phi * chi, 4 * std::hypot(row[0][3], row[0][5]));
+  EXPECT_NEAR(row[0][6], 0, 4 * row[0][7]);
   fs::remove_all(dir);
 }
 

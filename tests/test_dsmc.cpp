@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -94,6 +95,27 @@ TEST(Dsmc, DeterministicPerSeed) {
   }
 }
 
+// The Enskog HCS (docs/theory.md §21.7): every pair collides χ times as often, nothing else changes.
+// With the same seed the collisions are the same ones (⟨c⁴⟩, ⟨c⁶⟩ bit for bit), the clock runs 1/χ
+// as fast, so ζ* (in units of the dilute ν0) is χ times the dilute one and t ν0(T0) is 1/χ of it.
+TEST(Dsmc, EnskogGasCollidesChiTimesAsOften) {
+  SmoothRestitution r;
+  r.alpha = 0.7;
+  const double chi = 2.4783;
+  for (int d : {2, 3}) {
+    const auto dilute = run_smooth_hcs_dsmc(d, r, schedule(500, 1, 4, 1, 5));
+    const auto dense = run_smooth_hcs_dsmc(d, r, schedule(500, 1, 4, 1, 5), chi);
+    EXPECT_EQ(dilute.c4, dense.c4) << d;
+    EXPECT_EQ(dilute.c6, dense.c6) << d;
+    ASSERT_EQ(dense.cooling_rate.size(), 4U);
+    for (std::size_t b = 0; b < 4; ++b) {
+      EXPECT_NEAR(dense.cooling_rate[b], chi * dilute.cooling_rate[b], 1e-9 * dense.cooling_rate[b]) << d;
+      EXPECT_NEAR(dense.trace.time[b], dilute.trace.time[b] / chi, 1e-9 * dilute.trace.time[b]) << d;
+      EXPECT_EQ(dense.trace.temperature[b], dilute.trace.temperature[b]) << d;
+    }
+  }
+}
+
 TEST(Dsmc, BadInputNamesTheField) {
   SmoothRestitution r;
   r.alpha = 0.8;
@@ -113,6 +135,9 @@ TEST(Dsmc, BadInputNamesTheField) {
   SmoothRestitution bad;
   bad.alpha = 0;
   expect_error([&] { run_smooth_hcs_dsmc(3, bad, schedule(100, 1, 1, 1, 1)); }, "alpha");
+  expect_error([&] { run_smooth_hcs_dsmc(3, r, schedule(100, 1, 1, 1, 1), 0.9); }, "pair_correlation");
+  expect_error([&] { run_smooth_hcs_dsmc(3, r, schedule(100, 1, 1, 1, 1), std::numeric_limits<double>::infinity()); },
+               "pair_correlation");
   expect_error(
       [&] {
         run_mixture_hcs_dsmc(3, {{50, 1, 1}, {50, 2, 1}}, {0.9, 0.8, 0.7, 0.9}, schedule(0, 1, 1, 1, 1));

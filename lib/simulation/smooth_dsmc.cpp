@@ -1,5 +1,6 @@
 // DSMC of the homogeneous cooling state of smooth disks and spheres (homogeneous_dsmc.hpp):
-// v1' = v1 − ((1+α)/2)(σ̂·g)σ̂, v2' = v2 + ((1+α)/2)(σ̂·g)σ̂ (docs/theory.md (1.2)).
+// v1' = v1 − ((1+α)/2)(σ̂·g)σ̂, v2' = v2 + ((1+α)/2)(σ̂·g)σ̂ (docs/theory.md (1.2)); the dense
+// (Enskog) gas collides χ times as often (docs/theory.md §21.7).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -25,9 +26,13 @@ void check_restitution(const SmoothRestitution& r) {
 
 }  // namespace
 
-SmoothDsmcRun run_smooth_hcs_dsmc(int d, const SmoothRestitution& restitution, const DsmcSchedule& schedule) {
+SmoothDsmcRun run_smooth_hcs_dsmc(int d, const SmoothRestitution& restitution, const DsmcSchedule& schedule,
+                                  double pair_correlation) {
   detail::check_schedule(d, schedule);
   check_restitution(restitution);
+  if (!(pair_correlation >= 1 && std::isfinite(pair_correlation)))
+    throw std::invalid_argument("pair_correlation: the contact value chi must be a finite number >= 1, got " +
+                                std::to_string(pair_correlation));
   RandomStream rng(schedule.seed);
   const auto n = static_cast<std::size_t>(schedule.particles);
   const double count = static_cast<double>(n), reference = 0.5;  // rescaled to 2T/m = 1: c = v
@@ -49,8 +54,9 @@ SmoothDsmcRun run_smooth_hcs_dsmc(int d, const SmoothRestitution& restitution, c
     }
     energy = reference * d * count;
   };
+  // Enskog, homogeneous: the rate of every pair is χ times the Boltzmann one (theory.md (21.4)).
   const double frequency = detail::reference_frequency_factor(d),
-               pair_time = 2 / ((count - 1) * detail::collision_solid_angle(d));
+               pair_time = 2 / ((count - 1) * detail::collision_solid_angle(d) * pair_correlation);
   auto collide = [&](long target) {
     long accepted = 0, since_rescale = 0;
     while (accepted < target) {

@@ -19,6 +19,7 @@
 #include "gkt/simulation/shear_viscosity_dsmc.hpp"
 #include "gkt/simulation/uniform_shear_dsmc.hpp"
 #include "gkt/transport/closed_forms/uniform_shear_flow.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
 #include "scene.hpp"
 
 namespace gkt::cli {
@@ -48,6 +49,8 @@ struct DsmcScene {
   std::uint64_t seed = 0;
   Output output = Output::summary;
   SmoothRestitution restitution;
+  // smooth-inelastic: the Enskog gas at packing fraction φ, χ(φ) of the chosen closure (theory.md §21.7)
+  double packing_fraction = 0, pair_correlation = 1;
   std::vector<DsmcSpecies> species;
   std::vector<double> alpha;  // s × s
   RoughDsmcParameters rough;
@@ -97,6 +100,35 @@ double model_number(const toml::table& t, const TransportModel& model, const std
   const Rational v = required_number(t, key, it->allowed());
   it->check(v);
   return v.to_double();
+}
+
+/// Reads the optional packing_fraction (range of the model's schema at this dimension) and
+/// pair_correlation (its registry) of the dense smooth gas into s (theory.md §21.7, §22.8);
+/// `model` is smooth-inelastic's schema (uniform-shear's `gkt table` is dilute: the keys are not its own).
+void read_dense_scene(const toml::table& t, const TransportModel& model, DsmcScene& s) {
+  ParameterPoint fixed;
+  fixed.numbers["dimension"] = Rational(s.dimension);
+  const auto specs = model.scene_parameters(fixed);
+  auto spec = [&](const std::string& name) {
+    const auto it = std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& p) { return p.name == name; });
+    if (it == specs.end()) throw std::logic_error("dsmc: model \"" + model.name() + "\" has no parameter " + name);
+    return *it;
+  };
+  const ParameterSpec phi_spec = spec("packing_fraction"), closure_spec = spec("pair_correlation");
+  Rational phi = phi_spec.default_value;
+  if (t.contains("packing_fraction")) {
+    phi = required_number(t, "packing_fraction", phi_spec.allowed());
+    phi_spec.check(phi);
+  }
+  std::string closure = closure_spec.choices.front();
+  if (const auto* node = t.get("pair_correlation")) {
+    if (!node->is_string())
+      throw error("pair_correlation: must be a string, one of " + join(closure_spec.choices, "\""));
+    closure = node->as_string()->get();
+    closure_spec.check(closure);
+  }
+  s.packing_fraction = phi.to_double();
+  s.pair_correlation = pair_correlation(closure).contact_value(s.dimension, phi).to_double();
 }
 
 /// Reads the optional [output] table.
@@ -174,7 +206,8 @@ DsmcScene read_dsmc_scene(toml::table t) {
   if (s.family != Family::column) keys.insert({"collisions_per_particle", "relaxation", "batches"});
   switch (s.family) {
     case Family::smooth:
-      keys.insert({"alpha", "viscosity_kicks", "viscosity_window", "viscosity_kick"});
+      keys.insert(
+          {"alpha", "viscosity_kicks", "viscosity_window", "viscosity_kick", "packing_fraction", "pair_correlation"});
       break;
     case Family::viscoelastic:
       keys.insert({"delta_prime", "c1"});
@@ -189,7 +222,7 @@ DsmcScene read_dsmc_scene(toml::table t) {
       keys.insert({"alpha", "beta0", "moment_of_inertia", "friction", "temperature_ratio"});
       break;
     case Family::shear:
-      keys.insert({"alpha", "shear_rate"});
+      keys.insert({"alpha", "shear_rate", "packing_fraction", "pair_correlation"});
       break;
     case Family::column:  // the model's keys (no `height`: every cell is a row) and the column's schedule in time
       keys.insert({"alpha", "particles_per_area", "floor", "floor_value", "lid_height", "cell_height", "time_step",
@@ -236,6 +269,11 @@ DsmcScene read_dsmc_scene(toml::table t) {
   switch (s.family) {
     case Family::smooth:
       s.restitution.alpha = model_number(t, *model, "alpha");
+      read_dense_scene(t, *model, s);
+      if (t.contains("viscosity_kicks") && s.packing_fraction > 0)
+        throw error(
+            "viscosity_kicks: the strained-HCS viscosity is simulated for the dilute gas only (packing_fraction = "
+            "0): the Enskog collisional transfer of momentum is not simulated");
       if (t.contains("viscosity_kicks")) {
         s.viscosity_kicks = required_integer(t, "viscosity_kicks", 1, 1000000);
         if (s.output != Output::summary)
@@ -314,6 +352,9 @@ DsmcScene read_dsmc_scene(toml::table t) {
       // a/ν0(T_initial); absent: Grad's steady a* (theory.md (22.6)), so T starts near its steady value.
       s.shear.shear_rate = t.contains("shear_rate") ? required_real(t, "shear_rate", 0, 100, false)
                                                     : uniform_shear_flow_grad(s.dimension, s.shear.alpha).shear_rate;
+      read_dense_scene(t, *make_transport_model("smooth-inelastic"), s);
+      s.shear.packing_fraction = s.packing_fraction;
+      s.shear.pair_correlation = s.pair_correlation;
       if (s.output != Output::summary)
         throw error(std::string(s.output == Output::haff ? "output.haff" : "output.distribution") +
                     ": not available for model \"uniform-shear\" (the steady state has no Haff law; no speed "
@@ -354,7 +395,7 @@ RunResult simulate(const DsmcScene& s, long run) {
   switch (s.family) {
     case Family::smooth:
     case Family::viscoelastic: {
-      const auto out = run_smooth_hcs_dsmc(d, s.restitution, schedule);
+      const auto out = run_smooth_hcs_dsmc(d, s.restitution, schedule, s.pair_correlation);
       // a2 = ⟨c⁴⟩/⟨c⁴⟩_M − 1; a3 from ⟨c⁶⟩ = ⟨x³⟩_M + a2⟨x³S2⟩ + a3⟨x³S3⟩ (S_k ⟂ x³ for k > 3),
       // S2, S3 the Sonine polynomials of index m = d/2 − 1 (docs/theory.md §9).
       const double m = 0.5 * d - 1, x3 = maxwell_power(d, 3), x4 = maxwell_power(d, 4), x5 = maxwell_power(d, 5),

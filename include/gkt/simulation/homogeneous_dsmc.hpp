@@ -76,8 +76,12 @@ struct SmoothDsmcRun {
 };
 
 /// Runs the DSMC of smooth disks (d = 2) or spheres (d = 3); throws std::invalid_argument naming
-/// the field on a bad dimension, restitution or schedule.
-SmoothDsmcRun run_smooth_hcs_dsmc(int d, const SmoothRestitution& restitution, const DsmcSchedule& schedule);
+/// the field on a bad dimension, restitution, schedule or contact value. `pair_correlation` is the
+/// contact value χ(φ) ≥ 1 of the dense gas: in a homogeneous state the Enskog collision operator is
+/// χ times Boltzmann's (docs/theory.md (15.1), §21.7), so every collision takes 1/χ of the dilute
+/// time; the clock and ζ* stay in units of the dilute ν0 (ζ* = χ ζ*_dilute), a2 and a3 do not change.
+SmoothDsmcRun run_smooth_hcs_dsmc(int d, const SmoothRestitution& restitution, const DsmcSchedule& schedule,
+                                  double pair_correlation = 1);
 
 /// One species of a mixture: its number of particles, mass and diameter (units m̄, σ̄ of the
 /// mixture are fixed by the caller: the clock uses m̄ = Σ x_i m_i and σ̄ = Σ x_i σ_i).
