@@ -302,7 +302,7 @@ TEST(ModelFacade, TailSchemeThroughTheModel) {
   gkt::OrderRequest order;
   order.order = 3;
   const auto v = model->evaluate(p, {"thermal_conductivity", "a2", "pressure"}, order);
-  const auto seq = gkt::tail_galerkin_sequence(3, 0.5, 5);
+  const auto seq = gkt::tail_galerkin_sequence(3, 0.5, 5, gkt::TailTrialSpace::power_law);  // theory.md §10.6
   ASSERT_EQ(v.size(), 3U);
   EXPECT_NEAR(v[0].value.to_double(), seq[2].thermal_conductivity, 1e-12);
   EXPECT_NEAR(v[1].value.to_double(), seq[2].a2, 1e-12);
@@ -318,7 +318,7 @@ TEST(ModelFacade, TailSchemeThroughTheModel) {
   ParameterPoint two = p;
   two.numbers["dimension"] = Rational(2);
   const auto v2 = model->evaluate(two, {"shear_viscosity", "a2"}, order);
-  const auto seq2 = gkt::tail_galerkin_sequence(2, 0.5, 5);
+  const auto seq2 = gkt::tail_galerkin_sequence(2, 0.5, 5, gkt::TailTrialSpace::power_law);
   ASSERT_EQ(v2.size(), 2U);
   EXPECT_NEAR(v2[0].value.to_double(), seq2[2].shear_viscosity, 1e-12);
   EXPECT_NEAR(v2[1].value.to_double(), seq2[2].a2, 1e-12);
@@ -333,6 +333,36 @@ TEST(ModelFacade, TailSchemeThroughTheModel) {
   EXPECT_TRUE(contains(refused(p, {"a2"}, gkt::kTailGalerkinMaxOrder - 1), "order: must be an integer in [1, "));
   EXPECT_TRUE(contains(refusal([&] { (void)model->closed_form(p, "shear_viscosity", 1); }),
                        "scheme: \"tail\" is numerical and has no closed forms"));
+}
+
+// The tolerance rule of scheme = "tail" (theory.md §10.6): a tolerance stops no earlier than resolution 8,
+// and the value it returns lies within its (6.1) error of resolution 11. At 3D α = 0.9, tolerance 1e-4,
+// κ* would stop at resolution 6 (estimate 1.9e-5) and a2 at 4 without the rule.
+TEST(ModelFacade, TailSchemeToleranceIsHonestAgainstAHigherResolution) {
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  ParameterPoint p;
+  p.numbers["alpha"] = Rational(9, 10);
+  p.choices["scheme"] = "tail";
+  gkt::OrderRequest order;
+  order.tolerance = Rational(1, 10000);
+  const std::vector<std::string> names = {
+      "a2", "a3", "cooling_rate", "shear_viscosity", "thermal_conductivity", "density_heat_coefficient"};
+  const auto v = model->evaluate(p, names, order);
+  const auto seq = gkt::tail_galerkin_sequence(3, 0.9, 11, gkt::TailTrialSpace::power_law);
+  const auto& high = seq.back();
+  const double reference[] = {high.a2,
+                              high.a3,
+                              high.cooling_rate,
+                              high.shear_viscosity,
+                              high.thermal_conductivity,
+                              high.density_heat_coefficient};
+  ASSERT_EQ(v.size(), names.size());
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    EXPECT_TRUE(v[i].converged) << names[i];
+    EXPECT_GE(v[i].order, 8) << names[i];
+    EXPECT_LT(v[i].error.to_double(), 1e-4) << names[i];
+    EXPECT_LE(std::fabs(v[i].value.to_double() - reference[i]), v[i].error.to_double()) << names[i];
+  }
 }
 
 // reference_state = "hcs" (theory.md §17.11): a mixture of identical species gives the smooth-inelastic

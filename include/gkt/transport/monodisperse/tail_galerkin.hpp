@@ -32,10 +32,10 @@ struct TailGalerkinValues {
 
 /// The trial functions of the tail scheme (docs/theory.md §10.6).
 enum class TailTrialSpace {
-  even,       ///< w(c) × polynomials in c² (10.11): `scheme = "tail"` and the shipped tables
+  even,       ///< w(c) × polynomials in c² (10.11): the first tail space (library only; converges slowly)
   power_law,  ///< α < 1: w(c)(1 + c²)^{γ/2} × polynomials in √(4 + c²) − 2, γ the power of the HCS
               ///< tail (10.15), γ − 2 for the vector modes; α = 1: as `even`. Much closer at a given N
-              ///< for α ≤ 0.5; not yet behind `scheme = "tail"`.
+              ///< for α ≤ 0.5; `scheme = "tail"` and the shipped tail table.
 };
 
 /// Returns the tail-scheme values at resolutions N = 1 … max_order for dimension d = 2 or 3 and
