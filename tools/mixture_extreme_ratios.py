@@ -11,7 +11,10 @@ each coefficient:
 
 Each row also lists T2/T1 of the HCS and D_12* at orders 1..N_MAX.
 
-Usage: tools/mixture_extreme_ratios.py [path/to/gkt] > map.txt   (≈ 3 min; run with nice)
+Usage: tools/mixture_extreme_ratios.py [path/to/gkt] > map.txt   (≈ 5 min; run with nice)
+       tools/mixture_extreme_ratios.py --summary map.txt   (the grids of docs/theory.md §17.12: per
+       (φ, α) and state the worst class of the mass-flux group D_ij, D^p, D^T / the heat group λ, D'' /
+       η / the Enskog scalars η_b, ζ_U)
 """
 import csv
 import io
@@ -96,5 +99,32 @@ def main():
                         f" | {table['temperature_ratio_2'][0] / table['temperature_ratio_1'][0]:7.3g} | " + " ".join(f"{v:.4g}" for v in worst), flush=True)
 
 
+GROUPS = [range(0, 6), range(6, 9), range(9, 10), range(10, 12)]
+
+
+def summary(path):
+    """Prints, per (φ, α), a size × mass grid of the worst class (O > S > C) per coefficient group."""
+    rank = {"O": 3, "S": 2, "C": 1, "0": 0, "-": 0}
+    grids = {}
+    with open(path, encoding="utf-8") as lines:
+        for line in lines:
+            if line.startswith("#"):
+                continue
+            head, classes = line.split("|")[:2]
+            mass, size, packing, alpha = head.split()
+            cells = classes.split()
+            worst = "".join(max((cells[k] for k in g), key=lambda c: rank[c]) for g in GROUPS)
+            grids.setdefault((packing, alpha), {})[(size, mass)] = worst.replace("0", "-")
+    for (packing, alpha), grid in grids.items():
+        print(f"phi = {packing}, alpha = {alpha}   (mass flux / heat / eta / Enskog scalars)")
+        print("s2/s1 \\ m2/m1 " + " ".join(f"{m:>6}" for m in MASS_RATIOS))
+        for size in SIZE_RATIOS:
+            print(f"{size:>14} " + " ".join(f"{grid[(size, m)]:>6}" for m in MASS_RATIOS))
+        print()
+
+
 if __name__ == "__main__":
-    main()
+    if len(sys.argv) == 3 and sys.argv[1] == "--summary":
+        summary(sys.argv[2])
+    else:
+        main()
