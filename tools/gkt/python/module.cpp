@@ -16,6 +16,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -282,6 +283,50 @@ py::dict scatter(const std::vector<Values>& cells,
 
 std::vector<py::ssize_t> shape_of(const Array& a) { return {a.shape(), a.shape() + a.ndim()}; }
 
+/// Returns the columns of a per-cell mixture table with `species` species (BinaryTransport or
+/// TernaryTransport cells), each an array of `shape`, under the CLI's canonical names, and a `put` that
+/// adds further columns the same way.
+template <class Cell>
+class MixtureColumns {
+ public:
+  MixtureColumns(const std::vector<Cell>& cells, std::vector<py::ssize_t> shape, std::size_t species)
+      : cells_(cells), shape_(std::move(shape)) {
+    put("cooling_rate", [](const Cell& v) { return v.cooling_rate; });
+    for (std::size_t i = 0; i < species; ++i)
+      put("temperature_ratio_" + std::to_string(i + 1), [i](const Cell& v) { return v.temperature_ratio[i]; });
+    put("shear_viscosity", [](const Cell& v) { return v.shear_viscosity; });
+    put("thermal_conductivity", [](const Cell& v) { return v.thermal_conductivity; });
+    for (std::size_t i = 0; i < species; ++i)
+      for (std::size_t j = 0; j < species; ++j)
+        put("mutual_diffusion_" + std::to_string(i + 1) + "_" + std::to_string(j + 1),
+            [k = species * i + j](const Cell& v) { return v.mutual_diffusion[k]; });
+    for (std::size_t i = 0; i < species; ++i) {
+      const std::string at = "_" + std::to_string(i + 1);
+      put("thermal_diffusion" + at, [i](const Cell& v) { return v.thermal_diffusion[i]; });
+      put("pressure_diffusion" + at, [i](const Cell& v) { return v.pressure_diffusion[i]; });
+      put("dufour" + at, [i](const Cell& v) { return v.dufour[i]; });
+    }
+    put("pressure", [](const Cell& v) { return v.pressure; });
+  }
+
+  /// Adds the column `name` with get(cell) at every cell.
+  template <class Get>
+  void put(const std::string& name, Get get) {
+    py::array_t<double> column(shape_);
+    double* data = column.mutable_data();
+    for (std::size_t i = 0; i < cells_.size(); ++i) data[i] = get(cells_[i]);
+    out_[py::str(name)] = column;
+  }
+
+  /// Returns the columns.
+  [[nodiscard]] py::dict dict() const { return out_; }
+
+ private:
+  const std::vector<Cell>& cells_;
+  std::vector<py::ssize_t> shape_;
+  py::dict out_;
+};
+
 py::dict first_sonine(const py::object& alpha, int dimension) {
   const auto in = broadcast({alpha});
   const std::span<const double> a(in[0].data(), static_cast<std::size_t>(in[0].size()));
@@ -405,33 +450,10 @@ class BinaryTable {
       gkt::evaluate(*table_, {in[0].data(), n}, {in[1].data(), n}, {in[2].data(), n}, cells);
     }
     using T = gkt::BinaryTransport;
-    py::dict out;
-    const auto shape = shape_of(in[0]);
-    const auto put = [&](const std::string& name, auto get) {
-      py::array_t<double> column(shape);
-      double* data = column.mutable_data();
-      for (std::size_t i = 0; i < n; ++i) data[i] = get(cells[i]);
-      out[py::str(name)] = column;
-    };
-    put("cooling_rate", [](const T& v) { return v.cooling_rate; });
-    for (std::size_t i = 0; i < 2; ++i)
-      put("temperature_ratio_" + std::to_string(i + 1), [i](const T& v) { return v.temperature_ratio[i]; });
-    put("shear_viscosity", [](const T& v) { return v.shear_viscosity; });
-    put("thermal_conductivity", [](const T& v) { return v.thermal_conductivity; });
-    for (std::size_t i = 0; i < 2; ++i)
-      for (std::size_t j = 0; j < 2; ++j)
-        put("mutual_diffusion_" + std::to_string(i + 1) + "_" + std::to_string(j + 1),
-            [k = 2 * i + j](const T& v) { return v.mutual_diffusion[k]; });
-    for (std::size_t i = 0; i < 2; ++i) {
-      const std::string at = "_" + std::to_string(i + 1);
-      put("thermal_diffusion" + at, [i](const T& v) { return v.thermal_diffusion[i]; });
-      put("pressure_diffusion" + at, [i](const T& v) { return v.pressure_diffusion[i]; });
-      put("dufour" + at, [i](const T& v) { return v.dufour[i]; });
-    }
-    put("pressure", [](const T& v) { return v.pressure; });
-    put("bulk_viscosity", [](const T& v) { return v.bulk_viscosity; });
-    put("cooling_rate_first_order", [](const T& v) { return v.cooling_rate_first_order; });
-    return out;
+    MixtureColumns<T> columns(cells, shape_of(in[0]), 2);
+    columns.put("bulk_viscosity", [](const T& v) { return v.bulk_viscosity; });
+    columns.put("cooling_rate_first_order", [](const T& v) { return v.cooling_rate_first_order; });
+    return columns.dict();
   }
 
  private:
@@ -483,32 +505,7 @@ class TernaryTable {
       py::gil_scoped_release release;
       gkt::evaluate(*table_, {in[0].data(), n}, {in[1].data(), n}, {in[2].data(), n}, {in[3].data(), n}, cells);
     }
-    using T = gkt::TernaryTransport;
-    py::dict out;
-    const auto shape = shape_of(in[0]);
-    const auto put = [&](const std::string& name, auto get) {
-      py::array_t<double> column(shape);
-      double* data = column.mutable_data();
-      for (std::size_t i = 0; i < n; ++i) data[i] = get(cells[i]);
-      out[py::str(name)] = column;
-    };
-    put("cooling_rate", [](const T& v) { return v.cooling_rate; });
-    for (std::size_t i = 0; i < 3; ++i)
-      put("temperature_ratio_" + std::to_string(i + 1), [i](const T& v) { return v.temperature_ratio[i]; });
-    put("shear_viscosity", [](const T& v) { return v.shear_viscosity; });
-    put("thermal_conductivity", [](const T& v) { return v.thermal_conductivity; });
-    for (std::size_t i = 0; i < 3; ++i)
-      for (std::size_t j = 0; j < 3; ++j)
-        put("mutual_diffusion_" + std::to_string(i + 1) + "_" + std::to_string(j + 1),
-            [k = 3 * i + j](const T& v) { return v.mutual_diffusion[k]; });
-    for (std::size_t i = 0; i < 3; ++i) {
-      const std::string at = "_" + std::to_string(i + 1);
-      put("thermal_diffusion" + at, [i](const T& v) { return v.thermal_diffusion[i]; });
-      put("pressure_diffusion" + at, [i](const T& v) { return v.pressure_diffusion[i]; });
-      put("dufour" + at, [i](const T& v) { return v.dufour[i]; });
-    }
-    put("pressure", [](const T& v) { return v.pressure; });
-    return out;
+    return MixtureColumns<gkt::TernaryTransport>(cells, shape_of(in[0]), 3).dict();
   }
 
  private:
