@@ -820,6 +820,30 @@ TEST(CliRoughEvolve, RelaxesToTheTableAndRefusesBadInput) {
 // explicit zeros print the same bytes as the default (the golden rough_evolve.csv), nonzero values
 // still end on `gkt table`'s HCS, unrealizable ones and cumulants without the linear scheme are refused
 // with one line naming the field (exit 2).
+// hcs = "linear-oriented" (theory.md §19.13): the linear scheme with the orientation term b00 P; the trajectory ends
+// on the oriented first-Sonine HCS (θ = 0.852432, C = 0.32927 at (0.9, 0.5), theory.md §19.14), 0.35 % below the
+// isotropic θ; disks refused with one line.
+TEST(CliRoughEvolve, OrientedScheme) {
+  const CliRun run = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set 'hcs=\"linear-oriented\"'");
+  const CliRun iso = run_gkt("evolve " + scene_path("rough_evolve.toml"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  ASSERT_EQ(iso.status, 0) << iso.err;
+  const auto o = parse_csv(run.out), i = parse_csv(iso.out);
+  ASSERT_EQ(o[0].size(), 11u);
+  EXPECT_EQ(o[0][9], "b00");
+  EXPECT_EQ(o[0][10], "orientation_correlation");
+  EXPECT_NEAR(std::stod(o.back()[4]), 0.852432, 2e-6);
+  EXPECT_NEAR(std::stod(o.back()[10]), 0.32927, 2e-5);
+  EXPECT_NEAR(std::stod(o.back()[10]), 1.0 / 3 + std::stod(o.back()[9]) / 5, 1e-12);
+  EXPECT_NEAR(std::stod(o.back()[4]) / std::stod(i.back()[4]) - 1, -0.0035, 3e-4);
+  const CliRun disks =
+      run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set dimension=2 --set 'hcs=\"linear-oriented\"'");
+  EXPECT_EQ(disks.status, 2);
+  EXPECT_NE(disks.err.find("hcs: \"linear-oriented\" needs dimension = 3"), std::string::npos) << disks.err;
+  EXPECT_EQ(std::count(disks.err.begin(), disks.err.end(), '\n'), 1) << disks.err;
+  EXPECT_TRUE(disks.out.empty());
+}
+
 TEST(CliRoughEvolve, InitialCumulants) {
   const std::string quick = " --set t_end=100000 --set points=3";
   const CliRun plain = run_gkt("evolve " + scene_path("rough_evolve.toml"));

@@ -189,9 +189,15 @@ class RoughModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     auto specs = parameters();
-    // The trajectory integrates the first-Sonine balances (theory.md §19.13): no nonlinear scheme there.
+    // The trajectory integrates the first-Sonine balances (theory.md §19.13): no nonlinear scheme there; for
+    // spheres the linear scheme may carry the orientation term b00 P ("linear-oriented", §19.14 at order 1).
     for (auto& spec : specs)
-      if (spec.name == "hcs") spec.choices = {"linear", "maxwellian", "linear-or-maxwellian"};
+      if (spec.name == "hcs") {
+        spec.choices = {"linear", "maxwellian", "linear-or-maxwellian", "linear-oriented"};
+        spec.description +=
+            "; gkt evolve: linear-oriented = the linear scheme with the orientation term b00 "
+            "((c.w)^2 - c^2 w^2/3), spheres only, columns b00 and orientation_correlation";
+      }
     specs = rough_evolution_parameters(specs, {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
     for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
     return specs;
