@@ -625,7 +625,7 @@ TEST(CliRough, SmoothLimitAndBadInput) {
            {"alpha=0", "alpha: must be a number in (0, 1], got 0"},
            {"dimension=4", "dimension: must be 2 or 3, got 4"},
            // Order N > 1 exists for the HCS (§19.14) and Navier-Stokes columns (§19.16); the scene asks for C too.
-           {"order=2 --set 'hcs=\"nonlinear\"'", "hcs: orientation_correlation at order > 1 or with a tolerance"},
+           {"order=2 --set 'hcs=\"maxwellian\"'", "hcs: \"maxwellian\" is a first approximation"},
            {"order=9", "order: must be an integer in [1, 8], got 9"},
            {"dimension=2", "coefficients: orientation_correlation needs dimension = 3"},
            {"'hcs=\"quadratic\"'", "hcs: must be one of"}}) {
@@ -688,8 +688,9 @@ TEST(CliRough, LinearSchemeNoRootRegion) {
 
 // Higher Sonine orders of the rough HCS (theory.md §19.14): `order` (or `tolerance`) and hcs =
 // "nonlinear" reach θ, ζ* and the cumulants with an error from the next order; order 1 "nonlinear"
-// differs from the first-Sonine "linear" only by the products of cumulants; C refuses order > 1 and
-// tolerance, the HCS columns an order above 3, with one line.
+// differs from the first-Sonine "linear" only by the products of cumulants; C beyond order 1 comes from the
+// oriented HCS in either scheme (refused for the first approximations "maxwellian", "linear-or-maxwellian"), the
+// HCS columns refuse an order above 3, with one line.
 TEST(CliRough, SonineOrdersOfTheCoolingState) {
   const std::string hcs =
       " --set 'alpha=[0.9]' --set 'coefficients=[\"rotational_temperature_ratio\", \"a20\", \"a03\"]'";
@@ -711,8 +712,8 @@ TEST(CliRough, SonineOrdersOfTheCoolingState) {
   EXPECT_NEAR(std::stod(n[1][1]), std::stod(f[1][1]), 2e-4);
   EXPECT_NE(n[1][1], f[1][1]);
   for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
-           {"tolerance=1e-3 --set 'hcs=\"nonlinear\"'",
-            "hcs: orientation_correlation at order > 1 or with a tolerance"},
+           {"tolerance=1e-3 --set 'hcs=\"linear-or-maxwellian\"'",
+            "hcs: \"linear-or-maxwellian\" is a first approximation"},
            {"order=4", "order: rotational_temperature_ratio of model rough takes orders 1 to 3, got 4"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_hcs.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
@@ -734,6 +735,16 @@ TEST(CliRough, SonineOrdersOfTheCoolingState) {
   EXPECT_NEAR(std::stod(r2[1][2]), -0.01948, 2e-5);
   EXPECT_NE(r2[1][3], "0");
   EXPECT_LT(std::stod(r2[1][4]), 2e-3);  // error |C_3 − C_2|
+  // The nonlinear scheme beyond order 1 is oriented too (theory.md §19.14): C and b00 within the products of the
+  // cumulants of the linear values (0.32980, −0.01936 at order 2).
+  const CliRun n2 =
+      run_gkt("table " + scene_path("rough_hcs.toml") + orient + " --set order=2 --set 'hcs=\"nonlinear\"'");
+  ASSERT_EQ(n2.status, 0) << n2.err;
+  const auto rn = parse_csv(n2.out);
+  EXPECT_NEAR(std::stod(rn[1][1]), std::stod(r2[1][1]), 1e-4);
+  EXPECT_NE(rn[1][1], r2[1][1]);
+  EXPECT_NEAR(std::stod(rn[1][2]), std::stod(r2[1][2]), 5e-4);
+  EXPECT_LT(std::stod(rn[1][4]), 2e-3);  // error |C_3 − C_2|
   const CliRun disks = run_gkt("table " + scene_path("rough_hcs.toml") + orient + " --set dimension=2 --set order=2");
   EXPECT_EQ(disks.status, 2);
   EXPECT_NE(disks.err.find("coefficients: orientation_correlation needs dimension = 3"), std::string::npos)
@@ -809,6 +820,30 @@ TEST(CliRoughEvolve, RelaxesToTheTableAndRefusesBadInput) {
 // explicit zeros print the same bytes as the default (the golden rough_evolve.csv), nonzero values
 // still end on `gkt table`'s HCS, unrealizable ones and cumulants without the linear scheme are refused
 // with one line naming the field (exit 2).
+// hcs = "linear-oriented" (theory.md §19.13): the linear scheme with the orientation term b00 P; the trajectory ends
+// on the oriented first-Sonine HCS (θ = 0.852432, C = 0.32927 at (0.9, 0.5), theory.md §19.14), 0.35 % below the
+// isotropic θ; disks refused with one line.
+TEST(CliRoughEvolve, OrientedScheme) {
+  const CliRun run = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set 'hcs=\"linear-oriented\"'");
+  const CliRun iso = run_gkt("evolve " + scene_path("rough_evolve.toml"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  ASSERT_EQ(iso.status, 0) << iso.err;
+  const auto o = parse_csv(run.out), i = parse_csv(iso.out);
+  ASSERT_EQ(o[0].size(), 11u);
+  EXPECT_EQ(o[0][9], "b00");
+  EXPECT_EQ(o[0][10], "orientation_correlation");
+  EXPECT_NEAR(std::stod(o.back()[4]), 0.852432, 2e-6);
+  EXPECT_NEAR(std::stod(o.back()[10]), 0.32927, 2e-5);
+  EXPECT_NEAR(std::stod(o.back()[10]), 1.0 / 3 + std::stod(o.back()[9]) / 5, 1e-12);
+  EXPECT_NEAR(std::stod(o.back()[4]) / std::stod(i.back()[4]) - 1, -0.0035, 3e-4);
+  const CliRun disks =
+      run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set dimension=2 --set 'hcs=\"linear-oriented\"'");
+  EXPECT_EQ(disks.status, 2);
+  EXPECT_NE(disks.err.find("hcs: \"linear-oriented\" needs dimension = 3"), std::string::npos) << disks.err;
+  EXPECT_EQ(std::count(disks.err.begin(), disks.err.end(), '\n'), 1) << disks.err;
+  EXPECT_TRUE(disks.out.empty());
+}
+
 TEST(CliRoughEvolve, InitialCumulants) {
   const std::string quick = " --set t_end=100000 --set points=3";
   const CliRun plain = run_gkt("evolve " + scene_path("rough_evolve.toml"));

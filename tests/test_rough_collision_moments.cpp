@@ -365,8 +365,8 @@ TEST(RoughCollisionMoments, SixFormsContainTheLowerTables) {
                   sums.moment({1, b, c, 0, 1, 0, 0, 0}) - six.moment({2, b, c, 0, 0, 0}) +
                       sums.moment({0, b, c, 0, 1, 1, 0, 0}) - sums.moment({1, b, c, 0, 0, 1, 0, 0}));
       }
-    EXPECT_THROW(RoughCollisionMoments<Rational>(params, std::vector<RoughForm>(9, f[0]), std::vector<int>(9, 1)),
-                 std::invalid_argument);
+    EXPECT_THROW(RoughCollisionMoments<Rational>(params, std::vector<RoughForm>(10, f[0]), std::vector<int>(10, 1)),
+                 std::invalid_argument);  // nine forms at most (kMaxRoughForms)
   }
 }
 

@@ -5,7 +5,7 @@
 // Qc = Σ_i r_i (E p_i) Π_{j≠i} p_j, Π·Ef = f·Qc gives
 //   |m| f_m = Σ_{e≠0} (Qc_e − |m−e| Π_e) f_{m−e},   f_0 = 1.
 // Every product is truncated to the requested box (terms outside it never feed back).
-// The rough-sphere integral (docs/theory.md §19) has four factors in up to eight variables
+// The rough-sphere integral (docs/theory.md §19) has four factors in up to nine variables
 // (N = kRoughVariables); the smooth engine's three
 // (generating_series.hpp) are the special case a^{1/2} n1^{−(d−1)/2} n2^{−1}.
 #pragma once

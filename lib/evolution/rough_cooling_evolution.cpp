@@ -1,5 +1,6 @@
 #include "gkt/evolution/rough_cooling_evolution.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -26,10 +27,12 @@ using detail::MatrixDeleter;
 using detail::SolverDeleter;
 using detail::VectorDeleter;
 
-/// State y = (ln T_t, ln T_r, C, a20, a02, a11) (the cumulants only in the linear scheme).
+/// State y = (ln T_t, ln T_r, C, a20, a02, a11, b00) (the cumulants only in the linear scheme, b00 only with
+/// `oriented`).
 struct Problem {
-  const RoughCoolingRates* rates = nullptr;          // the engine's balances, or
-  const RoughMaxwellianRates* maxwellian = nullptr;  // Maxwellian rates as a function of θ
+  const RoughCoolingRates* rates = nullptr;             // the engine's balances, or
+  const RoughMaxwellianRates* maxwellian = nullptr;     // Maxwellian rates as a function of θ
+  const RoughOrientedCoolingRates* oriented = nullptr;  // with `rates` (its collision frequency): the b00 balances
   bool linear = false;
   std::array<double, 3> base{};  // Maxwellian ⟨x²⟩, ⟨y²⟩, ⟨xy⟩
   RoughCumulants initial{};      // a20, a02, a11 at τ = 0 (linear scheme)
@@ -58,6 +61,21 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
     return 0;
   }
   const auto a = p.cumulants(yv);
+  if (p.oriented != nullptr) {
+    // The same with ψ = P (spin degree 1, ⟨P⟩ = b00⟨P²⟩_M): ⟨P²⟩_M db00/dτ = √T_t [G_P + (z_r − z_t) ⟨P⟩].
+    const std::array<double, 4> a4{a[0], a[1], a[2], yv[6]};
+    const RoughOrientedBalances b = p.oriented->at(std::exp(log_theta) / p.oriented->kappa(), a4);
+    const auto base = p.oriented->base_moments();
+    dv[0] = -sq * b.translational_rate;
+    dv[1] = -sq * b.rotational_rate;
+    dv[2] = sq * p.rates->collision_frequency_factor(a[0]);  // P averages to 0 over ŵ: no change
+    constexpr std::array<double, 3> spin_degree{0, 2, 1};
+    const double spin_excess = b.rotational_rate - b.translational_rate;
+    for (std::size_t q = 0; q < 3; ++q)
+      dv[3 + q] = sq * (b.residual[q] + spin_degree[q] * spin_excess * base[q] * (1 + a[q])) / base[q];
+    dv[6] = sq * (b.residual[3] + spin_excess * base[3] * a4[3]) / base[3];
+    return 0;
+  }
   const RoughBalances b = p.rates->at(std::exp(log_theta) / p.rates->kappa(), a);
   dv[0] = -sq * b.translational_rate;
   dv[1] = -sq * b.rotational_rate;
@@ -80,7 +98,7 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   for (std::size_t i = 0; i < times.size(); ++i)
     if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
       throw std::invalid_argument("times: must be positive and increasing");
-  const int n = problem.linear ? 6 : 3;
+  const int n = problem.oriented != nullptr ? 7 : problem.linear ? 6 : 3;
 
   SUNContext raw_context = nullptr;
   check(SUNContext_Create(nullptr, &raw_context), "SUNContext_Create");
@@ -90,7 +108,8 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   yv[0] = std::log(translational0);
   yv[1] = std::log(rotational0);
   yv[2] = 0.0;
-  for (int k = 3; k < n; ++k) yv[k] = problem.initial[static_cast<std::size_t>(k - 3)];
+  for (int k = 3; k < std::min(n, 6); ++k) yv[k] = problem.initial[static_cast<std::size_t>(k - 3)];
+  if (n == 7) yv[6] = 0.0;  // b00(0) = 0: Maxwellian directions
 
   const std::unique_ptr<void, CvodeDeleter> cvode(CVodeCreate(CV_BDF, raw_context));
   if (!cvode) throw std::runtime_error("CVODE: CVodeCreate failed");
@@ -120,10 +139,18 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
     s.a02 = a[1];
     s.a11 = a[2];
     const double theta = std::exp(yv[1] - yv[0]);
-    s.cooling_rate =
-        (d + 2) / 4 *
-        (problem.maxwellian != nullptr ? (*problem.maxwellian)(theta)[0]
-                                       : problem.rates->at(theta / problem.rates->kappa(), a).translational_rate);
+    if (problem.oriented != nullptr) {
+      s.b00 = yv[6];
+      s.orientation_correlation = 1.0 / 3 + problem.oriented->correlation_weight() * s.b00;
+      s.cooling_rate =
+          (d + 2) / 4 *
+          problem.oriented->at(theta / problem.oriented->kappa(), {a[0], a[1], a[2], s.b00}).translational_rate;
+    } else {
+      s.cooling_rate =
+          (d + 2) / 4 *
+          (problem.maxwellian != nullptr ? (*problem.maxwellian)(theta)[0]
+                                         : problem.rates->at(theta / problem.rates->kappa(), a).translational_rate);
+    }
     result.samples.push_back(s);
   }
   result.counters = detail::read_counters(cvode.get());
@@ -168,6 +195,24 @@ RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool l
   problem.initial = initial_cumulants;
   problem.base = rates.maxwellian_fourth_moments();
   return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol);
+}
+
+RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rates,
+                                                   const RoughOrientedCoolingRates& oriented, double translational0,
+                                                   double rotational0, const std::vector<double>& times, double rtol,
+                                                   double atol, const RoughCumulants& initial_cumulants) {
+  if (rates.dimension() != 3)
+    throw std::invalid_argument("dimension: the orientation term needs spheres (dimension = 3)");
+  if (rates.kappa() != oriented.kappa())
+    throw std::invalid_argument("moment_of_inertia: the two rate tables are for different kappa");
+  check_rough_initial_cumulants(3, initial_cumulants);
+  Problem problem;
+  problem.rates = &rates;
+  problem.oriented = &oriented;
+  problem.linear = true;
+  problem.initial = initial_cumulants;
+  problem.base = rates.maxwellian_fourth_moments();
+  return integrate(problem, 3, translational0, rotational0, times, rtol, atol);
 }
 
 RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,

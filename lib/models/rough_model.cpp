@@ -3,8 +3,9 @@
 // homogeneous cooling state in the Maxwellian or the linear first-Sonine approximation
 // (rough_homogeneous_cooling_state.hpp; docs/theory.md §19): θ = T_r/T_t, ζ*, a20, a02, a11, and at
 // Sonine orders up to 3 in the linear or nonlinear scheme with the cumulants a_pq
-// (rough_sonine_cooling_state.hpp, §19.14; in 3D the linear scheme there carries the velocity–spin orientation
-// terms b_pq, and the orientation correlation C at order N > 1 comes from that solution); and the
+// (rough_sonine_cooling_state.hpp, §19.14; in 3D both schemes there carry the velocity–spin orientation
+// terms b_pq — the nonlinear one beyond order 1 or with a tolerance — and the orientation correlation C at
+// order N > 1 comes from that solution); and the
 // shear viscosity at first Sonine (rough_shear_viscosity.hpp, §19.7) and the orientational
 // correlation C (rough_orientation_correlation.hpp, §19.8); κ*, μ* (rough_thermal_conductivity.hpp) and
 // the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3; at order
@@ -147,7 +148,7 @@ class RoughModel final : public TransportModel {
            "nonlinear); shear and bulk viscosity, thermal conductivity, density heat coefficient, first-order "
            "cooling rate at first Sonine or Sonine order up to 8 (translation x spin Sonine products, Maxwellian "
            "reference); translation-rotation "
-           "correlation (3D; first approximation at order 1, from the oriented linear Sonine HCS at orders 2-3); "
+           "correlation (3D; first approximation at order 1, from the oriented Sonine HCS at orders 2-3); "
            "linear stability of the homogeneous cooling state";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
@@ -188,9 +189,15 @@ class RoughModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     auto specs = parameters();
-    // The trajectory integrates the first-Sonine balances (theory.md §19.13): no nonlinear scheme there.
+    // The trajectory integrates the first-Sonine balances (theory.md §19.13): no nonlinear scheme there; for
+    // spheres the linear scheme may carry the orientation term b00 P ("linear-oriented", §19.14 at order 1).
     for (auto& spec : specs)
-      if (spec.name == "hcs") spec.choices = {"linear", "maxwellian", "linear-or-maxwellian"};
+      if (spec.name == "hcs") {
+        spec.choices = {"linear", "maxwellian", "linear-or-maxwellian", "linear-oriented"};
+        spec.description +=
+            "; gkt evolve: linear-oriented = the linear scheme with the orientation term b00 "
+            "((c.w)^2 - c^2 w^2/3), spheres only, columns b00 and orientation_correlation";
+      }
     specs = rough_evolution_parameters(specs, {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
     for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
     return specs;
@@ -209,7 +216,7 @@ class RoughModel final : public TransportModel {
     // chosen by a tolerance scan (row_tolerance set) carries its estimate like any other order. The HCS
     // columns take the Sonine HCS (theory.md §19.14) beyond it or with the nonlinear scheme, the five
     // Navier–Stokes columns the Sonine solver of §19.16; C at order 1 is §19.8's first approximation, beyond it
-    // the oriented linear Sonine HCS's (§19.14); the stability values are first approximations.
+    // the oriented Sonine HCS's (§19.14, linear or nonlinear); the stability values are first approximations.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     const bool hcs_sonine = scheme == "nonlinear" || !first;
     for (const auto& name : coefficients) {
@@ -217,11 +224,11 @@ class RoughModel final : public TransportModel {
         if (d != 3)
           throw std::invalid_argument("coefficients: " + name +
                                       " needs dimension = 3 (disks spin normal to the plane)");
-        // Beyond the first approximation C and b_pq are the oriented linear Sonine HCS's (theory.md §19.14).
-        if (!first && scheme != "linear")
-          throw std::invalid_argument("hcs: " + name +
-                                      " at order > 1 or with a tolerance comes from the oriented Sonine HCS, "
-                                      "solved in the linear scheme only: use hcs = \"linear\" or order = 1");
+        // Beyond the first approximation C and b_pq are the oriented Sonine HCS's (theory.md §19.14), linear or
+        // nonlinear.
+        if (!first && scheme != "linear" && scheme != "nonlinear")
+          throw std::invalid_argument(
+              "hcs: \"" + scheme + "\" is a first approximation: use order = 1, or hcs = \"linear\" or \"nonlinear\"");
         if (!first && !order.tolerance && order.order > kMaxRoughHcsOrder)
           throw std::invalid_argument("order: " + name + " of model rough takes orders 1 to " +
                                       std::to_string(kMaxRoughHcsOrder) + ", got " + std::to_string(order.order));
@@ -263,12 +270,14 @@ class RoughModel final : public TransportModel {
         }
       }
     }
-    // 3D linear: the oriented ansatz (a_pq and b_pq, theory.md §19.14); the nonlinear scheme keeps the isotropic one
-    // (its products of b need nine engine forms); for disks the two are the same (c·ŵ ≡ 0).
+    // 3D: the oriented ansatz (a_pq and b_pq, theory.md §19.14), except the nonlinear scheme at order 1 without a
+    // tolerance, which keeps the isotropic ansatz it had before the oriented one existed; for disks the two are the
+    // same (c·ŵ ≡ 0).
     const bool linear_sonine = scheme != "nonlinear";
+    const bool oriented = d == 3 && (linear_sonine || !first);
     HcsSonineStates hcs_states(d, alpha, beta, kappa,
                                linear_sonine ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
-                               linear_sonine && d == 3 ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic);
+                               oriented ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic);
     std::optional<HcsStability> stability;
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {

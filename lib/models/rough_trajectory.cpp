@@ -1,13 +1,15 @@
 // What `gkt evolve` asks the "rough" model for: the free cooling of rough spheres or disks from
-// Maxwellians at T_t(0), T_r(0), in the Maxwellian or the linear first-Sonine scheme
-// (rough_cooling_evolution.hpp; docs/theory.md §19.13, conventions.md), and of the Walton gas in the
-// Maxwellian approximation.
+// Maxwellians at T_t(0), T_r(0), in the Maxwellian or the linear first-Sonine scheme, the latter for spheres
+// optionally with the orientation term b00 P (hcs = "linear-oriented") (rough_cooling_evolution.hpp; docs/theory.md
+// §19.13, conventions.md), and of the Walton gas in the Maxwellian approximation.
 #include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "gkt/evolution/rough_cooling_evolution.hpp"
+#include "gkt/transport/rough/rough_oriented_cooling_rates.hpp"
+#include "gkt/transport/rough/rough_sonine_cooling_state.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "models/models.hpp"
 
@@ -15,8 +17,9 @@ namespace gkt::detail {
 
 namespace {
 
-/// Returns the rows of a rough trajectory: temperatures, θ, ζ* and (linear scheme) the cumulants.
-Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear);
+/// Returns the rows of a rough trajectory: temperatures, θ, ζ*, (linear scheme) the cumulants and (`oriented`) b00
+/// and the orientation correlation C.
+Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear, bool oriented = false);
 
 }  // namespace
 
@@ -57,14 +60,34 @@ Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const Traj
   const int d = p.number("dimension") == Rational(2) ? 2 : 3;
   const Rational alpha = p.number("alpha"), beta = p.number("beta"), kappa = p.number("moment_of_inertia");
   const std::string scheme = p.choice("hcs");
+  const RoughCumulants initial{p.number("a20").to_double(), p.number("a02").to_double(), p.number("a11").to_double()};
+  if (scheme == "linear-oriented") {
+    // The linear scheme with the orientation term b00 P (theory.md §19.13, (19.26a) at order 1): spheres, and a
+    // steady state to relax to.
+    if (d != 3) throw std::invalid_argument("hcs: \"linear-oriented\" needs dimension = 3 (disks have c.w = 0)");
+    if (beta == Rational(-1))
+      throw std::invalid_argument("hcs: \"linear-oriented\" needs beta > -1 (at -1 the spin decouples)");
+    check_rough_initial_cumulants(d, initial);
+    if (!rough_sonine_cooling_state(d, alpha, beta, kappa, 1, RoughSonineScheme::linear, RoughSonineAnsatz::oriented)
+             .solved)
+      throw std::invalid_argument(
+          "hcs: the oriented linear scheme has no root at dimension = 3, alpha = " + alpha.to_string() +
+          ", beta = " + beta.to_string() + " (theory.md §19.14); use hcs = \"maxwellian\"");
+    const RoughCoolingRates rates(d, alpha, beta, kappa);
+    const RoughOrientedCoolingRates oriented(alpha, beta, kappa);
+    const RoughEvolutionResult result =
+        evolve_rough_oriented_cooling(rates, oriented, p.number("translational_temperature").to_double(),
+                                      p.number("rotational_temperature").to_double(), request.times,
+                                      p.number("rtol").to_double(), p.number("atol").to_double(), initial);
+    return tabulate_rough_trajectory(result, true, true);
+  }
   // "linear-or-maxwellian": the linear scheme where it has a root, else the Maxwellian one.
   const bool linear =
       scheme == "linear" ||
       (scheme == "linear-or-maxwellian" &&
        rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::linear).linear_scheme_solved);
   if (scheme == "linear") (void)linear_rough_state(d, alpha, beta, kappa);  // refuses the no-root region
-  const RoughCumulants initial{p.number("a20").to_double(), p.number("a02").to_double(), p.number("a11").to_double()};
-  check_rough_initial_cumulants(d, initial);  // before the tables are built
+  check_rough_initial_cumulants(d, initial);                                // before the tables are built
   if (!linear && initial != RoughCumulants{})
     throw std::invalid_argument(
         "a20, a02, a11: initial cumulants need the linear scheme (hcs = \"linear\"" +
@@ -95,7 +118,7 @@ Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, con
 
 namespace {
 
-Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear) {
+Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear, bool oriented) {
   Trajectory out;
   out.columns = {"time",
                  "collisions",
@@ -104,6 +127,7 @@ Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool li
                  "rotational_temperature_ratio",
                  "cooling_rate"};
   if (linear) out.columns.insert(out.columns.end(), {"a20", "a02", "a11"});
+  if (oriented) out.columns.insert(out.columns.end(), {"b00", "orientation_correlation"});
   for (const auto& s : result.samples) {
     std::vector<double> row{s.time,
                             s.collisions,
@@ -112,6 +136,7 @@ Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool li
                             s.rotational_temperature / s.translational_temperature,
                             s.cooling_rate};
     if (linear) row.insert(row.end(), {s.a20, s.a02, s.a11});
+    if (oriented) row.insert(row.end(), {s.b00, s.orientation_correlation});
     out.rows.push_back(std::move(row));
   }
   out.counters = result.counters;

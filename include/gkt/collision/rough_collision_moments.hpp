@@ -36,13 +36,14 @@ RoughForm scaled(const RoughForm& f, const Rational& c);
 /// Returns F + G.
 RoughForm operator+(const RoughForm& f, const RoughForm& g);
 
-/// Most forms one RoughCollisionMoments expands in (the number of variables of its recurrence).
-inline constexpr std::size_t kMaxRoughForms = 8;
+/// Most forms one RoughCollisionMoments expands in: nine, the products P(1)P(2)P(1') of the oriented nonlinear HCS
+/// (theory.md §19.14); the recurrence runs in eight variables up to eight forms.
+inline constexpr std::size_t kMaxRoughForms = 9;
 
 /// Exponents k_v of the forms in a moment; forms past the ones given have exponent 0.
 using RoughExponents = std::array<int, kMaxRoughForms>;
 
-/// Moments ⟨Π_v F_v^{k_v}⟩/⟨1⟩ for up to eight rough forms F_v, 0 ≤ k_v ≤ degree_v (exact in Ring).
+/// Moments ⟨Π_v F_v^{k_v}⟩/⟨1⟩ for up to nine rough forms F_v, 0 ≤ k_v ≤ degree_v (exact in Ring).
 template <class Ring>
 class RoughCollisionMoments {
  public:

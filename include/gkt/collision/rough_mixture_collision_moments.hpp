@@ -17,7 +17,7 @@
 namespace gkt {
 
 /// Returns the table of ⟨Π_v F_v^{k_v}⟩/⟨1⟩, 0 ≤ k_v ≤ degrees[v] (and accepted by `keep`, a
-/// down-closed set), for up to eight forms F_v over the slots of an i–j collision; velocities in the
+/// down-closed set), for up to nine forms F_v over the slots of an i–j collision; velocities in the
 /// unit of the species' masses and temperatures (rough_mixture_collision_rule.hpp). Exact in Ring
 /// (Rational, or RationalPolynomial with α, β or the spin scale x symbolic). Throws
 /// std::invalid_argument as RoughCollisionMoments does.

@@ -1,8 +1,8 @@
 // Time evolution of a freely cooling homogeneous gas of rough spheres or disks: the translational
 // and rotational temperatures T_t(τ), T_r(τ) and, in the linear first-Sonine scheme, the cumulants
-// a20, a02, a11 (docs/theory.md §19.13), integrated with SUNDIALS CVODE (BDF, dense, difference-
-// quotient Jacobian). From any θ(0) = T_r(0)/T_t(0) the ratio relaxes to the HCS value of
-// rough_homogeneous_cooling_state (the same balances) and T_t then follows Haff's law.
+// a20, a02, a11 (and for spheres, optionally, the orientation coefficient b00) (docs/theory.md §19.13), integrated with
+// SUNDIALS CVODE (BDF, dense, difference- quotient Jacobian). From any θ(0) = T_r(0)/T_t(0) the ratio relaxes to the
+// HCS value of rough_homogeneous_cooling_state (the same balances) and T_t then follows Haff's law.
 //
 // Time τ = ω_M t with ω_M = nσ^{d−1}v_ref ν (ν of theory.md (5.3)) the Maxwellian collision
 // frequency at the reference temperature T_ref in which the temperatures are given
@@ -15,6 +15,7 @@
 
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/transport/rough/rough_cooling_rates.hpp"
+#include "gkt/transport/rough/rough_oriented_cooling_rates.hpp"
 
 namespace gkt {
 
@@ -29,6 +30,9 @@ struct RoughEvolutionSample {
   /// @{
   double a20 = 0, a02 = 0, a11 = 0;  ///< 0 in the Maxwellian scheme
   /// @}
+  double b00 = 0;  ///< the orientation coefficient of b00 P (evolve_rough_oriented_cooling; else 0)
+  /// C = ⟨(c·ŵ)²/(c²ŵ²)⟩ = 1/3 + b00/5 (theory.md (19.28)); 1/3 without the orientation term.
+  double orientation_correlation = 1.0 / 3;
 };
 
 /// The samples at the requested times and CVODE's counters.
@@ -56,6 +60,16 @@ void check_rough_initial_cumulants(int dimension, const RoughCumulants& a);
 RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
                                           double rotational0, const std::vector<double>& times, double rtol,
                                           double atol, const RoughCumulants& initial_cumulants = {});
+
+/// Returns the trajectory of the oriented first-Sonine scheme of spheres (theory.md §19.13, (19.25) with the
+/// orientation balance): a20, a02, a11 and b00 (b00(0) = 0, the others from `initial_cumulants`), the balances of
+/// `oriented` and the collision frequency of `rates` (the same α, β, κ, d = 3; std::invalid_argument otherwise).
+/// Its stationary point is rough_sonine_cooling_state(3, α, β, κ, 1, linear, oriented). Otherwise as
+/// evolve_rough_cooling with linear = true.
+RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rates,
+                                                   const RoughOrientedCoolingRates& oriented, double translational0,
+                                                   double rotational0, const std::vector<double>& times, double rtol,
+                                                   double atol, const RoughCumulants& initial_cumulants = {});
 
 /// Maxwellian rates at θ = T_r/T_t: (z_t, z_r) = (ζ_t, ζ_r)/(nσ^{d−1}v_t ν) (e.g. from the Walton
 /// quadrature of rough_walton.hpp, times 4/(d+2)).

@@ -47,6 +47,54 @@ void add_scaled(TauLaurent& l, const RationalPolynomial& p, int spin_power, cons
   }
 }
 
+using Table = RoughCollisionMoments<RationalPolynomial>;
+using Parameters = RoughCollisionParameters<RationalPolynomial>;
+
+/// Returns the form c_a·c_a, ŵ_a·ŵ_a or c_a·ŵ_a of one particle (slots v, w), as W_a·W_b.
+RoughForm dot(RoughSlot a, RoughSlot b) { return rough_dot_form(a, b); }
+
+/// Returns the exponent sum of forms [first, first + 3) (x, y, f of one particle): its degree, f² counting 2.
+int particle_degree(const RoughExponents& e, std::size_t first) { return e[first] + e[first + 1] + e[first + 2]; }
+
+/// The oriented gain with the weight on one partner (v, w = v1, w1 or v2, w2; linear scheme, theory.md §19.14):
+/// ⟨x^i y^j f^k x1'^l y1'^n f1'^o⟩/⟨1⟩ (x = v·v, y = w·w, f = v·w), each particle's degree ≤ m, f to power 2.
+Table oriented_partner_gain(const Parameters& p, int m, RoughSlot v, RoughSlot w) {
+  using S = RoughSlot;
+  return {p,
+          {dot(v, v), dot(w, w), dot(v, w), dot(S::v1_post, S::v1_post), dot(S::w1_post, S::w1_post),
+           dot(S::v1_post, S::w1_post)},
+          {m, m, 2, m, m, 2},
+          [m](const RoughExponents& e) { return particle_degree(e, 0) <= m && particle_degree(e, 3) <= m; }};
+}
+
+/// The oriented gain with both weights (nonlinear scheme, theory.md §19.14): ⟨x1^i y1^j f1^k x2^.. y2^.. f2^..
+/// x1'^.. y1'^.. f1'^..⟩/⟨1⟩, nine forms (the engine's most), each particle's degree ≤ m, every f to power 2.
+Table oriented_product_gain(const Parameters& p, int m) {
+  using S = RoughSlot;
+  return {p,
+          {dot(S::v1, S::v1), dot(S::w1, S::w1), dot(S::v1, S::w1), dot(S::v2, S::v2), dot(S::w2, S::w2),
+           dot(S::v2, S::w2), dot(S::v1_post, S::v1_post), dot(S::w1_post, S::w1_post), dot(S::v1_post, S::w1_post)},
+          {m, m, 2, m, m, 2, m, m, 2},
+          [m](const RoughExponents& e) {
+            return particle_degree(e, 0) <= m && particle_degree(e, 3) <= m && particle_degree(e, 6) <= m;
+          }};
+}
+
+/// The oriented loss ⟨x1^i y1^j f1^k x2^.. y2^.. f2^..⟩/⟨1⟩: partner 1 carries weight and test (degree ≤ 2m, f to
+/// power 4), partner 2 the weight (≤ m); without `products` one of the two weights is 1 (partner 2 at degree 0, or
+/// partner 1 at most m).
+Table oriented_loss(const Parameters& p, int m, bool products) {
+  using S = RoughSlot;
+  return {p,
+          {dot(S::v1, S::v1), dot(S::w1, S::w1), dot(S::v1, S::w1), dot(S::v2, S::v2), dot(S::w2, S::w2),
+           dot(S::v2, S::w2)},
+          {2 * m, 2 * m, 4, m, m, 2},
+          [m, products](const RoughExponents& e) {
+            const int w1 = particle_degree(e, 0), w2 = particle_degree(e, 3);
+            return w1 <= 2 * m && w2 <= m && (products || w2 == 0 || w1 <= m);
+          }};
+}
+
 }  // namespace
 
 RoughSonineBalances::RoughSonineBalances(int dimension, const Rational& alpha, const Rational& beta,
@@ -56,8 +104,6 @@ RoughSonineBalances::RoughSonineBalances(int dimension, const Rational& alpha, c
   if (highest_degree < 2) throw std::invalid_argument("RoughSonineBalances: highest Sonine degree must be >= 2");
   // Disks: ŵ is normal to the plane of c, c·ŵ ≡ 0 and P ≡ −xy/3 adds nothing; at β = −1 no spin balance.
   const bool oriented = orientation && dimension == 3 && !decoupled_;
-  if (oriented && products)
-    throw std::logic_error("RoughSonineBalances: the orientation family is built in the linear scheme only");
   const int m = highest_degree;
   const int spin_top = decoupled_ ? 0 : m;
   for (int n = 2; n <= m; ++n)
@@ -186,20 +232,24 @@ RoughSonineBalances::RoughSonineBalances(int dimension, const Rational& alpha, c
         });
     return;
   }
-  // Oriented (linear scheme: one partner unweighted): f = c·w enters as f² per P, so its exponent is 2e;
-  // a monomial's degree counts f² as 2. Gain with the weight on partner 1 or on partner 2, and one loss table.
-  const RoughForm f1 = rough_dot_form(RoughSlot::v1, RoughSlot::w1), f2 = rough_dot_form(RoughSlot::v2, RoughSlot::w2),
-                  f1p = rough_dot_form(RoughSlot::v1_post, RoughSlot::w1_post);
-  const auto capped = [m](const RoughExponents& e) { return e[0] + e[1] + e[2] <= m && e[3] + e[4] + e[5] <= m; };
-  const RoughCollisionMoments<RationalPolynomial> gain1(params, {x1, y1, f1, x1p, y1p, f1p}, {m, m, 2, m, m, 2},
-                                                        capped);
-  const RoughCollisionMoments<RationalPolynomial> gain2(params, {x2, y2, f2, x1p, y1p, f1p}, {m, m, 2, m, m, 2},
-                                                        capped);
-  const RoughCollisionMoments<RationalPolynomial> loss(params, {x1, y1, f1, x2, y2, f2}, {2 * m, 2 * m, 4, m, m, 2},
-                                                       [m](const RoughExponents& e) {
-                                                         const int w1 = e[0] + e[1] + e[2], w2 = e[3] + e[4] + e[5];
-                                                         return w1 <= 2 * m && w2 <= m && (w2 == 0 || w1 <= m);
-                                                       });
+  // Oriented: f = c·w enters as f² per P, so its exponent is 2e; a monomial's degree counts f² as 2. Linear
+  // scheme: the gain with the weight on partner 1 or on partner 2 (six forms each); nonlinear: one gain table
+  // with both weights (nine forms). One loss table.
+  if (products) {
+    const auto gain = oriented_product_gain(params, m);
+    const auto loss = oriented_loss(params, m, true);
+    fill(
+        [&](const E3& u, const E3& v, const E3& t) {
+          return gain.moment({u[0], u[1], 2 * u[2], v[0], v[1], 2 * v[2], t[0], t[1], 2 * t[2]});
+        },
+        [&](const E3& u, const E3& v, const E3& t) {
+          return loss.moment({u[0] + t[0], u[1] + t[1], 2 * (u[2] + t[2]), v[0], v[1], 2 * v[2]});
+        });
+    return;
+  }
+  const auto gain1 = oriented_partner_gain(params, m, RoughSlot::v1, RoughSlot::w1);
+  const auto gain2 = oriented_partner_gain(params, m, RoughSlot::v2, RoughSlot::w2);
+  const auto loss = oriented_loss(params, m, false);
   fill(
       [&](const E3& u, const E3& v, const E3& t) {
         if (v[0] + v[1] + v[2] == 0) return gain1.moment({u[0], u[1], 2 * u[2], t[0], t[1], 2 * t[2]});

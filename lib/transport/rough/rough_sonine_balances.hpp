@@ -10,7 +10,7 @@
 // and four for the loss), combined exactly into Laurent polynomials in τ = θ/κ; per τ they are
 // evaluated in double and contracted with the Sonine coefficients.
 //
-// With `orientation` (spheres only, linear scheme; §19.14) the ansatz adds the velocity–spin
+// With `orientation` (spheres only; linear and nonlinear schemes, §19.14) the ansatz adds the velocity–spin
 // orientation family Σ b_pq P S_p^(5/2)(x) S_q^(5/2)(y), P = (c·ŵ)² − xy/3, p + q ≤ M − 2 (the same
 // total degree in c², ŵ² as the a_pq), with the tests ψ = P x^k y^l; their averages need the forms
 // f = c·w of theory.md (19.5a). For disks c·ŵ ≡ 0 (ŵ is normal to the plane of c): the flag does nothing.
@@ -39,9 +39,8 @@ class RoughSonineBalances {
  public:
   /// Builds the exact tables for d ∈ {2, 3}, α, β, κ (validated: std::invalid_argument naming the
   /// field) and highest Sonine degree M = p + q ≥ 2. With `products` the Φ(1)Φ(2) averages (the
-  /// nonlinear scheme) are built too.
-  /// nonlinear scheme) are built too. With `orientation` (d = 3, β > −1) the b_pq family is added
-  /// (std::logic_error together with `products`: nine engine forms, above the engine's eight).
+  /// nonlinear scheme) are built too. With `orientation` (d = 3, β > −1) the b_pq family is added; with both,
+  /// the products a·a, a·b, b·b come from one gain table of nine forms (x, y, c·w of both partners and of 1').
   RoughSonineBalances(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                       int highest_degree, bool products, bool orientation = false);
 

@@ -190,10 +190,6 @@ RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational
   if (order < 1) throw std::invalid_argument("order: must be an integer >= 1, got " + std::to_string(order));
   const bool nonlinear = scheme == RoughSonineScheme::nonlinear;
   const bool oriented = ansatz == RoughSonineAnsatz::oriented;
-  if (oriented && nonlinear)
-    throw std::invalid_argument(
-        "ansatz: the oriented Sonine HCS is solved in the linear scheme only (the nonlinear products need nine "
-        "engine forms)");
   const RoughSonineBalances b(dimension, alpha, beta, kappa, order + 1, nonlinear, oriented);
   RoughSonineCoolingState s;
   s.order = order;
@@ -210,15 +206,18 @@ RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational
     // below (its cumulants, the new ones 0) — continuation in the order — or from the Maxwellian.
     if (!ok) {
       log_tau = center;
-      a.assign(s.indices.size(), 0.0);
+      a.assign(b.unknowns(), 0.0);
     }
     ok = solve_nonlinear(b, dimension, log_tau, a);
     if (!ok && order > 1) {
       const RoughSonineCoolingState below =
-          rough_sonine_cooling_state(dimension, alpha, beta, kappa, order - 1, scheme);
+          rough_sonine_cooling_state(dimension, alpha, beta, kappa, order - 1, scheme, ansatz);
       if (below.solved) {
         log_tau = s.spin_decoupled ? 0 : std::log(below.temperature_ratio / kappa.to_double());
-        for (std::size_t p = 0; p < a.size(); ++p) a[p] = below.cumulant(s.indices[p][0], s.indices[p][1]);
+        const std::size_t na = s.indices.size();
+        for (std::size_t p = 0; p < na; ++p) a[p] = below.cumulant(s.indices[p][0], s.indices[p][1]);
+        for (std::size_t o = 0; o < s.orientation_indices.size(); ++o)
+          a[na + o] = below.orientation_coefficient(s.orientation_indices[o][0], s.orientation_indices[o][1]);
         ok = solve_nonlinear(b, dimension, log_tau, a);
       }
     }

@@ -5,7 +5,7 @@
 // is a20, a02, a11 (rough_homogeneous_cooling_state.hpp, the same linear scheme); order N adds
 // every a_pq with p + q ≤ N + 1.
 //
-// The oriented ansatz (spheres, linear scheme) adds the velocity–spin orientation family
+// The oriented ansatz (spheres; linear and nonlinear schemes) adds the velocity–spin orientation family
 //   φ_M(c) φ_M(ŵ) Σ_{p + q ≤ N − 1} b_pq P S_p^(5/2)(x) S_q^(5/2)(y),   P = (c·ŵ)² − xy/3,
 // of the same total degree in c², ŵ² as the a_pq (order 1: b00 alone), and the orientation correlation
 // C = ⟨(c·ŵ)²/(xy)⟩ it implies (theory.md §19.14). The isotropic ansatz (no b) has C = 1/3.
@@ -22,7 +22,7 @@ namespace gkt {
 enum class RoughSonineScheme { linear, nonlinear };
 
 /// Distribution of the Sonine HCS: the a_pq alone (isotropic in the directions of c and ŵ) or with the
-/// b_pq P S_p S_q family (oriented; spheres; the linear scheme only).
+/// b_pq P S_p S_q family (oriented; spheres; both schemes).
 enum class RoughSonineAnsatz { isotropic, oriented };
 
 /// The rough HCS at Sonine order N.
@@ -60,9 +60,10 @@ RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational
                                                    const Rational& kappa, int order, RoughSonineScheme scheme);
 
 /// Returns the HCS at Sonine order N with the given ansatz: `isotropic` is the call above; `oriented` adds the
-/// b_pq (p + q ≤ N − 1) and their balances ⟨P x^k y^l⟩ in the linear scheme (std::invalid_argument naming
-/// `ansatz` with the nonlinear scheme: the products need nine engine forms). For disks the oriented ansatz is
-/// the isotropic one (c·ŵ ≡ 0). Cost: three exact engine tables with the forms c·w (theory.md (19.5a)).
+/// b_pq (p + q ≤ N − 1) and their balances ⟨P x^k y^l⟩, in either scheme (nonlinear: every product a·a, a·b, b·b
+/// kept, Newton from the oriented linear solution; theory.md §19.14). For disks the oriented ansatz is the
+/// isotropic one (c·ŵ ≡ 0). Cost: three exact engine tables with the forms c·w (theory.md (19.5a)) in the linear
+/// scheme, two (one of nine forms) in the nonlinear one (docs/performance.md).
 RoughSonineCoolingState rough_sonine_cooling_state(int dimension, const Rational& alpha, const Rational& beta,
                                                    const Rational& kappa, int order, RoughSonineScheme scheme,
                                                    RoughSonineAnsatz ansatz);
