@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "gkt/collision/rough_collision_rule.hpp"
 #include "gkt/models/transport_model.hpp"
@@ -58,6 +59,48 @@ TEST(RoughCumulantReference, WeightedElementsReproduceTheHcsBalances) {
       EXPECT_LT(momentum, 1e-13 * size) << c.d << " " << n;
     }
   }
+}
+
+// The same with the orientation weights b_pq P S_p S_q of the oriented HCS (3D, linear scheme, theory.md (19.26a)):
+// the oriented scheme's ζ_t and ζ_r, which carry the b's, are reproduced by the a- and b-weighted elements.
+TEST(RoughCumulantReference, OrientationWeightsReproduceTheOrientedHcsBalances) {
+  const int w = 3;
+  for (const auto& [alpha, beta] :
+       {std::pair{Rational(9, 10), Rational(1, 2)}, std::pair{Rational(1, 2), Rational(1)}}) {
+    const Rational kappa(2, 5);
+    const auto p = rough_parameters_symbolic_temperature(3, alpha, beta, kappa);
+    const detail::RoughWeightedCollisionElements weighted(p, 2, w, true);
+    const detail::RoughCollisionElements plain(p, 2);
+    for (int n = 1; n <= w - 1; ++n) {
+      const RoughSonineCoolingState hcs =
+          rough_sonine_cooling_state(3, alpha, beta, kappa, n, RoughSonineScheme::linear, RoughSonineAnsatz::oriented);
+      ASSERT_TRUE(hcs.solved);
+      ASSERT_FALSE(hcs.orientation_indices.empty());
+      const double tau = hcs.temperature_ratio / kappa.to_double();
+      double translational = 0, rotational = 0, oriented = 0, momentum = 0;
+      for (std::size_t i = 0; i < hcs.indices.size(); ++i) {
+        translational += hcs.cumulants[i] * weighted.element(0, 1, 0, 0, 0, hcs.indices[i][0], hcs.indices[i][1], tau);
+        rotational += hcs.cumulants[i] * weighted.element(0, 0, 1, 0, 0, hcs.indices[i][0], hcs.indices[i][1], tau);
+      }
+      for (std::size_t i = 0; i < hcs.orientation_indices.size(); ++i) {
+        const auto [pb, qb] = hcs.orientation_indices[i];
+        const double b = hcs.orientation_coefficients[i];
+        translational += b * weighted.orientation_element(0, 1, 0, 0, 0, pb, qb, tau);
+        rotational += b * weighted.orientation_element(0, 0, 1, 0, 0, pb, qb, tau);
+        oriented = std::max(oriented, std::abs(b * weighted.orientation_element(0, 1, 0, 0, 0, pb, qb, tau)));
+        for (int pt = 0; pt <= 2; ++pt)
+          for (int qt = 0; pt + qt <= 2; ++qt)
+            momentum = std::max(momentum, std::abs(weighted.orientation_element(1, 0, 0, pt, qt, pb, qb, tau)));
+      }
+      const double z = 4.0 / 5 * hcs.cooling_rate;
+      EXPECT_LT(rel(-(plain.element(0, 1, 0, 0, 0, tau) + 2 * translational) / 3, z), 1e-12) << n;
+      EXPECT_LT(rel(-(plain.element(0, 0, 1, 0, 0, tau) + 2 * rotational) / 3, z), 1e-12) << n;
+      EXPECT_GT(oriented, 1e-9 * z);  // the b's contribute
+      EXPECT_LT(momentum, 1e-14);
+    }
+  }
+  const auto disks = rough_parameters_symbolic_temperature(2, Rational(9, 10), Rational(1, 2), Rational(1, 2));
+  EXPECT_THROW(detail::RoughWeightedCollisionElements(disks, 2, 3, true), std::invalid_argument);
 }
 
 // With every cumulant 0 and the Maxwellian θ, ζ* the reference state is the Maxwellian one: the sources written as
@@ -200,6 +243,16 @@ TEST(RoughCumulantReference, ModelKeys) {
   const auto first = model->evaluate(plain, {"shear_viscosity"}, request);
   EXPECT_NEAR(first[0].value.to_double(), t.at_maxwellian_state(1).shear_viscosity, 1e-13);
   EXPECT_GT(std::abs(first[0].value.to_double() - out[0].value.to_double()), 1e-4);
+
+  // 3D linear: the oriented HCS (as the HCS columns), its b_pq carried (orientation tables).
+  point.choices = {{"hcs", "linear"}, {"reference_state", "hcs"}};
+  point.numbers["hcs_order"] = Rational(2);
+  const auto oriented = model->evaluate(point, {"thermal_conductivity"}, request);
+  const RoughSonineTransport to(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 3, 2, true);
+  const RoughSonineCoolingState ho = rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 1,
+                                                                RoughSonineScheme::linear, RoughSonineAnsatz::oriented);
+  EXPECT_NEAR(oriented[0].value.to_double(), to.at_cooling_state(1, ho).thermal_conductivity, 1e-15);
+  EXPECT_THROW((void)t.at_cooling_state(1, ho), std::invalid_argument);  // b's without the orientation tables
 
   ParameterPoint bad = rough_point();
   bad.numbers["hcs_order"] = Rational(3);

@@ -234,8 +234,8 @@ class RoughModel final : public TransportModel {
     // the oriented linear Sonine HCS's (§19.14); the stability values are first approximations.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     const bool hcs_sonine = scheme == "nonlinear" || !first;
-    // reference_state = "hcs": the five Navier–Stokes columns about the isotropic Sonine HCS of `hcs` with its
-    // cumulants a_pq, p + q ≤ hcs_order (theory.md §19.16), at every order including 1 (with its error).
+    // reference_state = "hcs": the five Navier–Stokes columns about the Sonine HCS of `hcs` (3D linear: oriented) with
+    // its cumulants a_pq, p + q ≤ hcs_order (theory.md §19.16), at every order including 1 (with its error).
     const bool cumulant_reference = SchemaPoint(specs, point).choice("reference_state") == "hcs";
     if (point.numbers.contains("hcs_order") && !cumulant_reference)
       throw std::invalid_argument(
@@ -323,7 +323,7 @@ class RoughModel final : public TransportModel {
     if (wants_reference && tolerance && !point.numbers.contains("hcs_order")) {
       HcsSonineStates states(d, alpha, beta, kappa,
                              linear_sonine ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
-                             RoughSonineAnsatz::isotropic);
+                             reference_ansatz(d, linear_sonine));
       double closest = std::numeric_limits<double>::infinity();
       reference_converged = false;
       for (int k = 2; k <= kMaxRoughReferenceDegree; ++k) {
@@ -480,6 +480,12 @@ class RoughModel final : public TransportModel {
     return entry.values[n] = entry.transport->at_maxwellian_state(n);
   }
 
+  /// Returns the ansatz of the reference HCS: the one of the HCS columns (oriented in the linear scheme in 3D, whose
+  /// b_pq the reference carries; isotropic otherwise, theory.md §19.14).
+  static RoughSonineAnsatz reference_ansatz(int d, bool linear) {
+    return linear && d == 3 ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic;
+  }
+
   /// Returns the largest change of θ, ζ*, a20, a02, a11 between two Sonine HCS orders (ζ*, a20 alone at β = −1;
   /// +inf where either has no solution).
   static double hcs_step(const RoughSonineCoolingState& a, const RoughSonineCoolingState& b) {
@@ -503,8 +509,9 @@ class RoughModel final : public TransportModel {
     std::map<int, RoughTransportValues> values;
   };
 
-  /// Returns the Navier–Stokes values of order n about the isotropic Sonine HCS of order degree − 1 (theory.md
-  /// §19.16); NaN where that HCS has no solution. The tables are built once to `tables` (≥ n).
+  /// Returns the Navier–Stokes values of order n about the Sonine HCS of order degree − 1 (theory.md §19.16; in 3D
+  /// with the linear scheme the oriented one, its b_pq carried); NaN where that HCS has no solution. The tables are
+  /// built once to `tables` (≥ n).
   RoughTransportValues reference_values(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
                                         bool linear, int degree, int n, int tables) {
     if (reference_.size() > 16) reference_.clear();  // bound memory in long sweeps (never mid-evaluation)
@@ -515,7 +522,7 @@ class RoughModel final : public TransportModel {
       RoughReferenceEntry e;
       e.hcs = rough_sonine_cooling_state(d, alpha, beta, kappa, degree - 1,
                                          linear ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
-                                         RoughSonineAnsatz::isotropic);
+                                         reference_ansatz(d, linear));
       it = reference_.emplace(key, std::move(e)).first;
     }
     RoughReferenceEntry& entry = it->second;
@@ -524,8 +531,12 @@ class RoughModel final : public TransportModel {
       const double nan = std::numeric_limits<double>::quiet_NaN();
       return entry.values[n] = RoughTransportValues{nan, nan, nan, nan, nan, nan, nan};
     }
-    if (!entry.transport || entry.transport->highest_order() < n)
-      entry.transport = std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, std::max(n, tables), degree);
+    if (!entry.transport || entry.transport->highest_order() < n) {
+      const bool oriented = std::any_of(entry.hcs.orientation_coefficients.begin(),
+                                        entry.hcs.orientation_coefficients.end(), [](double b) { return b != 0; });
+      entry.transport =
+          std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, std::max(n, tables), degree, oriented);
+    }
     return entry.values[n] = entry.transport->at_cooling_state(n, entry.hcs);
   }
 

@@ -94,6 +94,11 @@ RoughGalerkinSystem system_of(const RoughCollisionElements& elements, const Roug
           s.collision[p][q] +=
               r.cumulants[w] * r.elements->element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q,
                                                    r.indices[w][0], r.indices[w][1], state.tau);
+        for (std::size_t w = 0; w < r.orientation_indices.size(); ++w)
+          s.collision[p][q] +=
+              r.orientation_coefficients[w] *
+              r.elements->orientation_element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q,
+                                              r.orientation_indices[w][0], r.orientation_indices[w][1], state.tau);
       }
       s.cooling[p][q] = rough_maxwell_scaling_product(state.dimension, basis[p], basis[q]).to_double();
       s.product[p][q] = rough_maxwell_product(state.dimension, basis[p], basis[q]).to_double();

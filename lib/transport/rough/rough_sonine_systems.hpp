@@ -97,12 +97,14 @@ struct RoughGalerkinSystem {
 
 class RoughWeightedCollisionElements;
 
-/// The cumulants of the reference state f0 = f_M [1 + Σ a_pq S_p(x) S_q(y)] (theory.md (19.26)) and its cooling
-/// rate: the Sonine HCS carried into the Chapman–Enskog equations (theory.md §19.16, "Cumulant reference").
+/// The cumulants of the reference state f0 = f_M [1 + Σ a_pq S_p(x) S_q(y) (+ Σ b_pq P S_p S_q, (19.26a))] and its
+/// cooling rate: the Sonine HCS carried into the Chapman–Enskog equations (theory.md §19.16, "Cumulant reference").
 struct RoughCumulantReference {
   const RoughWeightedCollisionElements* elements = nullptr;  ///< the weighted collision elements (W ≥ max p + q)
   std::vector<std::array<int, 2>> indices;                   ///< (p, q) of the cumulants
   std::vector<double> cumulants;                             ///< a_pq, in the order of `indices`
+  std::vector<std::array<int, 2>> orientation_indices;       ///< (p, q) of the b_pq (3D; needs oriented elements)
+  std::vector<double> orientation_coefficients;              ///< b_pq, in the order of `orientation_indices`
   double cooling_rate = 0;                                   ///< ζ* of that HCS (ζ/ν0(T_t))
 };
 

@@ -1,5 +1,6 @@
 #include "gkt/transport/rough/rough_sonine_transport.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -30,11 +31,15 @@ RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha,
 }
 
 RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
-                                           const Rational& kappa, int highest_order, int cumulant_degree)
+                                           const Rational& kappa, int highest_order, int cumulant_degree,
+                                           bool orientation)
     : RoughSonineTransport(dimension, alpha, beta, kappa, highest_order) {
   if (cumulant_degree < 2) throw std::invalid_argument("cumulant_degree: must be an integer >= 2");
+  if (orientation && dimension != 3)
+    throw std::invalid_argument("orientation: the b_pq terms need dimension = 3 (c.w vanishes for disks)");
   tables_->weighted = std::make_unique<detail::RoughWeightedCollisionElements>(
-      rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa), highest_order, cumulant_degree);
+      rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa), highest_order, cumulant_degree,
+      orientation);
 }
 
 RoughSonineTransport::~RoughSonineTransport() = default;
@@ -52,12 +57,20 @@ RoughTransportValues RoughSonineTransport::at_cooling_state(int order, const Rou
   if (!hcs.solved) throw std::invalid_argument("hcs: the Sonine HCS has no solution at this state");
   if (hcs.spin_decoupled != t.spin_decoupled)
     throw std::invalid_argument("hcs: the Sonine HCS is of another state (spin decoupled or not)");
-  for (const double b : hcs.orientation_coefficients)
-    if (b != 0)
-      throw std::invalid_argument(
-          "hcs: the orientation terms b_pq are not carried into the reference state; "
-          "use the isotropic ansatz");
-  detail::RoughCumulantReference reference{t.weighted.get(), hcs.indices, hcs.cumulants, hcs.cooling_rate};
+  if (!t.weighted) throw std::invalid_argument("hcs: the tables were built without cumulant_degree");
+  const bool oriented = std::any_of(hcs.orientation_coefficients.begin(), hcs.orientation_coefficients.end(),
+                                    [](double b) { return b != 0; });
+  if (oriented && !t.weighted->oriented())
+    throw std::invalid_argument("hcs: orientation terms b_pq without the orientation tables (build with orientation)");
+  detail::RoughCumulantReference reference{t.weighted.get(), hcs.indices, hcs.cumulants, {}, {}, hcs.cooling_rate};
+  if (oriented) {
+    reference.orientation_indices = hcs.orientation_indices;
+    reference.orientation_coefficients = hcs.orientation_coefficients;
+    for (const auto& [p, q] : hcs.orientation_indices)
+      if (p + q + 2 > cumulant_degree())
+        throw std::invalid_argument("hcs: orientation coefficient b" + std::to_string(p) + std::to_string(q) +
+                                    " above the weighted tables' degree " + std::to_string(cumulant_degree()));
+  }
   for (const auto& [p, q] : hcs.indices)
     if (p + q > cumulant_degree())
       throw std::invalid_argument("hcs: cumulant a" + std::to_string(p) + std::to_string(q) +

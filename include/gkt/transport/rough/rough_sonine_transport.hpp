@@ -37,10 +37,12 @@ class RoughSonineTransport {
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                        int highest_order);
   /// As above, also building the collision elements weighted by the HCS cumulants a_pq of total degree
-  /// 2 ≤ p + q ≤ cumulant_degree (the Sonine HCS of order cumulant_degree − 1) for at_cooling_state.
-  /// Throws std::invalid_argument naming `cumulant_degree` below 2.
+  /// 2 ≤ p + q ≤ cumulant_degree (the Sonine HCS of order cumulant_degree − 1) for at_cooling_state, and with
+  /// `orientation` (3D) those weighted by the orientation terms b_pq P S_p S_q, p + q ≤ cumulant_degree − 2, of the
+  /// oriented ansatz (theory.md (19.26a)). Throws std::invalid_argument naming `cumulant_degree` below 2, or
+  /// `orientation` for d = 2.
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
-                       int highest_order, int cumulant_degree);
+                       int highest_order, int cumulant_degree, bool orientation = false);
   ~RoughSonineTransport();
   RoughSonineTransport(const RoughSonineTransport&) = delete;
   RoughSonineTransport& operator=(const RoughSonineTransport&) = delete;
@@ -55,10 +57,11 @@ class RoughSonineTransport {
   [[nodiscard]] RoughTransportValues at(int order, double temperature_ratio) const;
   /// Returns the same at the Maxwellian HCS θ (θ = +inf at β = −1).
   [[nodiscard]] RoughTransportValues at_maxwellian_state(int order) const;
-  /// Returns the coefficients at Sonine order `order` about the isotropic Sonine HCS `hcs` of the same (d, α, β, κ):
+  /// Returns the coefficients at Sonine order `order` about the Sonine HCS `hcs` of the same (d, α, β, κ):
   /// f0 = f_M(c) f_M(ŵ)[1 + Σ a_pq S_p(c²) S_q(ŵ²)] at its θ, with its ζ* (theory.md §19.16, (19.44)). Throws
   /// std::invalid_argument naming `hcs` when it is not solved, carries cumulants above the weighted tables' degree
-  /// or orientation terms b_pq (not carried), and `order` outside [1, highest_order].
+  /// or orientation terms b_pq without the orientation tables, and `order` outside [1, highest_order]. With them
+  /// the oriented HCS (its b_pq) is carried too.
   [[nodiscard]] RoughTransportValues at_cooling_state(int order, const RoughSonineCoolingState& hcs) const;
   /// Returns the highest cumulant degree p + q of the weighted tables (0 without them).
   [[nodiscard]] int cumulant_degree() const;
