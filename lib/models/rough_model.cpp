@@ -9,7 +9,8 @@
 // correlation C (rough_orientation_correlation.hpp, §19.8); κ*, μ* (rough_thermal_conductivity.hpp) and
 // the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3; at order
 // N > 1 (or with a tolerance) these five Navier–Stokes columns come from rough_sonine_transport.hpp (§19.16)
-// with the error of theory.md (6.1) from orders N + 1, N + 2; the linear stability of the HCS from the
+// with the error of theory.md (6.1) from orders N + 1, N + 2, about Maxwellians or (reference_state = "hcs") about
+// the Sonine HCS with its cumulants (§19.16, (19.44)–(19.45)); the linear stability of the HCS from the
 // first-Sonine coefficients (rough_hcs_stability.hpp, §19.15).
 #include <algorithm>
 #include <array>
@@ -152,7 +153,8 @@ class RoughModel final : public TransportModel {
            "rate, cumulants a20, a02, a11 and a_pq to p + q = 4), Maxwellian or Sonine orders 1-3 (linear or "
            "nonlinear); shear and bulk viscosity, thermal conductivity, density heat coefficient, first-order "
            "cooling rate at first Sonine or Sonine order up to 8 (translation x spin Sonine products, Maxwellian "
-           "reference); translation-rotation "
+           "reference; with reference_state = hcs about the Sonine HCS and its cumulants, order up to 4); "
+           "translation-rotation "
            "correlation (3D; first approximation at order 1, from the oriented linear Sonine HCS at orders 2-3); "
            "linear stability of the homogeneous cooling state";
   }
