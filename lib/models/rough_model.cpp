@@ -116,8 +116,9 @@ bool is_hcs_column(const std::string& name) {
 // costs ~5 s per (α, β, κ) in 3D (docs/performance.md).
 constexpr int kMaxRoughOrder = 8;
 
-// About the Sonine HCS (reference_state = "hcs", theory.md §19.16) the weighted tables of seven engine forms cost
-// 7–30 s at K = 6 (cumulant degree 2–4, 3D; docs/performance.md): orders 1 … 4 and cumulants p + q ≤ 4.
+// About the Sonine HCS (reference_state = "hcs", theory.md §19.16) the weighted tables of seven (oriented: eight)
+// engine forms cost 1.6–9 s of CPU at K = 6 (cumulant degree 2–4, 3D; docs/performance.md), 7 s and more at K = 8:
+// orders 1 … 4 (K = N + 2 ≤ 6) and cumulants p + q ≤ 4.
 constexpr int kMaxRoughReferenceOrder = 4;
 constexpr int kMaxRoughReferenceDegree = kMaxRoughHcsOrder + 1;
 
