@@ -637,6 +637,37 @@ TEST(CliRough, SmoothLimitAndBadInput) {
   }
 }
 
+// The cumulant reference of the rough Navier-Stokes columns (theory.md §19.16, conventions.md `reference_state`,
+// `hcs_order`): with the keys order 1 comes from the Sonine solver about the HCS (an error estimate, another value);
+// bad combinations exit 2 with one line naming the key.
+TEST(CliRough, CumulantReferenceKeys) {
+  const std::string base = "table " + scene_path("rough_hcs.toml") +
+                           " --set 'alpha=[0.9]' --set 'coefficients=[\"shear_viscosity\", \"thermal_conductivity\"]'";
+  const CliRun plain = run_gkt(base);
+  const CliRun reference = run_gkt(base + " --set 'reference_state=\"hcs\"' --set 'hcs=\"nonlinear\"'");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  ASSERT_EQ(reference.status, 0) << reference.err;
+  const auto p = parse_csv(plain.out), r = parse_csv(reference.out);
+  ASSERT_EQ(p.size(), 2u);
+  ASSERT_EQ(r.size(), 2u);
+  ASSERT_EQ(p[0][2], "thermal_conductivity");  // alpha, shear_viscosity, thermal_conductivity, errors, order
+  EXPECT_EQ(p[1][3], "nan");                   // the first approximation: no error estimate
+  EXPECT_NE(r[1][3], "nan");                   // about the HCS: the Sonine solver's error (6.1)
+  EXPECT_GT(std::abs(std::stod(r[1][2]) - std::stod(p[1][2])), 1e-3);  // κ*: the cumulants move it
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"hcs_order=3", "hcs_order: needs reference_state = \"hcs\""},
+           {"'reference_state=\"hcs\"' --set 'hcs=\"maxwellian\"'", "reference_state: \"hcs\" needs hcs ="},
+           {"'reference_state=\"hcs\"' --set hcs_order=5", "hcs_order: must be an integer in [2, 4], got 5"},
+           {"'reference_state=\"hcs\"' --set order=5", "order: shear_viscosity of model rough with reference_state"},
+           {"'reference_state=\"sonine\"'", "reference_state: must be one of"}}) {
+    const CliRun bad = run_gkt(base + " --set " + set);
+    EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+}
+
 // Order N > 1 of the rough Navier-Stokes columns (theory.md §19.16): the order-2 error column is (6.1) from the
 // order-2, 3, 4 values printed by the CLI itself; order 1 stays the first approximation with a nan error.
 TEST(CliRough, HigherSonineOrderAndItsError) {

@@ -10,11 +10,13 @@
 // correlation C (rough_orientation_correlation.hpp, §19.8); κ*, μ* (rough_thermal_conductivity.hpp) and
 // the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3; at order
 // N > 1 (or with a tolerance) these five Navier–Stokes columns come from rough_sonine_transport.hpp (§19.16)
-// with the error of theory.md (6.1) from orders N + 1, N + 2; the linear stability of the HCS from the
+// with the error of theory.md (6.1) from orders N + 1, N + 2, about Maxwellians or (reference_state = "hcs") about
+// the Sonine HCS with its cumulants (§19.16, (19.44)–(19.45)); the linear stability of the HCS from the
 // first-Sonine coefficients (rough_hcs_stability.hpp, §19.15).
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -115,6 +117,12 @@ bool is_hcs_column(const std::string& name) {
 // costs ~5 s per (α, β, κ) in 3D (docs/performance.md).
 constexpr int kMaxRoughOrder = 8;
 
+// About the Sonine HCS (reference_state = "hcs", theory.md §19.16) the weighted tables of seven (oriented: eight)
+// engine forms cost 1.6–9 s of CPU at K = 6 (cumulant degree 2–4, 3D; docs/performance.md), 7 s and more at K = 8:
+// orders 1 … 4 (K = N + 2 ≤ 6) and cumulants p + q ≤ 4.
+constexpr int kMaxRoughReferenceOrder = 4;
+constexpr int kMaxRoughReferenceDegree = kMaxRoughHcsOrder + 1;
+
 /// The Navier–Stokes columns of the higher-order solver (theory.md §19.16).
 constexpr std::array<const char*, 5> kSonineColumns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
                                                     "density_heat_coefficient", "cooling_rate_first_order"};
@@ -147,7 +155,8 @@ class RoughModel final : public TransportModel {
            "rate, cumulants a20, a02, a11 and a_pq to p + q = 4), Maxwellian or Sonine orders 1-3 (linear or "
            "nonlinear); shear and bulk viscosity, thermal conductivity, density heat coefficient, first-order "
            "cooling rate at first Sonine or Sonine order up to 8 (translation x spin Sonine products, Maxwellian "
-           "reference); translation-rotation "
+           "reference; with reference_state = hcs about the Sonine HCS and its cumulants, order up to 4); "
+           "translation-rotation "
            "correlation (3D; first approximation at order 1, from the oriented Sonine HCS at orders 2-3); "
            "linear stability of the homogeneous cooling state";
   }
@@ -179,6 +188,22 @@ class RoughModel final : public TransportModel {
                                 "linear scheme has no root, or Sonine with all products of cumulants (nonlinear); "
                                 "order N keeps a_pq with p + q <= N + 1",
                                 {"linear", "maxwellian", "linear-or-maxwellian", "nonlinear"}));
+    specs.push_back(
+        choice_spec("reference_state",
+                    "f0 of the Navier-Stokes columns: Maxwellians at the Maxwellian theta (default), or the "
+                    "isotropic Sonine HCS of `hcs` (linear or nonlinear) with its theta, cooling rate and "
+                    "cumulants a_pq, p + q <= hcs_order",
+                    {"maxwellian", "hcs"}));
+    specs.push_back({"hcs_order",
+                     ParameterSpec::Kind::integer,
+                     Rational(2),
+                     Rational(kMaxRoughReferenceDegree),
+                     true,
+                     true,
+                     Rational(2),
+                     "highest total degree p + q of the HCS cumulants a_pq carried into f0 (reference_state = hcs; "
+                     "2: a20, a02, a11)",
+                     {}});
     return specs;
   }
   /// The HCS columns take orders 1 … kMaxRoughHcsOrder, the Navier–Stokes columns 1 … kMaxRoughOrder; C and
@@ -219,6 +244,21 @@ class RoughModel final : public TransportModel {
     // the oriented Sonine HCS's (§19.14, linear or nonlinear); the stability values are first approximations.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     const bool hcs_sonine = scheme == "nonlinear" || !first;
+    // reference_state = "hcs": the five Navier–Stokes columns about the Sonine HCS of `hcs` (3D linear: oriented) with
+    // its cumulants a_pq, p + q ≤ hcs_order (theory.md §19.16), at every order including 1 (with its error).
+    const bool cumulant_reference = SchemaPoint(specs, point).choice("reference_state") == "hcs";
+    if (point.numbers.contains("hcs_order") && !cumulant_reference)
+      throw std::invalid_argument(
+          "hcs_order: needs reference_state = \"hcs\" (the cumulants carried into f0 of the Navier-Stokes columns)");
+    if (cumulant_reference && scheme != "linear" && scheme != "nonlinear")
+      throw std::invalid_argument(
+          "reference_state: \"hcs\" needs hcs = \"linear\" or \"nonlinear\" (the Sonine HCS "
+          "whose cumulants f0 carries), got hcs = \"" +
+          scheme + "\"");
+    const auto& critical = stability_coefficient_names();
+    const auto is_critical = [&critical](const std::string& c) {
+      return std::find(critical.begin(), critical.end(), c) != critical.end();
+    };
     for (const auto& name : coefficients) {
       if (is_orientation_column(name)) {
         if (d != 3)
@@ -243,16 +283,22 @@ class RoughModel final : public TransportModel {
                                       std::to_string(kMaxRoughHcsOrder) + ", got " + std::to_string(order.order));
         continue;
       }
+      if (cumulant_reference && is_sonine_column(name)) {
+        if (!order.tolerance && order.order > kMaxRoughReferenceOrder)
+          throw std::invalid_argument("order: " + name +
+                                      " of model rough with reference_state = \"hcs\" takes orders 1 to " +
+                                      std::to_string(kMaxRoughReferenceOrder) + ", got " + std::to_string(order.order));
+        continue;
+      }
+      if (cumulant_reference && is_critical(name))
+        throw std::invalid_argument("reference_state: " + name +
+                                    " is computed about the Maxwellian HCS only; use reference_state = \"maxwellian\"");
       if (!first && !is_sonine_column(name))
         throw std::invalid_argument("coefficients: " + name +
                                     " of model rough is computed at order 1 only; use order = 1 without tolerance, "
                                     "or ask for the HCS columns or shear_viscosity, bulk_viscosity, "
                                     "thermal_conductivity, density_heat_coefficient, cooling_rate_first_order");
     }
-    const auto& critical = stability_coefficient_names();
-    const auto is_critical = [&critical](const std::string& c) {
-      return std::find(critical.begin(), critical.end(), c) != critical.end();
-    };
     // The first-approximation state of the scheme, only for first-approximation HCS columns (the transport and
     // stability values use the Maxwellian state whatever `hcs`, §19.7, §19.15).
     RoughCoolingState s;
@@ -278,11 +324,48 @@ class RoughModel final : public TransportModel {
     HcsSonineStates hcs_states(d, alpha, beta, kappa,
                                linear_sonine ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
                                oriented ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic);
+    // The cumulant degree of the reference: hcs_order, or with a tolerance and no hcs_order the smallest degree K whose
+    // HCS (order K − 1) differs from the next (order K) by less than the tolerance in θ, ζ*, a20, a02, a11 (else the
+    // closest, and the Navier–Stokes values are flagged not converged).
+    int reference_degree = static_cast<int>(SchemaPoint(specs, point).number("hcs_order").to_double());
+    bool reference_converged = true;
+    const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
+    const bool wants_reference =
+        cumulant_reference && std::any_of(coefficients.begin(), coefficients.end(), is_sonine_column);
+    if (wants_reference && tolerance && !point.numbers.contains("hcs_order")) {
+      HcsSonineStates states(d, alpha, beta, kappa,
+                             linear_sonine ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
+                             reference_ansatz(d, linear_sonine));
+      double closest = std::numeric_limits<double>::infinity();
+      reference_converged = false;
+      for (int k = 2; k <= kMaxRoughReferenceDegree; ++k) {
+        const double step = hcs_step(states.at(k - 1), states.at(k));
+        if (step < closest) closest = step, reference_degree = k;
+        if (step < tolerance->to_double()) {
+          reference_converged = true;
+          break;
+        }
+      }
+    }
     std::optional<HcsStability> stability;
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
       if ((hcs_sonine && is_hcs_column(name)) || (!first && is_orientation_column(name))) {
         out.push_back(hcs_sonine_value(hcs_states, name, order));
+        continue;
+      }
+      if (cumulant_reference && is_sonine_column(name)) {  // theory.md §19.16 about the Sonine HCS, error (6.1)
+        const int tables = order.tolerance ? kMaxRoughReferenceOrder + 2 : order.order + 2;
+        CoefficientValue v =
+            choose_order(order, kMaxRoughReferenceOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
+              const auto at = [&](int m) {
+                return pick_transport(
+                    reference_values(d, alpha, beta, kappa, linear_sonine, reference_degree, m, tables), name);
+              };
+              return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
+            });
+        v.converged = v.converged && reference_converged;
+        out.push_back(v);
         continue;
       }
       if (!first && is_sonine_column(name)) {  // theory.md §19.16, error (6.1) from orders N + 1, N + 2
@@ -409,7 +492,68 @@ class RoughModel final : public TransportModel {
     return entry.values[n] = entry.transport->at_maxwellian_state(n);
   }
 
+  /// Returns the ansatz of the reference HCS: the one of the HCS columns (oriented in the linear scheme in 3D, whose
+  /// b_pq the reference carries; isotropic otherwise, theory.md §19.14).
+  static RoughSonineAnsatz reference_ansatz(int d, bool linear) {
+    return linear && d == 3 ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic;
+  }
+
+  /// Returns the largest change of θ, ζ*, a20, a02, a11 between two Sonine HCS orders (ζ*, a20 alone at β = −1;
+  /// +inf where either has no solution).
+  static double hcs_step(const RoughSonineCoolingState& a, const RoughSonineCoolingState& b) {
+    std::vector<std::array<double, 2>> pairs{{a.cooling_rate, b.cooling_rate}, {a.cumulant(2, 0), b.cumulant(2, 0)}};
+    if (!a.spin_decoupled)
+      for (const auto& pq : {std::array<int, 2>{0, 2}, std::array<int, 2>{1, 1}})
+        pairs.push_back({a.cumulant(pq[0], pq[1]), b.cumulant(pq[0], pq[1])});
+    if (!a.spin_decoupled) pairs.push_back({a.temperature_ratio, b.temperature_ratio});
+    double step = 0;
+    for (const auto& [x, y] : pairs) {
+      if (!std::isfinite(x) || !std::isfinite(y)) return std::numeric_limits<double>::infinity();
+      step = std::max(step, std::abs(x - y));
+    }
+    return step;
+  }
+
+  /// The tables of one (d, α, β, κ, scheme, cumulant degree) about the Sonine HCS and the values solved so far.
+  struct RoughReferenceEntry {
+    RoughSonineCoolingState hcs;
+    std::unique_ptr<RoughSonineTransport> transport;
+    std::map<int, RoughTransportValues> values;
+  };
+
+  /// Returns the Navier–Stokes values of order n about the Sonine HCS of order degree − 1 (theory.md §19.16; in 3D
+  /// with the linear scheme the oriented one, its b_pq carried); NaN where that HCS has no solution. The tables are
+  /// built once to `tables` (≥ n).
+  RoughTransportValues reference_values(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                                        bool linear, int degree, int n, int tables) {
+    if (reference_.size() > 16) reference_.clear();  // bound memory in long sweeps (never mid-evaluation)
+    const std::string key = std::to_string(d) + "|" + alpha.to_string() + "|" + beta.to_string() + "|" +
+                            kappa.to_string() + "|" + (linear ? "linear" : "nonlinear") + "|" + std::to_string(degree);
+    auto it = reference_.find(key);
+    if (it == reference_.end()) {
+      RoughReferenceEntry e;
+      e.hcs = rough_sonine_cooling_state(d, alpha, beta, kappa, degree - 1,
+                                         linear ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
+                                         reference_ansatz(d, linear));
+      it = reference_.emplace(key, std::move(e)).first;
+    }
+    RoughReferenceEntry& entry = it->second;
+    if (const auto v = entry.values.find(n); v != entry.values.end()) return v->second;
+    if (!entry.hcs.solved) {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      return entry.values[n] = RoughTransportValues{nan, nan, nan, nan, nan, nan, nan};
+    }
+    if (!entry.transport || entry.transport->highest_order() < n) {
+      const bool oriented = std::any_of(entry.hcs.orientation_coefficients.begin(),
+                                        entry.hcs.orientation_coefficients.end(), [](double b) { return b != 0; });
+      entry.transport =
+          std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, std::max(n, tables), degree, oriented);
+    }
+    return entry.values[n] = entry.transport->at_cooling_state(n, entry.hcs);
+  }
+
   std::map<std::string, RoughSonineEntry> sonine_;
+  std::map<std::string, RoughReferenceEntry> reference_;
 };
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "gkt/algebra/sonine.hpp"
 #include "gkt/collision/rough_collision_moments.hpp"
+#include "transport/rough/rough_weighted_elements.hpp"
 
 namespace gkt::detail {
 
@@ -16,72 +17,9 @@ namespace {
 
 using S = RoughSlot;
 
-int rotational_dimension(int d) { return d == 3 ? 3 : 1; }
+int rotational_dimension(int d) { return rough_rotational_dimension(d); }
 
-/// ⟨T_r:T_r⟩/x^r over directions: 1, 1, (d − 1)/d for r = 0, 1, 2 (Y_2:Y_2 = (1 − 1/d) x², theory.md §4).
-Rational contraction_weight(int d, int rank) {
-  return rank == 2 ? Rational(d - 1, static_cast<unsigned long>(d)) : Rational(1);
-}
-
-/// A dense 4-index array of exact polynomials, each index 0 … K.
-class Table4 {
- public:
-  explicit Table4(int k) : n_(k + 1), v_(static_cast<std::size_t>(n_ * n_ * n_ * n_)) {}
-  RationalPolynomial& operator()(int a, int b, int c, int e) { return v_[index(a, b, c, e)]; }
-  const RationalPolynomial& operator()(int a, int b, int c, int e) const { return v_[index(a, b, c, e)]; }
-  std::vector<RationalPolynomial> release() { return std::move(v_); }
-
- private:
-  [[nodiscard]] std::size_t index(int a, int b, int c, int e) const {
-    return static_cast<std::size_t>(((a * n_ + b) * n_ + c) * n_ + e);
-  }
-  int n_;
-  std::vector<RationalPolynomial> v_;
-};
-
-/// acc += c·x.
-void add_scaled(RationalPolynomial& acc, const RationalPolynomial& x, const Rational& c) {
-  if (x.is_zero() || c.is_zero()) return;
-  RationalPolynomial t = x;
-  t *= c;
-  acc += t;
-}
-
-/// Returns p·λ^n.
-RationalPolynomial shifted(const RationalPolynomial& p, long n) {
-  RationalPolynomial out;
-  fmpq_poly_shift_left(out.raw(), p.raw(), n);
-  return out;
-}
-
-/// Contracts t(i, j, k, l) (trial powers i of x, j of y; test powers k, l; i + j, k + l ≤ k) with the Sonine
-/// coefficients one index at a time: E(p, q, p', q') = Σ s_p(i) t_q(j) s_p'(k) t_q'(l) t(i, j, k, l).
-Table4 contract(const Table4& t, int k, long twice_m, long twice_m_spin) {
-  const auto s = sonine_table(twice_m, k);
-  const auto r = sonine_table(twice_m_spin, k);
-  Table4 u1(k), u2(k), u3(k), e(k);
-  for (int p = 0; p <= k; ++p)
-    for (int j = 0; p + j <= k; ++j)
-      for (int a = 0; a <= k; ++a)
-        for (int b = 0; a + b <= k; ++b)
-          for (int i = 0; i <= p; ++i) add_scaled(u1(p, j, a, b), t(i, j, a, b), s[p][i]);
-  for (int p = 0; p <= k; ++p)
-    for (int q = 0; p + q <= k; ++q)
-      for (int a = 0; a <= k; ++a)
-        for (int b = 0; a + b <= k; ++b)
-          for (int j = 0; j <= q; ++j) add_scaled(u2(p, q, a, b), u1(p, j, a, b), r[q][j]);
-  for (int p = 0; p <= k; ++p)
-    for (int q = 0; p + q <= k; ++q)
-      for (int pt = 0; pt <= k; ++pt)
-        for (int b = 0; pt + b <= k; ++b)
-          for (int a = 0; a <= pt; ++a) add_scaled(u3(p, q, pt, b), u2(p, q, a, b), s[pt][a]);
-  for (int p = 0; p <= k; ++p)
-    for (int q = 0; p + q <= k; ++q)
-      for (int pt = 0; pt <= k; ++pt)
-        for (int qt = 0; pt + qt <= k; ++qt)
-          for (int b = 0; b <= qt; ++b) add_scaled(e(p, q, pt, qt), u3(p, q, pt, b), r[qt][b]);
-  return e;
-}
+Rational contraction_weight(int d, int rank) { return rough_contraction_weight(d, rank); }
 
 /// Returns the table ⟨(c_a·c_b)^r X_a^i Y_a^j X_b^k Y_b^l⟩/⟨1⟩ of one slot pair (r ≤ 2; i + j, k + l ≤ K).
 RoughCollisionMoments<RationalPolynomial> pair_table(const RoughCollisionParameters<RationalPolynomial>& p, S va, S wa,
@@ -150,6 +88,18 @@ RoughGalerkinSystem system_of(const RoughCollisionElements& elements, const Roug
   for (std::size_t p = 0; p < n; ++p) {
     for (std::size_t q = 0; q < n; ++q) {
       s.collision[p][q] = elements.element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q, state.tau);
+      if (state.reference) {  // about f_M(1 + Φ): Σ_w a_w W^{(w)} (rough_weighted_elements.hpp)
+        const RoughCumulantReference& r = *state.reference;
+        for (std::size_t w = 0; w < r.indices.size(); ++w)
+          s.collision[p][q] +=
+              r.cumulants[w] * r.elements->element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q,
+                                                   r.indices[w][0], r.indices[w][1], state.tau);
+        for (std::size_t w = 0; w < r.orientation_indices.size(); ++w)
+          s.collision[p][q] +=
+              r.orientation_coefficients[w] *
+              r.elements->orientation_element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q,
+                                              r.orientation_indices[w][0], r.orientation_indices[w][1], state.tau);
+      }
       s.cooling[p][q] = rough_maxwell_scaling_product(state.dimension, basis[p], basis[q]).to_double();
       s.product[p][q] = rough_maxwell_product(state.dimension, basis[p], basis[q]).to_double();
     }
@@ -172,6 +122,22 @@ std::vector<double> projections(int d, double c0, double cx, double cy, const st
   return out;
 }
 
+using Coefficients = std::vector<Rational>;
+
+/// Returns x·s(x) (coefficients of powers).
+Coefficients times_x(const Coefficients& s) {
+  Coefficients out(s.size() + 1, Rational(0));
+  for (std::size_t i = 0; i < s.size(); ++i) out[i + 1] = s[i];
+  return out;
+}
+
+/// Returns c0 s + c1 x s'(x) (coefficients of powers).
+Coefficients with_degree(const Coefficients& s, const Rational& c0, const Rational& c1) {
+  Coefficients out(s.size(), Rational(0));
+  for (std::size_t i = 0; i < s.size(); ++i) out[i] = s[i] * (c0 + c1 * Rational(static_cast<long>(i)));
+  return out;
+}
+
 double dot(const std::vector<double>& a, const std::vector<double>& b) {
   double s = 0;
   for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
@@ -187,6 +153,52 @@ RoughMatrix combine(const RoughGalerkinSystem& s, double c_g, double c_n) {
 }
 
 }  // namespace
+
+int rough_rotational_dimension(int d) { return d == 3 ? 3 : 1; }
+
+Rational rough_contraction_weight(int d, int rank) {
+  return rank == 2 ? Rational(d - 1, static_cast<unsigned long>(d)) : Rational(1);
+}
+
+void add_scaled(RationalPolynomial& acc, const RationalPolynomial& x, const Rational& c) {
+  if (x.is_zero() || c.is_zero()) return;
+  RationalPolynomial t = x;
+  t *= c;
+  acc += t;
+}
+
+RationalPolynomial shifted_by(const RationalPolynomial& p, long n) {
+  RationalPolynomial out;
+  fmpq_poly_shift_left(out.raw(), p.raw(), n);
+  return out;
+}
+
+RoughTable4 contract_sonine(const RoughTable4& t, int k, long twice_m, long twice_m_spin) {
+  const auto s = sonine_table(twice_m, k);
+  const auto r = sonine_table(twice_m_spin, k);
+  RoughTable4 u1(k), u2(k), u3(k), e(k);
+  for (int p = 0; p <= k; ++p)
+    for (int j = 0; p + j <= k; ++j)
+      for (int a = 0; a <= k; ++a)
+        for (int b = 0; a + b <= k; ++b)
+          for (int i = 0; i <= p; ++i) add_scaled(u1(p, j, a, b), t(i, j, a, b), s[p][i]);
+  for (int p = 0; p <= k; ++p)
+    for (int q = 0; p + q <= k; ++q)
+      for (int a = 0; a <= k; ++a)
+        for (int b = 0; a + b <= k; ++b)
+          for (int j = 0; j <= q; ++j) add_scaled(u2(p, q, a, b), u1(p, j, a, b), r[q][j]);
+  for (int p = 0; p <= k; ++p)
+    for (int q = 0; p + q <= k; ++q)
+      for (int pt = 0; pt <= k; ++pt)
+        for (int b = 0; pt + b <= k; ++b)
+          for (int a = 0; a <= pt; ++a) add_scaled(u3(p, q, pt, b), u2(p, q, a, b), s[pt][a]);
+  for (int p = 0; p <= k; ++p)
+    for (int q = 0; p + q <= k; ++q)
+      for (int pt = 0; pt <= k; ++pt)
+        for (int qt = 0; pt + qt <= k; ++qt)
+          for (int b = 0; b <= qt; ++b) add_scaled(e(p, q, pt, qt), u3(p, q, pt, b), r[qt][b]);
+  return e;
+}
 
 RoughTrialFunction rough_sonine_function(int dimension, int rank, int p, int q) {
   return {rank, p, q, sonine_coefficients(sonine_twice_m(dimension, rank), p),
@@ -207,6 +219,21 @@ Rational rough_maxwell_scaling_product(int d, const RoughTrialFunction& a, const
   return contraction_weight(d, a.rank) *
          (one_dimensional(b.s, a.s, d, a.rank, a.rank, 2) * one_dimensional(b.l, a.l, dr, 0, 1, 0) +
           one_dimensional(b.s, a.s, d, a.rank, 1, 0) * one_dimensional(b.l, a.l, dr, 0, 0, 2));
+}
+
+double rough_reference_average(int d, const std::vector<Rational>& s, const std::vector<Rational>& l,
+                               const RoughCumulantReference* reference) {
+  const long dr = rotational_dimension(d);
+  const Coefficients one{Rational(1)};
+  double sum = (one_dimensional(s, one, d, 0, 1, 0) * one_dimensional(l, one, dr, 0, 1, 0)).to_double();
+  if (!reference) return sum;
+  for (std::size_t w = 0; w < reference->indices.size(); ++w) {
+    const auto [p, q] = reference->indices[w];
+    sum += reference->cumulants[w] * (one_dimensional(s, sonine_coefficients(sonine_twice_m(d, 0), p), d, 0, 1, 0) *
+                                      one_dimensional(l, sonine_coefficients(dr - 2, q), dr, 0, 1, 0))
+                                         .to_double();
+  }
+  return sum;
 }
 
 RoughCollisionElements::RoughCollisionElements(const RoughCollisionParameters<RationalPolynomial>& parameters,
@@ -231,7 +258,7 @@ RoughCollisionElements::RoughCollisionElements(const RoughCollisionParameters<Ra
       return v;
     };
     const int top = rank == 2 ? k - 1 : k;
-    Table4 t(k);
+    RoughTable4 t(k);
     for (int i = 0; i <= top; ++i)
       for (int j = 0; i + j <= top; ++j)
         for (int a = 0; a <= top; ++a)
@@ -241,11 +268,11 @@ RoughCollisionElements::RoughCollisionElements(const RoughCollisionParameters<Ra
             v -= cross(post, i, j, a, b);
             v += cross(other, i, j, a, b);
             v -= cross(other_post, i, j, a, b);
-            t(i, j, a, b) = shifted(v, 2L * (2 * k - j - b));
+            t(i, j, a, b) = shifted_by(v, 2L * (2 * k - j - b));
           }
     auto& out = contracted_[static_cast<std::size_t>(rank)];
     for (const RationalPolynomial& e :
-         contract(t, top, sonine_twice_m(d, rank), rotational_dimension(d) - 2).release()) {
+         contract_sonine(t, top, sonine_twice_m(d, rank), rotational_dimension(d) - 2).release()) {
       // e = λ^{4K} × element, even in λ: Σ_j e_{2j} τ^{j − 2K}.
       std::vector<long double> c;
       for (long j = 0; j <= e.degree(); j += 2) c.push_back(static_cast<long double>(e.coefficient(j).to_double()));
@@ -287,29 +314,47 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
   const double dd = d, dr = rotational_dimension(d);
   const bool decoupled = std::isinf(theta);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  // Maxwellian cooling rate in engine units, z = (4/(d+2))ζ* = −(2/d)⟨Δc1²⟩ (theory.md (19.12)); the scalar element
-  // ⟨S_1, 𝓛 1⟩ = 2⟨S_1(x1) − S_1(x1')⟩ = 2⟨Δc1²⟩.
-  const double z = -(1.0 / dd) * elements.element(0, 1, 0, 0, 0, state.tau);
+  const RoughCumulantReference* ref = state.reference;
+  // Cooling rate in engine units, z = (4/(d+2))ζ*: the reference HCS's, or the Maxwellian one at θ, z = −(2/d)⟨Δc1²⟩
+  // (theory.md (19.12)), the scalar element ⟨S_1, 𝓛 1⟩ = 2⟨S_1(x1) − S_1(x1')⟩ = 2⟨Δc1²⟩.
+  const double z = ref ? 4 / (dd + 2) * ref->cooling_rate : -(1.0 / dd) * elements.element(0, 1, 0, 0, 0, state.tau);
+  // ⟨s(x) l(y)⟩ over f0 (the Maxwellian or the cumulant reference, theory.md (19.44)).
+  const auto average = [d, ref](const Coefficients& sx, const Coefficients& ly) {
+    return rough_reference_average(d, sx, ly, ref);
+  };
+  const Rational rd(d);
   RoughTransportValues out;
 
-  // Shear: (L − (z/2)G + (z/2)N) a = b, b_p = ⟨ψ_p:Y2⟩/⟨Y2:Y2⟩, η* = (d − 1) bᵀa (theory.md (19.41)).
+  // Shear: (L − (z/2)G + (z/2)N) a = b, η* = (d − 1) b⁰ᵀa, b⁰_p = ⟨ψ_p:Y2⟩/⟨Y2:Y2⟩ (the flux) and the source
+  // b_p = ½(1 − 1/d)⟨x[(d + 2)F + 2xF_x] f0⟩/⟨Y2:Y2⟩ for ψ_p = Y2 F, equal to b⁰_p about Maxwellians (theory.md
+  // (19.41), (19.44)).
   {
     const RoughGalerkinSystem s = rough_tensor_system(elements, state, order);
     const RoughTrialFunction y2 = rough_sonine_function(d, 2, 0, 0);
     const double norm = rough_maxwell_product(d, y2, y2).to_double();
-    std::vector<double> b = projections(d, 1, 0, 0, s.basis);
-    for (double& x : b) x /= norm;
-    out.shear_viscosity = (dd - 1) * dot(b, solve_linear(combine(s, -z / 2, z / 2), b));
+    std::vector<double> flux = projections(d, 1, 0, 0, s.basis), source;
+    for (double& x : flux) x /= norm;
+    for (const auto& psi : s.basis)
+      source.push_back((1 - 1 / dd) / 2 * average(times_x(with_degree(psi.s, rd + 2, Rational(2))), psi.l) / norm);
+    out.shear_viscosity = (dd - 1) * dot(flux, solve_linear(combine(s, -z / 2, z / 2), source));
   }
 
-  // Heat: (L − (z/2)(G + N)) x = ⟨ψ_p·(ψ1 + ψ2)⟩, (L − (z/2)G) y = z N x; fluxes ⟨c(x + θy)·ψ_q⟩ against the smooth
-  // elastic n1²/(d − 1), n1 = d(d+2)/4 (theory.md (19.42)).
+  // Heat: (L − (z/2)(G + N)) x = A, (L − (z/2)G) y = z N x + B; fluxes ⟨c(x + θy)·ψ_q⟩ against the smooth elastic
+  // n1²/(d − 1), n1 = d(d+2)/4 (theory.md (19.42)). For ψ_p = c F: A_p = ⟨[½ C·∂_C(xF) − ½(d + 2x∂_x)F] f0⟩ and
+  // B_p = ⟨[xF − ½(d + 2x∂_x)F] f0⟩ ((19.44); about Maxwellians A_p = ⟨ψ_p·(ψ1 + ψ2)⟩ and B = 0).
   {
     const RoughGalerkinSystem s = rough_vector_system(elements, state, order);
-    const auto drive = projections(d, -(dd + 2) / 2 - dr / 2, 1, 1, s.basis);
+    std::vector<double> drive, density;
+    for (const auto& psi : s.basis) {
+      const Coefficients xs = times_x(psi.s), half = with_degree(psi.s, rd / 2, Rational(1));
+      const double a = average(with_degree(xs, Rational(0), Rational(1)), psi.l) +
+                       average(xs, with_degree(psi.l, Rational(0), Rational(1))) - average(half, psi.l);
+      drive.push_back(a);
+      density.push_back(ref ? average(xs, psi.l) - average(half, psi.l) : 0.0);
+    }
     const auto x = solve_linear(combine(s, -z / 2, -z / 2), drive);
     std::vector<double> coupling(x.size());
-    for (std::size_t p = 0; p < x.size(); ++p) coupling[p] = z * dot(s.product[p], x);
+    for (std::size_t p = 0; p < x.size(); ++p) coupling[p] = z * dot(s.product[p], x) + density[p];
     const auto y = solve_linear(combine(s, -z / 2, 0), coupling);
     const auto translational = projections(d, 0, 1, 0, s.basis);
     const auto rotational = projections(d, 0, 0, 1, s.basis);
@@ -320,9 +365,10 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
     out.density_heat_coefficient = decoupled ? nan : (dot(translational, y) + theta * dot(rotational, y)) / reference;
   }
 
-  // Scalar: unknowns a_q and ζ_U; rows (L − (z/2)G + (z/2)N) a − (4/(d+2))⟨ψ_p H⟩ζ_U = −(4/(d+2))⟨ψ_p s⟩ with
-  // H = (x − d/2) + (y − d_r/2), s = (2/d)(x − d/2) − (2/(d + d_rθ))H, and zero total energy ⟨(x + θy) f1⟩ = 0;
-  // η_b* = −(2/d)⟨x f1⟩ (theory.md (19.43)).
+  // Scalar: unknowns a_q and ζ_U; rows (L − (z/2)G + (z/2)N) a − (4/(d+2)) h_p ζ_U = (4/(d+2))(split h_p − (2/d) e_p)
+  // with h_p = ½⟨(C·∂_C ψ_p) f0⟩, e_p = ½⟨(c·∂_c ψ_p) f0⟩, split = 2/(d + d_rθ), and zero total energy
+  // ⟨(x + θy) f1⟩ = 0; η_b* = −(2/d)⟨x f1⟩ (theory.md (19.43), (19.44); about Maxwellians h_p = ⟨ψ_p H⟩,
+  // e_p = ⟨ψ_p (x − d/2)⟩).
   if (decoupled) {
     out.bulk_viscosity = out.cooling_rate_first_order = nan;
     return out;
@@ -330,13 +376,14 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
   const RoughGalerkinSystem s = rough_scalar_system(elements, state, order);
   const std::size_t n = s.basis.size();
   const double split = 2 / (dd + dr * theta), scale = 4 / (dd + 2);
-  const auto h = projections(d, -dd / 2 - dr / 2, 1, 1, s.basis);
-  const auto source = projections(d, -1 + split * (dd + dr) / 2, 2 / dd - split, -split, s.basis);
   RoughMatrix a = combine(s, -z / 2, z / 2);
   std::vector<double> rhs(n + 1, 0.0);
   for (std::size_t p = 0; p < n; ++p) {
-    a[p].push_back(-scale * h[p]);
-    rhs[p] = -scale * source[p];
+    const auto& psi = s.basis[p];
+    const double e = average(with_degree(psi.s, Rational(0), Rational(1)), psi.l);
+    const double h = e + average(psi.s, with_degree(psi.l, Rational(0), Rational(1)));
+    a[p].push_back(-scale * h);
+    rhs[p] = scale * (split * h - (2 / dd) * e);
   }
   a.push_back(projections(d, 0, 1, theta, s.basis));
   a.back().push_back(0.0);

@@ -1,11 +1,13 @@
 #include "gkt/transport/rough/rough_sonine_transport.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "transport/rough/rough_sonine_systems.hpp"
+#include "transport/rough/rough_weighted_elements.hpp"
 
 namespace gkt {
 
@@ -15,6 +17,7 @@ struct RoughSonineTransport::Tables {
   double hcs_temperature_ratio = 1;
   Rational kappa;
   detail::RoughCollisionElements elements;
+  std::unique_ptr<detail::RoughWeightedCollisionElements> weighted;  ///< null without cumulant tables
 };
 
 RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
@@ -24,7 +27,19 @@ RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha,
   const RoughCoolingState hcs =
       rough_homogeneous_cooling_state(dimension, alpha, beta, kappa, RoughHcsScheme::maxwellian);
   tables_ = std::unique_ptr<Tables>(new Tables{dimension, hcs.spin_decoupled, hcs.temperature_ratio, kappa,
-                                               detail::RoughCollisionElements(p, highest_order)});
+                                               detail::RoughCollisionElements(p, highest_order), nullptr});
+}
+
+RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
+                                           const Rational& kappa, int highest_order, int cumulant_degree,
+                                           bool orientation)
+    : RoughSonineTransport(dimension, alpha, beta, kappa, highest_order) {
+  if (cumulant_degree < 2) throw std::invalid_argument("cumulant_degree: must be an integer >= 2");
+  if (orientation && dimension != 3)
+    throw std::invalid_argument("orientation: the b_pq terms need dimension = 3 (c.w vanishes for disks)");
+  tables_->weighted = std::make_unique<detail::RoughWeightedCollisionElements>(
+      rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa), highest_order, cumulant_degree,
+      orientation);
 }
 
 RoughSonineTransport::~RoughSonineTransport() = default;
@@ -32,6 +47,41 @@ RoughSonineTransport::RoughSonineTransport(RoughSonineTransport&&) noexcept = de
 RoughSonineTransport& RoughSonineTransport::operator=(RoughSonineTransport&&) noexcept = default;
 
 int RoughSonineTransport::highest_order() const { return tables_->elements.highest_order(); }
+
+int RoughSonineTransport::cumulant_degree() const { return tables_->weighted ? tables_->weighted->weight_degree() : 0; }
+
+RoughTransportValues RoughSonineTransport::at_cooling_state(int order, const RoughSonineCoolingState& hcs) const {
+  const Tables& t = *tables_;
+  if (order < 1 || order > highest_order())
+    throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(highest_order()) + "]");
+  if (!hcs.solved) throw std::invalid_argument("hcs: the Sonine HCS has no solution at this state");
+  if (hcs.spin_decoupled != t.spin_decoupled)
+    throw std::invalid_argument("hcs: the Sonine HCS is of another state (spin decoupled or not)");
+  if (!t.weighted) throw std::invalid_argument("hcs: the tables were built without cumulant_degree");
+  const bool oriented = std::any_of(hcs.orientation_coefficients.begin(), hcs.orientation_coefficients.end(),
+                                    [](double b) { return b != 0; });
+  if (oriented && !t.weighted->oriented())
+    throw std::invalid_argument("hcs: orientation terms b_pq without the orientation tables (build with orientation)");
+  detail::RoughCumulantReference reference{t.weighted.get(), hcs.indices, hcs.cumulants, {}, {}, hcs.cooling_rate};
+  if (oriented) {
+    reference.orientation_indices = hcs.orientation_indices;
+    reference.orientation_coefficients = hcs.orientation_coefficients;
+    for (const auto& [p, q] : hcs.orientation_indices)
+      if (p + q + 2 > cumulant_degree())
+        throw std::invalid_argument("hcs: orientation coefficient b" + std::to_string(p) + std::to_string(q) +
+                                    " above the weighted tables' degree " + std::to_string(cumulant_degree()));
+  }
+  for (const auto& [p, q] : hcs.indices)
+    if (p + q > cumulant_degree())
+      throw std::invalid_argument("hcs: cumulant a" + std::to_string(p) + std::to_string(q) +
+                                  " above the weighted tables' degree " + std::to_string(cumulant_degree()));
+  const double theta = hcs.temperature_ratio;
+  const bool decoupled = std::isinf(theta);
+  if (decoupled != t.spin_decoupled || !(theta > 0))
+    throw std::invalid_argument("hcs: temperature_ratio must be > 0 and finite (+inf only at beta = -1)");
+  const detail::RoughModeState state{t.dimension, decoupled ? 1.0 : theta / t.kappa.to_double(), decoupled, &reference};
+  return detail::solve_rough_navier_stokes(t.elements, state, order, theta);
+}
 
 RoughTransportValues RoughSonineTransport::at(int order, double temperature_ratio) const {
   const Tables& t = *tables_;
@@ -41,7 +91,8 @@ RoughTransportValues RoughSonineTransport::at(int order, double temperature_rati
   if (decoupled != t.spin_decoupled || !(temperature_ratio > 0))
     throw std::invalid_argument("temperature_ratio: must be > 0 and finite (+inf only at beta = -1)");
   // At β = −1 no translational element depends on τ (the spin decouples): any τ will do.
-  const detail::RoughModeState state{t.dimension, decoupled ? 1.0 : temperature_ratio / t.kappa.to_double(), decoupled};
+  const detail::RoughModeState state{t.dimension, decoupled ? 1.0 : temperature_ratio / t.kappa.to_double(), decoupled,
+                                     nullptr};
   return detail::solve_rough_navier_stokes(t.elements, state, order, temperature_ratio);
 }
 

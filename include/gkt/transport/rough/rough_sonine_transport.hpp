@@ -5,12 +5,15 @@
 //   scalar: S_p(c²) L_q(ŵ²), 1 ≤ p + q ≤ N (zero total energy; ζ_U the energy row's unknown),
 // every collision average exact in the rough engine with θ symbolic (one table per slot pair, shared by
 // the three modes), the Galerkin systems solved in double. Order 1 is the first-Sonine approximation of
-// rough_shear_viscosity.hpp, rough_thermal_conductivity.hpp and rough_bulk_viscosity.hpp.
+// rough_shear_viscosity.hpp, rough_thermal_conductivity.hpp and rough_bulk_viscosity.hpp. About the Sonine HCS
+// (at_cooling_state) the reference f0 carries the HCS's θ, ζ* and cumulants a_pq (theory.md §19.16, "Cumulant
+// reference"): the collision matrix gains one exact weighted table per cumulant and the sources are averages over f0.
 #pragma once
 
 #include <memory>
 
 #include "gkt/algebra/rational.hpp"
+#include "gkt/transport/rough/rough_sonine_cooling_state.hpp"
 
 namespace gkt {
 
@@ -33,6 +36,13 @@ class RoughSonineTransport {
   /// d ∉ {2, 3}, α ∉ (0, 1], β ∉ [−1, 1], κ ∉ (0, 1] or highest_order < 1.
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                        int highest_order);
+  /// As above, also building the collision elements weighted by the HCS cumulants a_pq of total degree
+  /// 2 ≤ p + q ≤ cumulant_degree (the Sonine HCS of order cumulant_degree − 1) for at_cooling_state, and with
+  /// `orientation` (3D) those weighted by the orientation terms b_pq P S_p S_q, p + q ≤ cumulant_degree − 2, of the
+  /// oriented ansatz (theory.md (19.26a)). Throws std::invalid_argument naming `cumulant_degree` below 2, or
+  /// `orientation` for d = 2.
+  RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                       int highest_order, int cumulant_degree, bool orientation = false);
   ~RoughSonineTransport();
   RoughSonineTransport(const RoughSonineTransport&) = delete;
   RoughSonineTransport& operator=(const RoughSonineTransport&) = delete;
@@ -47,6 +57,14 @@ class RoughSonineTransport {
   [[nodiscard]] RoughTransportValues at(int order, double temperature_ratio) const;
   /// Returns the same at the Maxwellian HCS θ (θ = +inf at β = −1).
   [[nodiscard]] RoughTransportValues at_maxwellian_state(int order) const;
+  /// Returns the coefficients at Sonine order `order` about the Sonine HCS `hcs` of the same (d, α, β, κ):
+  /// f0 = f_M(c) f_M(ŵ)[1 + Σ a_pq S_p(c²) S_q(ŵ²)] at its θ, with its ζ* (theory.md §19.16, (19.44)). Throws
+  /// std::invalid_argument naming `hcs` when it is not solved, carries cumulants above the weighted tables' degree
+  /// or orientation terms b_pq without the orientation tables, and `order` outside [1, highest_order]. With them
+  /// the oriented HCS (its b_pq) is carried too.
+  [[nodiscard]] RoughTransportValues at_cooling_state(int order, const RoughSonineCoolingState& hcs) const;
+  /// Returns the highest cumulant degree p + q of the weighted tables (0 without them).
+  [[nodiscard]] int cumulant_degree() const;
   /// Returns the highest order the tables allow.
   [[nodiscard]] int highest_order() const;
 
