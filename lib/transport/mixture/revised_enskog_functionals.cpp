@@ -67,6 +67,7 @@ struct Geometry {
   int d = 3;
   std::size_t s = 0;
   std::vector<double> sigma, density;
+  std::vector<double> volume_power, surface_power;  // σ_k^d and σ_k^{d−1}, computed once (the λ loop reads them)
   double v_d = 0, b2 = 0, phi = 0, y = 0;
 
   explicit Geometry(const Mixture& m) : d(m.dimension), s(m.size()) {
@@ -81,8 +82,10 @@ struct Geometry {
     const double n = m.packing_fraction / (v_d * volume);
     for (std::size_t k = 0; k < s; ++k) {
       density.push_back(n * m.species[k].fraction);
-      phi += v_d * density[k] * std::pow(sigma[k], d);
-      y += v_d * density[k] * std::pow(sigma[k], d - 1);
+      volume_power.push_back(std::pow(sigma[k], d));
+      surface_power.push_back(std::pow(sigma[k], d - 1));
+      phi += v_d * density[k] * volume_power[k];
+      y += v_d * density[k] * surface_power[k];
     }
   }
   [[nodiscard]] double pair_diameter(std::size_t i, std::size_t j) const { return 0.5 * (sigma[i] + sigma[j]); }
@@ -91,7 +94,7 @@ struct Geometry {
   }
   /// χ_jk and ∂χ_jk/∂n_l at the densities λ n_k.
   [[nodiscard]] double contact_derivative(const ContactFunction& f, std::size_t j, std::size_t k, std::size_t l) const {
-    return v_d * (f.f_phi * std::pow(sigma[l], d) + f.f_u * pair_width(j, k) * std::pow(sigma[l], d - 1));
+    return v_d * (f.f_phi * volume_power[l] + f.f_u * pair_width(j, k) * surface_power[l]);
   }
 };
 
@@ -111,8 +114,8 @@ std::vector<double> excess_hessian(const Geometry& g) {
         const double nj = lambda * g.density[j], nk = lambda * g.density[k];
         for (std::size_t i = 0; i < s; ++i)
           for (std::size_t l = 0; l < s; ++l) {
-            const double si = std::pow(g.sigma[i], d), si1 = std::pow(g.sigma[i], d - 1);
-            const double sl = std::pow(g.sigma[l], d), sl1 = std::pow(g.sigma[l], d - 1);
+            const double si = g.volume_power[i], si1 = g.surface_power[i];
+            const double sl = g.volume_power[l], sl1 = g.surface_power[l];
             const double d2chi =
                 g.v_d * g.v_d *
                 (f.f_phiphi * si * sl + f.f_phiu * a * (si * sl1 + sl * si1) + f.f_uu * a * a * si1 * sl1);
