@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -298,13 +299,18 @@ TEST(MixtureEnskog, ThermalDiffusionFactor) {
 // Galerkin order, the Onsager relation in the forces ∇(μ_i/T) (theory.md (18.12)):
 //     T D''_l/n_l − (d/2)(m_l/ρ) Σ_i D_il = Σ_i (ρ D^T_i/m_i) ∂(μ_i/T)/∂n_l.
 // Nothing in the assembly imposes it: it ties the K sources, the collisional heat flux (unequal
-// masses), p, ∂p/∂n_l and the I_lij of (18.19) together. Unequal masses and diameters.
+// masses), p, ∂p/∂n_l and the I_lij of (18.19) together. Unequal masses and diameters; binary and ternary.
 TEST(MixtureEnskog, ElasticReciprocity) {
   const double T = 1;
   for (int d : {2, 3})
     for (double phi : {0.2, 0.35})
-      for (double s2 : {1.0, 1.7}) {
-        const gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.4, ""}, {3.5, s2, 0.6, ""}}, 1.0, phi);
+      for (double s2 : {1.0, 1.7, 0.0}) {
+        // s2 = 0: a ternary with three diameters, its I_ℓij closed as in theory.md §18.12 (every
+        // closure satisfies (18.19), which is all the elastic sources see).
+        const gkt::Mixture m =
+            s2 > 0 ? gkt::make_mixture(d, {{1, 1, 0.4, ""}, {3.5, s2, 0.6, ""}}, 1.0, phi)
+                   : gkt::make_mixture(d, {{1, 1, 0.3, ""}, {3.5, 1.7, 0.45, ""}, {0.6, 0.6, 0.25, ""}}, 1.0, phi);
+        const std::size_t s = m.size();
         const gkt::MixtureNavierStokes ns(m, 3);
         const double n = number_density(m), mbar = m.mean_mass(), eta0 = reference_viscosity(m, T);
         // κ0 = (d(d+2)/(2(d−1))) η0/m̄ and D0 = (2d/(d+2)) η0/(ρ) (docs/conventions.md).
@@ -314,18 +320,78 @@ TEST(MixtureEnskog, ElasticReciprocity) {
         const auto mu = gkt::chemical_potential_derivatives(m);  // n_i ∂(μ_i/T)/∂n_l
         for (int order : {1, 3}) {
           const auto v = ns.coefficients(order);
-          for (std::size_t l = 0; l < 2; ++l) {
+          for (std::size_t l = 0; l < s; ++l) {
             const double ml = m.species[l].mass.value(), nl = n * m.species[l].fraction;
-            double lhs = v.dufour[l] * kappa0 / nl, rhs = 0;
-            for (std::size_t i = 0; i < 2; ++i) {
-              lhs -= d / 2.0 * ml / rho * v.mutual_diffusion[i * 2 + l] * n * d0;
-              rhs += rho * v.thermal_diffusion[i] * d0 / m.species[i].mass.value() * mu[i * 2 + l] /
+            double lhs = v.dufour[l] * kappa0 / nl, rhs = 0, scale = std::abs(lhs);
+            for (std::size_t i = 0; i < s; ++i) {
+              const double term = d / 2.0 * ml / rho * v.mutual_diffusion[i * s + l] * n * d0;
+              lhs -= term;
+              scale += std::abs(term);
+              rhs += rho * v.thermal_diffusion[i] * d0 / m.species[i].mass.value() * mu[i * s + l] /
                      (n * m.species[i].fraction);
             }
-            EXPECT_LT(std::abs(lhs - rhs), 1e-12 * std::abs(lhs)) << d << " " << phi << " " << s2 << " " << order;
+            // Ternary: relative to the largest term (one side may nearly cancel).
+            EXPECT_LT(std::abs(lhs - rhs), 1e-12 * (s == 2 ? std::abs(lhs) : scale))
+                << d << " " << phi << " " << s2 << " " << order << " " << l;
           }
         }
       }
+}
+
+// Species 2 and 3 identical (mass, diameter, restitution) with σ_1 ≠ σ_2: the dense ternary is the binary
+// with them merged (x_B = x_2 + x_3) at every order, α < 1 — species 1's fluxes, the summed fluxes of 2 and
+// 3 (D_2j + D_3j = D_Bj', D^T, D^p alike), the heat flux per ∇n_k (D''_k/x_k = D''_B/x_B) and the scalars.
+// Both sides carry I_ℓij: the binary its exact (18.20), the ternary the closure of theory.md §18.12 (with
+// I = 0 in the ternary D_12* misses by ~1e-2).
+TEST(MixtureEnskog, TernaryWithIdenticalSpeciesIsTheBinary) {
+  for (int d : {2, 3})
+    for (double phi : {0.1, 0.35}) {
+      gkt::Mixture two = gkt::make_mixture(d, {{1, 1, 0.3, ""}, {3, 1.7, 0.7, ""}}, 0.8, phi);
+      two.alpha = {0.9, 0.75, 0.75, 0.6};
+      gkt::Mixture three = gkt::make_mixture(d, {{1, 1, 0.3, ""}, {3, 1.7, 0.25, ""}, {3, 1.7, 0.45, ""}}, 0.8, phi);
+      three.alpha = {0.9, 0.75, 0.75, 0.75, 0.6, 0.6, 0.75, 0.6, 0.6};
+      const gkt::MixtureNavierStokes nb(two, 2), nt(three, 2);
+      const std::vector<double> x{0.3, 0.25, 0.45};
+      for (int order : {1, 2}) {
+        const auto b = nb.coefficients(order), t = nt.coefficients(order);
+        const std::string at = std::to_string(d) + " " + std::to_string(phi) + " " + std::to_string(order);
+        EXPECT_LT(relative(t.shear_viscosity, b.shear_viscosity), 1e-10) << at;
+        EXPECT_LT(relative(t.thermal_conductivity, b.thermal_conductivity), 1e-10) << at;
+        EXPECT_LT(relative(t.bulk_viscosity, b.bulk_viscosity), 1e-10) << at;
+        EXPECT_LT(relative(t.cooling_rate_first_order, b.cooling_rate_first_order), 1e-10) << at;
+        EXPECT_LT(relative(t.pressure, b.pressure), 1e-10) << at;
+        for (std::size_t j = 0; j < 3; ++j) {
+          const std::size_t jb = j == 0 ? 0 : 1;
+          EXPECT_LT(relative(t.mutual_diffusion[j], b.mutual_diffusion[jb]), 1e-10) << at << " " << j;
+          EXPECT_LT(relative(t.mutual_diffusion[3 + j] + t.mutual_diffusion[6 + j], b.mutual_diffusion[2 + jb]), 1e-10)
+              << at << " " << j;
+        }
+        EXPECT_LT(relative(t.thermal_diffusion[0], b.thermal_diffusion[0]), 1e-10) << at;
+        EXPECT_LT(relative(t.thermal_diffusion[1] + t.thermal_diffusion[2], b.thermal_diffusion[1]), 1e-10) << at;
+        EXPECT_LT(relative(t.pressure_diffusion[0], b.pressure_diffusion[0]), 1e-10) << at;
+        EXPECT_LT(relative(t.pressure_diffusion[1] + t.pressure_diffusion[2], b.pressure_diffusion[1]), 1e-10) << at;
+        EXPECT_LT(relative(t.dufour[0], b.dufour[0]), 1e-10) << at;
+        for (std::size_t k = 1; k < 3; ++k) EXPECT_LT(relative(t.dufour[k] / x[k], b.dufour[1] / 0.7), 1e-10) << at;
+      }
+    }
+}
+
+// A tracer third species (x_3 = 0 against 1e-9, three diameters, α < 1): D_ij*, D''_i*, D^T_i* continuous
+// to 1e-6 with the I_ℓij of §18.12 (the closure's rows are regular at n_3 = 0).
+TEST(MixtureEnskog, TernaryTracerLimitIsContinuous) {
+  for (int d : {2, 3}) {
+    auto at = [&](double x3) {
+      gkt::Mixture m = gkt::make_mixture(d, {{1, 1, 0.4, ""}, {2.5, 1.5, 0.6 - x3, ""}, {4, 2, x3, ""}}, 0.8, 0.3);
+      return gkt::MixtureNavierStokes(m, 2).coefficients(2);
+    };
+    const auto zero = at(0), small = at(1e-9);
+    for (std::size_t k = 0; k < 9; ++k)
+      EXPECT_LT(relative(small.mutual_diffusion[k], zero.mutual_diffusion[k]), 1e-6) << d << " " << k;
+    for (std::size_t i = 0; i < 3; ++i) {
+      EXPECT_LT(relative(small.dufour[i], zero.dufour[i]), 1e-6) << d << " " << i;
+      EXPECT_LT(relative(small.thermal_diffusion[i], zero.thermal_diffusion[i]), 1e-6) << d << " " << i;
+    }
+  }
 }
 
 // HCS stability of the dense mixture (theory.md (18.13)): identical species reproduce the

@@ -2,12 +2,14 @@
 // derivatives against second differences of a free energy computed by another route (Simpson in λ
 // of the pressure from Mixture::contact_values), Gibbs–Duhem against the solver's ∂p/∂n_l, and the
 // functionals I_ℓij: zero for equal diameters, their two binary rows antisymmetric (Gibbs–Duhem
-// again, the rows are computed separately), continuous in the tracer and dilute limits.
+// again, the rows are computed separately), continuous in the tracer and dilute limits, exact at
+// third-virial order (the Mayer lens); for three species the closures of theory.md §18.12 against
+// (18.19), the merged binary, the tracer and dilute limits and the lens.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "gkt/transport/mixture/mixture.hpp"
@@ -74,8 +76,66 @@ std::vector<double> densities(const gkt::Mixture& m) {
   return out;
 }
 
+/// Returns 2 n_j V (c − R)·σ̂/σ_ij in 3D: the first-order-in-density I_ℓij of the Mayer term (test
+/// ThirdVirialLens). Sphere A (radius σ_iℓ) at x = 0, sphere B (radius σ_jℓ) at x = σ_ij; the
+/// cross-section is quadratic on each side of the plane x0 where the spheres meet, so one Simpson panel
+/// per side integrates the volume and the first moment exactly.
+double mayer_lens_functional(double sigma_i, double sigma_j, double sigma_l, double n_j) {
+  const double distance = 0.5 * (sigma_i + sigma_j);
+  const double ra = 0.5 * (sigma_i + sigma_l), rb = 0.5 * (sigma_j + sigma_l);
+  const double x0 = (distance * distance + ra * ra - rb * rb) / (2 * distance);
+  auto area = [&](double x) {
+    return std::numbers::pi * (x < x0 ? rb * rb - (x - distance) * (x - distance) : ra * ra - x * x);
+  };
+  auto simpson = [&](double a, double b, int power) {
+    auto g = [&](double x) { return std::pow(x, power) * area(x); };
+    return (b - a) / 6 * (g(a) + 4 * g(0.5 * (a + b)) + g(b));
+  };
+  const double lo = distance - rb, hi = ra;
+  const double volume = simpson(lo, x0, 0) + simpson(x0, hi, 0);
+  const double centroid = (simpson(lo, x0, 1) + simpson(x0, hi, 1)) / volume;
+  return 2 * n_j * volume * (centroid - 0.5 * distance) / distance;
+}
+
 gkt::Mixture binary(int d, double phi, double sigma2, double x1, double alpha = 1) {
   return gkt::make_mixture(d, {{1, 1, x1, ""}, {8, sigma2, 1 - x1, ""}}, alpha, phi);
+}
+
+gkt::Mixture ternary(int d, double phi, const std::vector<double>& sigma, const std::vector<double>& x) {
+  return gkt::make_mixture(d, {{1, sigma[0], x[0], ""}, {2.5, sigma[1], x[1], ""}, {4, sigma[2], x[2], ""}}, 0.8, phi);
+}
+
+std::vector<gkt::FunctionalClosure> closures() {
+  return {gkt::FunctionalClosure::lens_centroid, gkt::FunctionalClosure::contact_point,
+          gkt::FunctionalClosure::gradient};
+}
+
+/// Returns the largest relative residual over i, ℓ of (18.19): n_i ∂(μ_i/T)/∂n_ℓ against
+/// δ_iℓ + 2B_2 n_i Σ_j σ_ij^d χ_ij [δ_jℓ + ½(n_j ∂_ℓ ln χ_ij + I_ℓij)], with the mixture's contact values and
+/// their derivatives (Mixture, not the functionals' own) and the given I (at (i·s + j)·s + ℓ).
+double chemical_potential_residual(const gkt::Mixture& m, const std::vector<double>& functionals) {
+  const int d = m.dimension;
+  const std::size_t s = m.size();
+  const auto mu = gkt::chemical_potential_derivatives(m);
+  const auto chi = m.contact_values();
+  const auto dchi = m.contact_value_derivatives();  // n ∂χ_ij/∂n_ℓ
+  const std::vector<double> n = densities(m);
+  double total = 0;
+  for (double v : n) total += v;
+  const double b2 = std::pow(std::numbers::pi, d / 2.0) / (2 * std::tgamma(d / 2.0 + 1));
+  double worst = 0;
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t l = 0; l < s; ++l) {
+      double rhs = i == l ? 1.0 : 0.0;
+      for (std::size_t j = 0; j < s; ++j) {
+        const std::size_t p = i * s + j;
+        const double sigma = 0.5 * (m.species[i].diameter + m.species[j].diameter);
+        rhs += 2 * b2 * n[i] * std::pow(sigma, d) * chi[p] *
+               ((j == l ? 1.0 : 0.0) + 0.5 * (n[j] * dchi[p * s + l] / (total * chi[p]) + functionals[p * s + l]));
+      }
+      worst = std::max(worst, std::abs(rhs - mu[i * s + l]) / std::abs(mu[i * s + l]));
+    }
+  return worst;
 }
 
 }  // namespace
@@ -163,9 +223,103 @@ TEST(RevisedEnskogFunctionals, TracerLimitIsContinuous) {
   }
 }
 
-TEST(RevisedEnskogFunctionals, RefusesMoreThanTwoSpecies) {
-  gkt::Mixture m = gkt::make_mixture(3, {{1, 1, 0.3, ""}, {4, 1.6, 0.5, ""}, {0.4, 0.7, 0.2, ""}}, 1.0, 0.3);
-  EXPECT_THROW((void)gkt::revised_enskog_functionals(m), std::invalid_argument);
+// Three or more species (theory.md §18.12): (18.19) fixes s − 1 of the s(s−1)/2 antisymmetric K_ℓij per ℓ;
+// each closure adds the gradient that makes it hold. For every closure: (18.19) to rounding for every i, ℓ
+// (I = 0 misses it by > 1e-4, so the check can fail), x_i I_ℓij + x_j I_ℓji = 0, I_ℓii = 0, values not
+// small; and the closures differ (what (18.19) leaves open is not nothing).
+TEST(RevisedEnskogFunctionals, TernaryClosuresSatisfyTheChemicalPotentials) {
+  for (int d : {2, 3})
+    for (double phi : {0.1, 0.3, 0.45})
+      for (const auto& sigma : std::vector<std::vector<double>>{{1, 1.5, 2}, {1, 0.4, 3}}) {
+        const gkt::Mixture m = ternary(d, phi, sigma, {0.3, 0.4, 0.3});
+        const std::string at = std::to_string(d) + " " + std::to_string(phi) + " " + std::to_string(sigma[1]);
+        EXPECT_GT(chemical_potential_residual(m, std::vector<double>(27, 0.0)), 1e-4) << at;
+        std::vector<std::vector<double>> all;
+        for (auto closure : closures()) {
+          const auto f = gkt::revised_enskog_functionals(m, closure);
+          EXPECT_LT(chemical_potential_residual(m, f), 1e-12) << at;
+          double largest = 0;
+          for (double v : f) largest = std::max(largest, std::abs(v));
+          EXPECT_GT(largest, 1e-3) << at;
+          for (std::size_t l = 0; l < 3; ++l)
+            for (std::size_t i = 0; i < 3; ++i) {
+              EXPECT_EQ(f[(i * 3 + i) * 3 + l], 0.0);
+              for (std::size_t j = 0; j < 3; ++j) {
+                const double xi = m.species[i].fraction, xj = m.species[j].fraction;
+                EXPECT_NEAR(xi * f[(i * 3 + j) * 3 + l] + xj * f[(j * 3 + i) * 3 + l], 0, 1e-14 * largest) << at;
+              }
+            }
+          all.push_back(f);
+        }
+        double spread = 0;
+        for (std::size_t k = 0; k < all[0].size(); ++k) spread = std::max(spread, std::abs(all[0][k] - all[2][k]));
+        EXPECT_GT(spread, 1e-4) << at;
+      }
+}
+
+// Species 2 and 3 identical (σ_1 ≠ σ_2 = σ_3) are the binary with them merged (x_B = x_2 + x_3): K_ℓ23 = 0,
+// K_ℓ12 = K_ℓ13 and ∇n_2, ∇n_3 act as ∇n_B, so I_ℓ1k = I^bin_ℓ'1B x_k/x_B (k = 2, 3), I_ℓk1 = I^bin_ℓ'B1 and
+// I_ℓ23 = 0, ℓ' the merged index. The binary is the exact (18.20), so every closure must reproduce it.
+TEST(RevisedEnskogFunctionals, TernaryWithIdenticalSpeciesIsTheBinary) {
+  for (int d : {2, 3})
+    for (double phi : {0.2, 0.4}) {
+      const std::vector<double> x{0.3, 0.25, 0.45};
+      const gkt::Mixture three = ternary(d, phi, {1, 1.7, 1.7}, x);
+      const auto b = gkt::revised_enskog_functionals(binary(d, phi, 1.7, 0.3));
+      double scale = 0;
+      for (double v : b) scale = std::max(scale, std::abs(v));
+      for (auto closure : closures()) {
+        const auto f = gkt::revised_enskog_functionals(three, closure);
+        for (std::size_t l = 0; l < 3; ++l) {
+          const std::size_t lb = l == 0 ? 0 : 1;
+          for (std::size_t k = 1; k < 3; ++k) {
+            EXPECT_NEAR(f[(0 * 3 + k) * 3 + l], b[(0 * 2 + 1) * 2 + lb] * x[k] / 0.7, 1e-10 * scale) << d << phi << l;
+            EXPECT_NEAR(f[(k * 3 + 0) * 3 + l], b[(1 * 2 + 0) * 2 + lb], 1e-10 * scale) << d << phi << l;
+          }
+          EXPECT_NEAR(f[(1 * 3 + 2) * 3 + l], 0, 1e-12 * scale) << d << phi << l;
+          EXPECT_NEAR(f[(2 * 3 + 1) * 3 + l], 0, 1e-12 * scale) << d << phi << l;
+        }
+      }
+    }
+}
+
+// Equal diameters and φ = 0 give exactly 0; I = O(φ) as φ → 0 (halving φ = 1e-3 halves I to 1 %).
+TEST(RevisedEnskogFunctionals, TernaryVanishForEqualDiametersAndDiluteGas) {
+  for (int d : {2, 3}) {
+    for (double v : gkt::revised_enskog_functionals(ternary(d, 0.3, {1.3, 1.3, 1.3}, {0.2, 0.3, 0.5})))
+      EXPECT_EQ(v, 0.0);
+    for (double v : gkt::revised_enskog_functionals(ternary(d, 0.0, {1, 1.5, 2}, {0.2, 0.3, 0.5}))) EXPECT_EQ(v, 0.0);
+    const auto small = gkt::revised_enskog_functionals(ternary(d, 1e-3, {1, 1.5, 2}, {0.2, 0.3, 0.5}));
+    const auto half = gkt::revised_enskog_functionals(ternary(d, 5e-4, {1, 1.5, 2}, {0.2, 0.3, 0.5}));
+    for (std::size_t k = 0; k < small.size(); ++k) {
+      EXPECT_LT(std::abs(small[k]), 1e-2);
+      if (small[k] != 0) {
+        EXPECT_NEAR(small[k] / half[k], 2, 0.01) << d << " " << k;
+      }
+    }
+  }
+}
+
+// A tracer third species: x_3 = 0 and 1e-9 give the same I_ℓij (1e-8); at x_3 = 0 the hosts' rows of
+// (18.19) no longer see species 3, so their I_ℓ12, I_ℓ21 (ℓ = 1, 2) are the binary's exact (18.20), the
+// I_ℓi3 vanish (they carry n_3) and the tracer's I_ℓ3j are finite and not small.
+TEST(RevisedEnskogFunctionals, TernaryTracerLimitIsContinuous) {
+  for (int d : {2, 3}) {
+    const auto zero = gkt::revised_enskog_functionals(ternary(d, 0.3, {1, 1.5, 2}, {0.4, 0.6, 0}));
+    const auto small = gkt::revised_enskog_functionals(ternary(d, 0.3, {1, 1.5, 2}, {0.4, 0.6 - 1e-9, 1e-9}));
+    for (std::size_t k = 0; k < zero.size(); ++k)
+      EXPECT_NEAR(zero[k], small[k], 1e-8 * std::max(1.0, std::abs(zero[k]))) << d << " " << k;
+    const auto b = gkt::revised_enskog_functionals(binary(d, 0.3, 1.5, 0.4));
+    for (std::size_t l = 0; l < 2; ++l) {
+      EXPECT_NEAR(zero[(0 * 3 + 1) * 3 + l], b[(0 * 2 + 1) * 2 + l], 1e-12 * std::abs(b[(0 * 2 + 1) * 2 + l])) << d;
+      EXPECT_NEAR(zero[(1 * 3 + 0) * 3 + l], b[(1 * 2 + 0) * 2 + l], 1e-12 * std::abs(b[(1 * 2 + 0) * 2 + l])) << d;
+    }
+    for (std::size_t l = 0; l < 3; ++l)
+      for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(zero[(i * 3 + 2) * 3 + l], 0.0);
+        EXPECT_GT(std::abs(zero[(2 * 3 + i) * 3 + l]), 1e-3) << d << " " << i << l;
+      }
+  }
 }
 
 // An exact, independent route in 3D. To first order in density the contact value of a non-uniform
@@ -183,26 +337,31 @@ TEST(RevisedEnskogFunctionals, ThirdVirialLens) {
     const std::vector<double> n = densities(m), sigma{1.0, sigma2};
     for (std::size_t i = 0; i < 2; ++i) {
       const std::size_t j = 1 - i;
-      const double distance = 0.5 * (sigma[i] + sigma[j]);
       for (std::size_t l = 0; l < 2; ++l) {
-        // Sphere A (radius σ_iℓ) at x = 0, sphere B (radius σ_jℓ) at x = σ_ij; the cross-section is
-        // quadratic on each side of the plane x0 where the spheres meet, so one Simpson panel per side
-        // integrates the volume and the first moment exactly.
-        const double ra = 0.5 * (sigma[i] + sigma[l]), rb = 0.5 * (sigma[j] + sigma[l]);
-        const double x0 = (distance * distance + ra * ra - rb * rb) / (2 * distance);
-        auto area = [&](double x) {
-          return std::numbers::pi * (x < x0 ? rb * rb - (x - distance) * (x - distance) : ra * ra - x * x);
-        };
-        auto simpson = [&](double a, double b, int power) {
-          auto g = [&](double x) { return std::pow(x, power) * area(x); };
-          return (b - a) / 6 * (g(a) + 4 * g(0.5 * (a + b)) + g(b));
-        };
-        const double lo = distance - rb, hi = ra;
-        const double volume = simpson(lo, x0, 0) + simpson(x0, hi, 0);
-        const double centroid = (simpson(lo, x0, 1) + simpson(x0, hi, 1)) / volume;
-        const double expected = 2 * n[j] * volume * (centroid - 0.5 * distance) / distance;
+        const double expected = mayer_lens_functional(sigma[i], sigma[j], sigma[l], n[j]);
         EXPECT_NEAR(f[(i * 2 + j) * 2 + l], expected, 1e-5 * std::abs(expected)) << sigma2 << " " << i << l;
       }
     }
   }
+}
+
+// The ternary at φ = 1e-6 (3D): the lens-centroid closure's reference is the Mayer term itself, so every
+// I_ℓij equals the lens (1e-5, the O(φ) remainder); the gradient closure misses it (> 1 % somewhere) —
+// the Mayer K_ℓij is not a gradient (K_ℓ12 + K_ℓ23 + K_ℓ31 ≠ 0), which is what (18.19) cannot see.
+TEST(RevisedEnskogFunctionals, TernaryThirdVirialLens) {
+  const gkt::Mixture m = ternary(3, 1e-6, {1, 1.5, 2}, {0.3, 0.4, 0.3});
+  const std::vector<double> n = densities(m), sigma{1, 1.5, 2};
+  const auto lens = gkt::revised_enskog_functionals(m, gkt::FunctionalClosure::lens_centroid);
+  const auto gradient = gkt::revised_enskog_functionals(m, gkt::FunctionalClosure::gradient);
+  double gradient_miss = 0;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) {
+      if (i == j) continue;
+      for (std::size_t l = 0; l < 3; ++l) {
+        const double expected = mayer_lens_functional(sigma[i], sigma[j], sigma[l], n[j]);
+        EXPECT_NEAR(lens[(i * 3 + j) * 3 + l], expected, 1e-5 * std::abs(expected)) << i << j << l;
+        gradient_miss = std::max(gradient_miss, std::abs(gradient[(i * 3 + j) * 3 + l] / expected - 1));
+      }
+    }
+  EXPECT_GT(gradient_miss, 1e-2);
 }

@@ -167,8 +167,8 @@ struct MixtureNavierStokes::Impl {
   std::vector<WeightedPairTransferMoments> weighted_transfer_;
   detail::ScalarCumulantSources scalar_cumulant_sources_;
   std::vector<double> dchi_, pressure_derivative_;
-  // The revised-Enskog functionals I_ℓij at (i·s + j)·s + ℓ (theory.md (18.18)–(18.20)): a dense binary only,
-  // empty otherwise (zero).
+  // The revised-Enskog functionals I_ℓij at (i·s + j)·s + ℓ (theory.md (18.18)–(18.20); s ≥ 3 with the
+  // lens-centroid closure of §18.12): empty (zero) when dilute or all diameters are equal.
   std::vector<double> functionals_;
   double pressure_ = 1;
 };
@@ -265,7 +265,8 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
   scalar_d_ = to_matrix(detail::rounded(detail::scalar_pieces(d, ns - 1, 0)).d);
   const std::vector<double> dchi = mixture.contact_value_derivatives();
   for (std::size_t k = 0; k < dchi.size(); ++k) dchi_.push_back(dchi[k] / chi[k / s_]);
-  if (s_ == 2) functionals_ = revised_enskog_functionals(mixture);
+  functionals_ = revised_enskog_functionals(mixture);
+  if (std::all_of(functionals_.begin(), functionals_.end(), [](double v) { return v == 0.0; })) functionals_.clear();
   // p = nT + B_2 Σ_ij μ_ji (1+α_ij) σ_ij^d χ_ij n_i n_j T_i, B_2 = π^{(d−1)/2} Γ(3/2)/Γ(d/2 + 1) (18.2);
   // its derivative at fixed T also moves χ_ij and γ_i.
   const double b2 = std::pow(std::numbers::pi, (d - 1) / 2.0) * std::tgamma(1.5) / std::tgamma(d / 2.0 + 1);
