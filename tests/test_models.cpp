@@ -139,6 +139,25 @@ TEST(ModelSchema, SmoothInelasticReachesTolerance1e8PastOrder12) {
   EXPECT_LT(v.value, Rational(0));
 }
 
+// theory.md (6.2): past the turn of the asymptotic Sonine series (2D, α = 0.8: order ≈ A²/4 = 19.8)
+// a tolerance scan may stop, from order 18 on, on the Euler sum of an alternating plateau. The cheap
+// case of the mechanism is the HCS: a2 alternates by ±(1.4–1.6)e-11 from order 20 on, so
+// `tolerance = 1e-11` is met only by the sum (the (6.1) estimates stay ≥ 1.05e-11, r ≈ −1).
+// Reference: the tail scheme, tail_galerkin_sequence(2, 0.8, 29, power_law) past its resolution cap in a
+// scratch build, extrapolated geometrically from N = 27–29: −0.0262441287448, uncertain by ≈ 5e-12
+// (N = 26–28 give −0.0262441287404).
+TEST(ModelFacade, SmoothInelasticPlateauSumMeetsATightToleranceIn2DAtAlpha08) {
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  ParameterPoint p;
+  p.numbers = {{"dimension", Rational(2)}, {"alpha", Rational(4, 5)}};
+  const Rational tolerance = Rational::parse("1e-11");
+  const auto v = model->evaluate(p, {"a2"}, {1, tolerance}).front();
+  EXPECT_TRUE(v.converged);
+  EXPECT_GE(v.order, 18);
+  EXPECT_LT(v.error, tolerance);
+  EXPECT_LT(std::fabs(v.value.to_double() + 0.0262441287448), v.error.to_double() + 5e-12);
+}
+
 // Each model declares which subcommands it answers; the stability values are offered where declared.
 TEST(ModelSchema, DeclaredCapabilities) {
   for (const auto& name : gkt::transport_model_names()) {

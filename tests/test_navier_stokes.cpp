@@ -1,10 +1,13 @@
 // Dilute smooth inelastic gas, Navier–Stokes coefficients (standard and modified Sonine schemes): published
 // first-Sonine forms as exact polynomials, the elastic limit at every order, continuity at α → 1,
-// and convergence in Sonine order.
+// convergence in Sonine order, and the plateau sum of the asymptotic series (theory.md (6.2)).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <optional>
 
+#include "gkt/transport/common/sonine_solution.hpp"
 #include "gkt/transport/monodisperse/hard_spheres.hpp"
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
@@ -184,4 +187,52 @@ TEST(NavierStokesSolver, ModifiedSchemeAgreesAndIsSteadier) {
   }
   EXPECT_GT(hi_s / lo_s, 1.2);
   EXPECT_LT(hi_m / lo_m, 1.05);
+}
+
+// theory.md (6.2): in 2D at α = 0.8 the Sonine κ*, μ* alternate by ±(1.3–2.9)e-8 from order 18 on
+// (the series is asymptotic there). Inputs: orders 18–21 of NavierStokesSolver(2).solve(4/5, N, a) about
+// the nonlinear HCS with a_2 … a_{N+1} (2026-12-02). Reference: the tail scheme,
+// tail_galerkin_sequence(2, 0.8, 29, power_law) run past its resolution cap in a scratch build,
+// extrapolated geometrically from N = 27–29 (changes 4.1e-10, 2.6e-10; ±3e-10). The Euler sum must
+// bracket the reference with an error below 1e-8, which no single order and (6.1) can claim.
+TEST(SonineTruncation, PlateauSumBracketsTheTailSchemeIn2DAtAlpha08) {
+  struct Case {
+    std::array<double, 4> orders_18_to_21;
+    double tail_reference;
+  };
+  const std::array<Case, 2> cases{
+      Case{{1.1379606760279435, 1.1379606975358081, 1.1379606842435042, 1.1379607017367581}, 1.1379606951},       // κ*
+      Case{{0.37438657429815969, 0.37438660331853146, 0.37438658438198325, 0.37438660889916908}, 0.3743865993}};  // μ*
+  for (const auto& c : cases) {
+    std::array<Rational, 4> v;
+    for (std::size_t i = 0; i < 4; ++i) v[i] = Rational::from_double(c.orders_18_to_21[i]);
+    const gkt::TruncationEstimate single = gkt::estimate_truncation(v[0], v[1], v[2]);
+    EXPECT_GT(single.error.to_double(), 1e-8);  // (6.1) at order 18 cannot certify 1e-8
+    const std::optional<gkt::TruncationEstimate> summed = gkt::estimate_alternating_plateau(v);
+    ASSERT_TRUE(summed.has_value());
+    EXPECT_TRUE(summed->converging);
+    EXPECT_LT(summed->error.to_double(), 1e-8);
+    EXPECT_LT(std::fabs(summed->value.to_double() - c.tail_reference) + 3e-10, summed->error.to_double());
+  }
+}
+
+// The plateau test refuses what is not a plateau: a monotone sequence, an alternation that decays
+// faster than 1/2 per order (convergent: (6.1) applies) or grows faster than 2, and a turn
+// (−, +, +); a synthetic plateau L + b(−1)^n + m 2^−n is summed to within its error.
+TEST(SonineTruncation, PlateauSumOnlyOnAnAlternatingPlateau) {
+  auto window = [](double l, double b, double rho, double m) {
+    std::array<Rational, 4> v;
+    for (int n = 0; n < 4; ++n)
+      v[static_cast<std::size_t>(n)] = Rational::from_double(l + b * std::pow(-rho, n) + m * std::pow(0.5, n));
+    return v;
+  };
+  EXPECT_FALSE(gkt::estimate_alternating_plateau(window(1, 0, 1, 1e-3)).has_value());    // monotone
+  EXPECT_FALSE(gkt::estimate_alternating_plateau(window(1, 1e-3, 0.3, 0)).has_value());  // converging
+  EXPECT_FALSE(gkt::estimate_alternating_plateau(window(1, 1e-3, 2.5, 0)).has_value());  // diverging
+  std::array<Rational, 4> turn{Rational(1), Rational(0), Rational(1, 2), Rational(3, 4)};
+  EXPECT_FALSE(gkt::estimate_alternating_plateau(turn).has_value());
+  const auto summed = gkt::estimate_alternating_plateau(window(1, 1e-3, 1.1, 1e-4));
+  ASSERT_TRUE(summed.has_value());
+  EXPECT_LT(std::fabs(summed->value.to_double() - 1), summed->error.to_double());
+  EXPECT_LT(summed->error.to_double(), 2.2e-3);  // ≥ half the smallest change (1.07e-3), below the largest
 }

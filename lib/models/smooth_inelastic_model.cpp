@@ -25,12 +25,15 @@ namespace gkt::detail {
 namespace {
 
 // Order N keeps a_2 … a_{N+1}; its error estimate needs orders N + 1, N + 2 (NS operators to index
-// N + 4 with the solver's headroom, cumulants to a_{N+3}). The cap is set by the cold cost of the
-// exact operators (docs/performance.md: ≈ 25 s for a 2D tolerance scan that reaches it): order 17
-// (orders to 19 for its error) still runs on the operators built for 16, order 18 would need a
-// rebuild (≈ 67 s) and gains nothing at 2D α = 0.8, where the series turns asymptotic near N ≈ 20
-// (theory.md §6).
-constexpr int kMaxOrder = 17;
+// N + 4 with the solver's headroom, cumulants to a_{N+3}), and the plateau sum (theory.md (6.2)) order
+// N + 3. The cap is set where the series stops helping: in 2D at α = 0.8 the Sonine series turns
+// asymptotic near N ≈ 20 and its alternating plateau is summed at N = 18 … 20 (theory.md §6); orders
+// to 23 come from one operator build (docs/performance.md: ≈ 60 s of CPU for a scan that gets there).
+constexpr int kMaxOrder = 20;
+// The first order at which the plateau sum may stand in for (6.1): the orders above the former cap 17,
+// where it was checked against the tail scheme (2D, α = 0.8). Below it every scan is what it was
+// (at 2D α = 0.7 and 0.75 it was honest too, but would change shipped tables; theory.md §6).
+constexpr int kFirstPlateauOrder = 18;
 constexpr int kHighestCumulant = kMaxOrder + 1;
 // The first resolution of the tail scheme (power-law trial space) at which a tolerance may stop: measured
 // over d = 2, 3 and α = 0.2 … 0.9 against resolution 12, its (6.1) error was optimistic at N = 5 and 7
@@ -213,7 +216,11 @@ class SmoothInelasticModel final : public TransportModel {
         v.estimate =
             estimate_truncation(Rational::from_double(pick(s0, k)) * scale, Rational::from_double(pick(s1, k)) * scale,
                                 Rational::from_double(pick(s2, k)) * scale);
-        return v;
+        if (!plateau_summable(sonine, dense) || (k != -1 && k != 2 && k != 3)) return v;
+        return summed_if_plateau(n, v, {pick(s0, k), pick(s1, k), pick(s2, k)}, order, [&] {
+          const auto& s3 = nonlinear(*hcs, d, alpha, n + 4);
+          return s3.solved ? pick(s3, k) : NAN;
+        });
       }));
     }
     return out;
@@ -441,17 +448,54 @@ class SmoothInelasticModel final : public TransportModel {
           Rational::from_double(pick_transport(*n3, which, d, nonlinear(hcs, d, alpha, 4).cooling_rate, dense, alpha)));
       return {value, e.error, 1, e.converging, exact, true};
     }
+    const bool summable = plateau_summable(sonine, dense) &&
+                          (which == Transport::shear_viscosity || which == Transport::thermal_conductivity ||
+                           which == Transport::density_heat_coefficient);
     return choose_order(order, max_order(), [&](int n) {
       const auto* s0 = navier_stokes(hcs, d, alpha, n, sonine, dense);
       const auto* s1 = navier_stokes(hcs, d, alpha, n + 1, sonine, dense);
       const auto* s2 = navier_stokes(hcs, d, alpha, n + 2, sonine, dense);
       if (s0 == nullptr || s1 == nullptr || s2 == nullptr)  // no HCS solution at some order: undefined
         return OrderValue{{Rational(0), Rational(0), false}, false, false};
-      return estimate_from_doubles(
-          pick_transport(*s0, which, d, nonlinear(hcs, d, alpha, n + 1).cooling_rate, dense, alpha),
-          pick_transport(*s1, which, d, nonlinear(hcs, d, alpha, n + 2).cooling_rate, dense, alpha),
-          pick_transport(*s2, which, d, nonlinear(hcs, d, alpha, n + 3).cooling_rate, dense, alpha));
+      auto at = [&](const NavierStokesValues& s, int m) {
+        return pick_transport(s, which, d, nonlinear(hcs, d, alpha, m + 1).cooling_rate, dense, alpha);
+      };
+      const std::array<double, 3> w{at(*s0, n), at(*s1, n + 1), at(*s2, n + 2)};
+      const OrderValue v = estimate_from_doubles(w[0], w[1], w[2]);
+      if (!summable) return v;
+      return summed_if_plateau(n, v, w, order, [&] {
+        const auto* s3 = navier_stokes(hcs, d, alpha, n + 3, sonine, dense);
+        return s3 == nullptr ? NAN : at(*s3, n + 3);
+      });
     });
+  }
+  /// True where the plateau sum of theory.md (6.2) was checked against the tail scheme: the dilute gas in
+  /// the standard scheme (nonlinear HCS), for a2, a3, ζ*, η*, κ*, μ*.
+  static bool plateau_summable(SonineScheme sonine, const Dense& dense) {
+    return sonine == SonineScheme::standard && dense.phi.sign() == 0;
+  }
+  /// Returns `v`, the (6.1) estimate of order N = `order_n` from `w` = v_N, v_{N+1}, v_{N+2}, unless it
+  /// misses the tolerance of `order` (the scan's, or the row's on a `gkt table` second pass) while N ≥
+  /// kFirstPlateauOrder and w alternates on a plateau: then the Euler sum of v_N … v_{N+3} (`next()` gives v_{N+3},
+  /// computed only then) if its error meets the tolerance (theory.md (6.2): past the turn of the asymptotic series,
+  /// where (6.1) does not apply).
+  template <class Next>
+  static OrderValue summed_if_plateau(int order_n, const OrderValue& v, const std::array<double, 3>& w,
+                                      const OrderRequest& order, Next&& next) {
+    const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
+    if (!tolerance || !v.defined || (v.estimate.converging && v.estimate.error < *tolerance)) return v;
+    if (order_n < kFirstPlateauOrder) return v;
+    std::array<Rational, 4> r{Rational::from_double(w[0]), Rational::from_double(w[1]), Rational::from_double(w[2]),
+                              Rational(0)};
+    if (!alternates_on_plateau(r[0], r[1], r[2])) return v;
+    const double w3 = next();
+    if (!std::isfinite(w3)) return v;
+    r[3] = Rational::from_double(w3);
+    const auto summed = estimate_alternating_plateau(r);
+    if (!summed || summed->error >= *tolerance) return v;
+    OrderValue out = v;
+    out.estimate = *summed;
+    return out;
   }
   /// The dense first-Sonine closed form of a transport coefficient (not a stability value), built once.
   const EnskogClosedForm& enskog_form(int d, Transport which) {

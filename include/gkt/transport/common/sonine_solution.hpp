@@ -4,6 +4,8 @@
 // solve); nothing here rounds.
 #pragma once
 
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "gkt/algebra/dense_matrix.hpp"
@@ -26,5 +28,16 @@ struct TruncationEstimate {
 /// Δ2 = v_{N+2} − v_{N+1}: the geometric tail, monotone or alternating, with a 25 % margin
 /// (docs/theory.md §6). If |r| ≥ 1 the error is |Δ1| + |Δ2| and `converging` is false.
 TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1, const Rational& v_n2);
+
+/// Returns true if v_N, v_{N+1}, v_{N+2} alternate as on the plateau of an asymptotic series: the
+/// signed ratio (v_{N+2} − v_{N+1})/(v_{N+1} − v_N) lies in [−2, −1/2] (docs/theory.md §6).
+bool alternates_on_plateau(const Rational& v_n, const Rational& v_n1, const Rational& v_n2);
+
+/// Returns the Euler sum of v_N … v_{N+3} with its error if every three successive values
+/// alternate on a plateau (alternates_on_plateau), else nothing: the value is the third Euler mean
+/// (v_N + 3v_{N+1} + 3v_{N+2} + v_{N+3})/8, the error 5/4 of the spread (largest minus smallest) of
+/// the window's six Euler means (three first, two second, one third) but at least half the smallest
+/// change, `converging` true (docs/theory.md (6.2); measured honest against the tail scheme there).
+std::optional<TruncationEstimate> estimate_alternating_plateau(std::span<const Rational, 4> v);
 
 }  // namespace gkt
