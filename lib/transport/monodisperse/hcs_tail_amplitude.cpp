@@ -12,6 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "gkt/transport/monodisperse/tail_galerkin.hpp"
 
@@ -24,7 +25,8 @@ constexpr double kPartnerSpeed = 6;       // the loss: partners up to this speed
 constexpr double kNegligible = 37;        // the gain: partners with φ(u)/φ(c) below e^{−37} are dropped
 constexpr double kMatchTolerance = 1e-2;  // φ_N, φ_{N−1} agree to this where c_m may lie
 constexpr int kChebyshevNodes = 16;       // nodes of K(t) on [0, 1/c_m]
-constexpr int kFixedPointPasses = 3;      // passes of the continuation φ̃ (measured: theory.md §10.7)
+constexpr int kFixedPointPasses = 12;     // at most; stop when ∫_{c_m}^∞ H changes by less than:
+constexpr double kFixedPointTolerance = 1e-6;
 
 /// β = π^{(d−1)/2}/Γ((d+1)/2): the loss rate of a fast particle is β c ([vannoije1998]).
 double loss_rate_factor(int d) { return std::pow(kPi, (d - 1) / 2.0) / std::tgamma((d + 1) / 2.0); }
@@ -93,78 +95,68 @@ BoltzmannGainLoss boltzmann_gain_loss(int dimension, double alpha, double c,
   // that stops on a slow particle also feeds the gain at c (the loss then needs only u ≤ kPartnerSpeed).
   // A slow particle (speed ≤ kPartnerSpeed) reaches c only from a partner faster than 2(c − 6)/(1 + α) − 6.
   const int far_start = std::max(static_cast<int>(kPartnerSpeed), static_cast<int>(2 * (c - 6) / (1 + alpha)) - 7);
+  // Unit panels in u, the one holding c split at u = c (the loss and gain kernels are not smooth there).
+  std::vector<std::pair<double, double>> panels;
   for (int panel = 0; panel < static_cast<int>(kPartnerSpeed) || log_phi(panel) - log_phi_c > -kNegligible;
-       panel = panel + 1 == static_cast<int>(kPartnerSpeed) ? far_start : panel + 1)
+       panel = panel + 1 == static_cast<int>(kPartnerSpeed) ? far_start : panel + 1) {
+    if (panel < c && c < panel + 1) {
+      panels.emplace_back(panel, c);
+      panels.emplace_back(c, panel + 1);
+    } else {
+      panels.emplace_back(panel, panel + 1);
+    }
+  }
+  for (const auto& [from, to] : panels)
     for (std::size_t iu = 0; iu < u_rule.x.size(); ++iu) {
-      const double u = panel + u_rule.x[iu], wu = u_rule.w[iu];
+      const double u = from + u_rule.x[iu] * (to - from), wu = u_rule.w[iu] * (to - from);
+      const bool near = to <= kPartnerSpeed;
       const double log_partner = log_phi(u), partner = std::exp(log_partner);  // for the loss (u ≤ 6)
-      if (panel >= static_cast<int>(kPartnerSpeed)) {
-        if (log_partner - log_phi_c < -kNegligible) continue;
-      } else
-        // Loss: β ∫ φ(v2)|v − v2|; 3D: ∫dμ |v − v2| = ((c + u)³ − |c − u|³)/(3cu), 2D: 2∫_0^π dθ numerically.
-        if (dimension == 3) {
-          const double mean = (std::pow(c + u, 3) - std::pow(std::fabs(c - u), 3)) / (3 * c * u);
-          out.loss += beta * 2 * kPi * u * u * wu * partner * mean;
-        } else if (dimension == 2) {
-          double mean = 0;
-          for (std::size_t it = 0; it < theta_rule.x.size(); ++it) {
-            const double th = kPi * theta_rule.x[it];
-            mean += kPi * theta_rule.w[it] * std::sqrt(std::max(0.0, c * c + u * u - 2 * c * u * std::cos(th)));
-          }
-          out.loss += beta * 2 * u * wu * partner * mean;
-        }
+      if (!near && log_partner - log_phi_c < -kNegligible) continue;
+      if (near) {
+        // Loss: β ∫ φ(v2)|v − v2|; 3D: ∫dμ |v − v2| = ((c + u)³ − |c − u|³)/(3cu); 2D: ∫_0^π |v − v2| dθ =
+        // 2(c + u) E(2√(cu)/(c + u)), E the complete elliptic integral of the second kind.
+        const double mean = dimension == 3 ? (std::pow(c + u, 3) - std::pow(std::fabs(c - u), 3)) / (3 * c * u)
+                                           : 2 * (c + u) * std::comp_ellint_2(2 * std::sqrt(c * u) / (c + u));
+        const double shell = dimension == 3 ? 4 * kPi * u * u : 2 * kPi * u;
+        out.loss += beta * shell * wu * partner * mean / (dimension == 3 ? 2.0 : kPi);
+        out.partner_mass += shell * wu * partner;
+      }
       // Gain over the pre-collision partner v2 = u(cos θ, sin θ, 0) and σ̂ (theory.md (10.18)):
-      // G(v) = ∫d v2 φ(v2) ∫dσ̂ Θ(h) 4h/(1 − α)² φ(v + λ h σ̂), h = (v − v2)·σ̂, v = c x̂.
+      // G(v) = ∫d v2 φ(v2) ∫dσ̂ Θ(h) 4h/(1 − α)² φ(v + λ h σ̂), h = (v − v2)·σ̂, v = c x̂. σ̂ is measured from
+      // ĝ = (v − v2)/|v − v2|: σ̂ = cos χ ĝ + sin χ (cos ψ e1 + sin ψ e2), so h = |v − v2| cos χ > 0 on
+      // χ < π/2 for every ψ; the fast particle's grazing peak is at χ → π/2, a fast partner stopping on a slow
+      // particle at χ → 0: the χ panels are graded toward both ends.
       double gain = 0;
+      const auto edges = graded_edges(0, kPi / 2, finest);
       for (std::size_t it = 0; it < theta_rule.x.size(); ++it) {
         const double th = kPi * theta_rule.x[it], wt = kPi * theta_rule.w[it];
-        const double a = c - u * std::cos(th), b = u * std::sin(th);
-        auto integrand = [&](double sx, double sy, double sz) {
-          const double h = c * sx - u * (std::cos(th) * sx + std::sin(th) * sy);
-          if (h <= 0) return 0.0;
-          const double vx = c + lambda * h * sx, vy = lambda * h * sy, vz = lambda * h * sz;
+        const double gx = c - u * std::cos(th), gy = -u * std::sin(th), g = std::hypot(gx, gy);
+        if (!(g > 0)) continue;
+        const double hx = gx / g, hy = gy / g;  // ĝ; e1 = (−ĝ_y, ĝ_x, 0), e2 = ẑ
+        // v·ĝ, v·e1 with v = c x̂.
+        const double v_par = c * hx, v_perp = -c * hy;
+        auto integrand = [&](double chi, double cos_psi) {
+          const double h = g * std::cos(chi);
+          const double v_sigma = std::cos(chi) * v_par + std::sin(chi) * cos_psi * v_perp;  // v·σ̂
+          const double speed2 = c * c + 2 * lambda * h * v_sigma + lambda * lambda * h * h;
           return 4 * h / ((1 - alpha) * (1 - alpha)) *
-                 std::exp(log_partner + log_phi(std::sqrt(vx * vx + vy * vy + vz * vz)) - log_phi_c);
+                 std::exp(log_partner + log_phi(std::sqrt(std::max(0.0, speed2))) - log_phi_c);
         };
         double theta_sum = 0;
-        if (dimension == 2) {
-          // σ̂ = (cos χ, sin χ): h = √(a² + b²) cos(χ + δ) > 0 on χ + δ ∈ (−π/2, π/2).
-          const double delta = std::atan2(b, a), lo = -kPi / 2 - delta, hi = kPi / 2 - delta;
-          // σ̂ = −x̂ (a fast partner stopping the slow particle) is graded too where it lies inside.
-          auto edges = graded_edges(lo, hi, finest);
-          for (const double back : {-kPi, kPi})
-            if (lo < back && back < hi) {
-              edges = graded_edges(lo, back, finest);
-              const auto upper = graded_edges(back, hi, finest);
-              edges.insert(edges.end(), upper.begin() + 1, upper.end());
+        for (std::size_t e = 0; e + 1 < edges.size(); ++e)
+          for (std::size_t k = 0; k < chi_rule.x.size(); ++k) {
+            const double chi = edges[e] + chi_rule.x[k] * (edges[e + 1] - edges[e]);
+            const double w_chi = chi_rule.w[k] * (edges[e + 1] - edges[e]);
+            if (dimension == 2) {
+              theta_sum += w_chi * (integrand(chi, 1.0) + integrand(chi, -1.0));  // σ̂ on either side of ĝ
+            } else {
+              double psi_sum = 0;  // ψ ∈ (0, 2π): twice (0, π) by the reflection z → −z
+              for (std::size_t ip = 0; ip < psi_rule.x.size(); ++ip)
+                psi_sum += 2 * kPi * psi_rule.w[ip] * integrand(chi, std::cos(kPi * psi_rule.x[ip]));
+              theta_sum += w_chi * std::sin(chi) * psi_sum;
             }
-          for (std::size_t e = 0; e + 1 < edges.size(); ++e)
-            for (std::size_t k = 0; k < chi_rule.x.size(); ++k) {
-              const double chi = edges[e] + chi_rule.x[k] * (edges[e + 1] - edges[e]);
-              theta_sum += chi_rule.w[k] * (edges[e + 1] - edges[e]) * integrand(std::cos(chi), std::sin(chi), 0);
-            }
-          gain += 2 * u * wu * wt * theta_sum;  // 2: θ ∈ (π, 2π) by reflection
-        } else {
-          // σ̂ = (cos χ, sin χ cos ψ, sin χ sin ψ): h = a cos χ − b cos ψ sin χ = ρ cos(χ + δ).
-          for (std::size_t ip = 0; ip < psi_rule.x.size(); ++ip) {
-            const double psi = kPi * psi_rule.x[ip], wp = kPi * psi_rule.w[ip];
-            const double delta = std::atan2(b * std::cos(psi), a);
-            // χ ∈ [0, π] with cos(χ + δ) > 0.
-            double lo = std::max(0.0, -kPi / 2 - delta), hi = std::min(kPi, kPi / 2 - delta);
-            if (delta > kPi / 2) lo = 1.5 * kPi - delta, hi = kPi;
-            if (!(hi > lo)) continue;
-            const auto edges = graded_edges(lo, hi, finest);
-            double psi_sum = 0;
-            for (std::size_t e = 0; e + 1 < edges.size(); ++e)
-              for (std::size_t k = 0; k < chi_rule.x.size(); ++k) {
-                const double chi = edges[e] + chi_rule.x[k] * (edges[e + 1] - edges[e]), sc = std::sin(chi);
-                psi_sum += chi_rule.w[k] * (edges[e + 1] - edges[e]) * sc *
-                           integrand(std::cos(chi), sc * std::cos(psi), sc * std::sin(psi));
-              }
-            theta_sum += 2 * wp * psi_sum;  // 2: ψ ∈ (π, 2π) by reflection
           }
-          gain += 2 * kPi * u * u * wu * wt * std::sin(th) * theta_sum;
-        }
+        gain += (dimension == 3 ? 2 * kPi * u * u * std::sin(th) : 2 * u) * wu * wt * theta_sum;
       }
       out.gain_ratio += gain;
     }
@@ -283,9 +275,14 @@ HcsTailMatch match_at(int d, double alpha, const TailHcsProfile& p, double gamma
     for (std::size_t j = 0; j < t.size(); ++j) {
       const double c = 1 / t[j];
       const auto gl = boltzmann_gain_loss(d, alpha, c, log_phi);
-      k[j] = (gl.gain_ratio - (gl.loss - beta * c) - mu * (d + gamma)) / (mu * c) * c * c;
+      // Normalised by the partners' mass on the rule: ν − βc is O(1/c) only for ∫φ = 1, and a mass off by ε
+      // would add β c² ε/μ to K (measured: K ≈ 10 at c = 1000 without this).
+      k[j] = (gl.gain_ratio / gl.partner_mass - (gl.loss / gl.partner_mass - beta * c) - mu * (d + gamma)) / (mu * c) *
+             c * c;
     }
+    const double before = k_of_t.integral_from(0);
     k_of_t = Chebyshev(span, k);
+    if (std::fabs(k_of_t.integral_from(0) - before) < kFixedPointTolerance) break;
   }
   *k0 = k_of_t(0);
   HcsTailMatch m;

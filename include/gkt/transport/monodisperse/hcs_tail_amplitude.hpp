@@ -39,8 +39,9 @@ HcsTailAmplitude hcs_tail_amplitude(int dimension, double alpha, int order);
 /// The gain and loss of J*[φ, φ] = G − ν φ at one speed (units of theory.md (9.1): dσ̂ Θ(g·σ̂)(g·σ̂),
 /// velocities in v0).
 struct BoltzmannGainLoss {
-  double gain_ratio = 0;  ///< G(c)/φ(c) (theory.md (10.18))
-  double loss = 0;        ///< ν(c) = β ∫ φ(v2) |v − v2| d^d v2 over |v2| ≤ 6
+  double gain_ratio = 0;    ///< G(c)/φ(c) (theory.md (10.18))
+  double loss = 0;          ///< ν(c) = β ∫ φ(v2) |v − v2| d^d v2 over |v2| ≤ 6
+  double partner_mass = 0;  ///< ∫ φ(v2) d^d v2 over |v2| ≤ 6 on the same rule (1 for a normalised φ)
 };
 
 /// Returns G(c)/φ(c) and ν(c) of the Boltzmann operator for an isotropic φ given by its logarithm
