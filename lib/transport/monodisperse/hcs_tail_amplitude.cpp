@@ -322,18 +322,17 @@ HcsTailAmplitude hcs_tail_amplitude(int dimension, double alpha, int order) {
   }
   const std::vector<double> speeds{std::max(1.0, 2 * converged / 3), std::max(1.0, 5 * converged / 6),
                                    std::max(1.0, converged)};
-  double k0 = 0, lo = INFINITY, hi = -INFINITY;
   for (const double c_m : speeds) {
     double k_now = 0, k_before = 0;
     out.matches.push_back(match_at(dimension, alpha, now, out.power, c_m, &k_now));
     out.previous_matches.push_back(match_at(dimension, alpha, before, out.power, c_m, &k_before));
-    lo = std::min({lo, out.matches.back().amplitude, out.previous_matches.back().amplitude});
-    hi = std::max({hi, out.matches.back().amplitude, out.previous_matches.back().amplitude});
-    k0 = k_now;
+    if (c_m == speeds[1]) out.first_correction = -k_now;
   }
-  out.amplitude = out.matches.back().amplitude;
-  out.error = hi - lo;
-  out.first_correction = -k0;
+  // The value from the middle matching speed at N; the error the largest distance of the other five from it.
+  out.amplitude = out.matches[1].amplitude;
+  for (std::size_t i = 0; i < speeds.size(); ++i)
+    out.error = std::max({out.error, std::fabs(out.matches[i].amplitude - out.amplitude),
+                          std::fabs(out.previous_matches[i].amplitude - out.amplitude)});
   return out;
 }
 
