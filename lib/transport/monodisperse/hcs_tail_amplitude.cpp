@@ -23,7 +23,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kPartnerSpeed = 6;       // the loss: partners up to this speed (weight below e^{−30} beyond)
 constexpr double kNegligible = 37;        // the gain: partners with φ(u)/φ(c) below e^{−37} are dropped
-constexpr double kMatchTolerance = 1e-2;  // φ_N, φ_{N−1} agree to this where c_m may lie
+constexpr double kMatchTolerance = 1e-3;  // φ_N, φ_{N−1} agree to this where c_m may lie
 constexpr int kChebyshevNodes = 16;       // nodes of K(t) on [0, 1/c_m]
 constexpr int kFixedPointPasses = 12;     // at most; stop when ∫_{c_m}^∞ H changes by less than:
 constexpr double kFixedPointTolerance = 1e-6;
