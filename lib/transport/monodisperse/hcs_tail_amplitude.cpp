@@ -84,7 +84,7 @@ BoltzmannGainLoss boltzmann_gain_loss(int dimension, double alpha, double c,
     throw std::invalid_argument("alpha: must be a number in (0, 1), got " + std::to_string(alpha));
   if (!(c > 0 && std::isfinite(c)))
     throw std::invalid_argument("speed: must be a finite number > 0, got " + std::to_string(c));
-  static const Rule u_rule = gauss_legendre(8), theta_rule = gauss_legendre(32), psi_rule = gauss_legendre(24),
+  static const Rule u_rule = gauss_legendre(8), theta_rule = gauss_legendre(32), psi_rule = gauss_legendre(12),
                     chi_rule = gauss_legendre(8);
   const double lambda = (1 + alpha) / (1 - alpha), log_phi_c = log_phi(c), beta = loss_rate_factor(dimension);
   // Width of the grazing peak in h = (v − v2)·σ̂: the fast pre-collision speed is c + λ(2 + λ)h²/(2c) + …,
