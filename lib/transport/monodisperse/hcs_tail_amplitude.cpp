@@ -264,6 +264,7 @@ HcsTailMatch match_at(int d, double alpha, const TailHcsProfile& p, double gamma
   const double log_phi_m = core(c_m), span = 1 / c_m;
   const auto t = Chebyshev::nodes(span, kChebyshevNodes);
   Chebyshev k_of_t(span, std::vector<double>(t.size(), 0.0));
+  bool settled = false;
   for (int pass = 0; pass < kFixedPointPasses; ++pass) {
     // ∫_{c_m}^x H = ∫_{1/x}^{1/c_m} K dt, tabulated in t.
     const UniformTable continuation(0, span, 4096, [&](double tt) { return k_of_t.integral_from(tt); });
@@ -282,10 +283,12 @@ HcsTailMatch match_at(int d, double alpha, const TailHcsProfile& p, double gamma
     }
     const double before = k_of_t.integral_from(0);
     k_of_t = Chebyshev(span, k);
-    if (std::fabs(k_of_t.integral_from(0) - before) < kFixedPointTolerance) break;
+    settled = std::fabs(k_of_t.integral_from(0) - before) < kFixedPointTolerance;
+    if (settled || !std::isfinite(k_of_t.integral_from(0))) break;
   }
   *k0 = k_of_t(0);
   HcsTailMatch m;
+  m.settled = settled && std::isfinite(k_of_t.integral_from(0));
   m.matching_speed = c_m;
   m.ratio_at_match = std::exp(log_phi_m - gamma * std::log(c_m) + A * c_m);
   m.amplitude = m.ratio_at_match * std::exp(k_of_t.integral_from(0));
@@ -328,6 +331,14 @@ HcsTailAmplitude hcs_tail_amplitude(int dimension, double alpha, int order) {
     out.previous_matches.push_back(match_at(dimension, alpha, before, out.power, c_m, &k_before));
     if (c_m == speeds[1]) out.first_correction = -k_now;
   }
+  // Matching deep in the Gaussian core (c_m ≪ A/2: 2D α = 0.9, A = 16.9, c_m ≤ 4) the continuation must build the
+  // whole crossover and the fixed point diverges: no amplitude then (theory.md §10.7).
+  for (std::size_t i = 0; i < speeds.size(); ++i)
+    if (!out.matches[i].settled || !out.previous_matches[i].settled)
+      throw std::runtime_error("hcs_tail_amplitude: the continuation from c_m = " + std::to_string(speeds[i]) +
+                               " did not settle (the tail scheme's HCS is converged only far inside the Gaussian "
+                               "core, A/2 = " +
+                               std::to_string(out.exponent / 2) + "); raise the resolution");
   // The value from the middle matching speed at N; the error the largest distance of the other five from it.
   out.amplitude = out.matches[1].amplitude;
   for (std::size_t i = 0; i < speeds.size(); ++i)
