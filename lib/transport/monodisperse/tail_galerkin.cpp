@@ -559,8 +559,11 @@ double hcs_tail_power(int dimension, double alpha) {
   return -dimension + (dimension == 3 ? 2.0 : 1.0) / k;
 }
 
-std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order,
-                                                       TailTrialSpace trial) {
+namespace {
+
+/// tail_galerkin_sequence, also recording each resolution's φ_N on the nodes if `profiles` is given.
+std::vector<TailGalerkinValues> run_tail_sequence(int dimension, double alpha, int max_order, TailTrialSpace trial,
+                                                  std::vector<TailHcsProfile>* profiles) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
   if (!(alpha > 0 && alpha <= 1))
@@ -592,16 +595,32 @@ std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alp
   std::vector<TailGalerkinValues> out;
   std::vector<double> start;  // φ of the previous solution on the 1-D rule (empty: the Maxwellian)
   for (int n = 1; n <= max_order; ++n) {
-    double tail = tail0;
+    double tail = tail0, used = tail0;
     TailGalerkinValues v;
     for (int pass = 0; pass < kWeightPasses; ++pass) {
+      used = tail;
       v = solve_resolution(grid, kernel, alpha, trial, tail, n, start);
       if (!v.solved || alpha == 1) break;
       tail = v.tail_exponent;
     }
     out.push_back(v);
+    if (profiles) profiles->push_back({v, used, grid.c, v.solved ? start : std::vector<double>{}});
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order,
+                                                       TailTrialSpace trial) {
+  return run_tail_sequence(dimension, alpha, max_order, trial, nullptr);
+}
+
+std::vector<TailHcsProfile> tail_galerkin_hcs_profiles(int dimension, double alpha, int max_order,
+                                                       TailTrialSpace trial) {
+  std::vector<TailHcsProfile> profiles;
+  run_tail_sequence(dimension, alpha, max_order, trial, &profiles);
+  return profiles;
 }
 
 }  // namespace gkt

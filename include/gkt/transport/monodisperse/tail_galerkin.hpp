@@ -47,6 +47,21 @@ enum class TailTrialSpace {
 std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order,
                                                        TailTrialSpace trial = TailTrialSpace::even);
 
+/// The HCS of the tail scheme at one resolution as a function of the speed, for the tail amplitude
+/// (hcs_tail_amplitude.hpp, theory.md §10.7).
+struct TailHcsProfile {
+  TailGalerkinValues values;         ///< the resolution's values (values.order = N)
+  double weight_exponent = 0;        ///< A of the trial weight of the last pass (units 1/v0; ∞ at α = 1)
+  std::vector<double> speed;         ///< c (units v0) at the radial quadrature nodes, increasing
+  std::vector<double> distribution;  ///< φ_N(c) at those nodes (∫ φ d^d c = 1, ∫ c² φ d^d c = d/2)
+};
+
+/// Returns, as tail_galerkin_sequence, the resolutions N = 1 … max_order, each with its HCS φ_N on the
+/// radial quadrature nodes of the scheme (the same computation; the vector holds one profile per N).
+/// Throws as tail_galerkin_sequence.
+std::vector<TailHcsProfile> tail_galerkin_hcs_profiles(int dimension, double alpha, int max_order,
+                                                       TailTrialSpace trial = TailTrialSpace::power_law);
+
 /// Returns γ of the HCS tail φ ~ c^γ exp(−A c) (dimensionless; theory.md (10.15)): −d + 2/k in 3D,
 /// −d + 1/k in 2D, k = (1 + α)(3 − α)/4. Throws std::invalid_argument for d ∉ {2, 3} or α ∉ (0, 1].
 double hcs_tail_power(int dimension, double alpha);
