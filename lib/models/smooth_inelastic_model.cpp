@@ -33,9 +33,10 @@ namespace {
 constexpr int kMaxOrder = 17;
 constexpr int kHighestCumulant = kMaxOrder + 1;
 // The first resolution of the tail scheme (power-law trial space) at which a tolerance may stop: measured
-// over d = 2, 3 and α = 0.2 … 0.9 against resolution 12, its (6.1) error was optimistic at N = 5 and 7
-// (2D α = 0.7: κ*, μ* 1.3e-4 claimed, 3.1e-4 true) and never from N = 8 on (theory.md §10.6).
-constexpr int kTailFirstStoppingResolution = 8;
+// over d = 2, 3 and α = 0.2 … 1 against resolution 22 (20 for α ≥ 0.8), its (6.1) error let a tolerance of
+// 1e-4 stop with a wrong claim at N = 9 (2D α = 0.6: κ* 8.4e-5 claimed, 1.4e-4 true; κ*, μ* turn near
+// N ≈ 10 there) and never from N = 10 on (theory.md §10.6).
+constexpr int kTailFirstStoppingResolution = 10;
 
 /// The density of one evaluation: φ, χ(φ), φ dχ/dφ (exact) and the closure's name.
 struct Dense {
