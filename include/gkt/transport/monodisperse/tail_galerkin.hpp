@@ -41,8 +41,8 @@ enum class TailTrialSpace {
 
 /// Returns the tail-scheme values at resolutions N = 1 … max_order for dimension d = 2 or 3 and
 /// restitution α ∈ (0, 1] (element N − 1 is resolution N) with the trial functions `trial`. The
-/// collision kernel on the quadrature grid is computed once for max_order and shared by all
-/// resolutions (each resolution uses the leading Sonine test functions). Throws
+/// collision kernel on the quadrature grid is computed once for max_order (on every core) and shared by
+/// all resolutions (each resolution uses the leading Sonine test functions). Throws
 /// std::invalid_argument naming the field for d ∉ {2, 3}, α outside (0, 1] or max_order outside
 /// [1, kTailGalerkinMaxOrder].
 std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order,
