@@ -148,7 +148,9 @@ class SmoothInelasticModel final : public TransportModel {
         if (spec.name == "packing_fraction") spec.max = max_packing_fraction(dim == Rational(2) ? 2 : 3);
     return specs;
   }
-  [[nodiscard]] int max_order() const override { return kMaxOrder; }
+  /// The order request's range covers both schemes: the Sonine orders to kMaxOrder, the tail scheme's
+  /// resolutions to kTailGalerkinMaxOrder − 2 (its error needs two more); each scheme refuses past its own.
+  [[nodiscard]] int max_order() const override { return std::max(kMaxOrder, kTailGalerkinMaxOrder - 2); }
 
   [[nodiscard]] bool supports(Capability) const override { return true; }
 
@@ -166,6 +168,9 @@ class SmoothInelasticModel final : public TransportModel {
                                   max_packing_fraction(d).to_decimal_string() +
                                   "] for dimension = " + std::to_string(d) + ", got " + phi.to_decimal_string());
     if (p.choice("scheme") == "tail") return evaluate_tail(d, alpha, phi, scheme, coefficients, order);
+    if (!order.tolerance && order.order > kMaxOrder)
+      throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(kMaxOrder) +
+                                  "] for scheme = \"" + p.choice("scheme") + "\", got " + std::to_string(order.order));
     const PairCorrelation& pc = pair_correlation(closure);
     const Rational chi = pc.contact_value(d, phi);
     const Dense dense{phi, chi, pc.packing_derivative(d, phi), closure};
@@ -206,7 +211,7 @@ class SmoothInelasticModel final : public TransportModel {
         out.push_back({e.value, e.error, 1, e.converging && next1.solved && next2.solved, true, true});
         continue;
       }
-      out.push_back(choose_order(order, max_order(), [&](int n) {
+      out.push_back(choose_order(order, kMaxOrder, [&](int n) {
         const auto& s0 = nonlinear(*hcs, d, alpha, n + 1);
         const auto& s1 = nonlinear(*hcs, d, alpha, n + 2);
         const auto& s2 = nonlinear(*hcs, d, alpha, n + 3);
@@ -312,8 +317,8 @@ class SmoothInelasticModel final : public TransportModel {
     if (phi.sign() != 0) throw std::invalid_argument("scheme: \"tail\" is dilute only: use packing_fraction = 0");
     if (hcs_scheme != "nonlinear")
       throw std::invalid_argument("hcs: the tail scheme solves the full HCS: use hcs = \"nonlinear\"");
-    // The highest resolution with an error (two more needed), within the model's order range: `gkt table`
-    // re-evaluates a tolerance row at its order through the schema, which allows [1, max_order()].
+    // The highest resolution with an error (two more needed); the model's order range covers it (`gkt table`
+    // re-evaluates a tolerance row at its order through the schema, which allows [1, max_order()]).
     const int highest = std::min(kTailGalerkinMaxOrder - 2, max_order());
     if (!order.tolerance && order.order > highest)
       throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(highest) +
@@ -473,7 +478,7 @@ class SmoothInelasticModel final : public TransportModel {
     const bool summable = plateau_summable(sonine, dense) &&
                           (which == Transport::shear_viscosity || which == Transport::thermal_conductivity ||
                            which == Transport::density_heat_coefficient);
-    return choose_order(order, max_order(), [&](int n) {
+    return choose_order(order, kMaxOrder, [&](int n) {
       const auto* s0 = navier_stokes(hcs, d, alpha, n, sonine, dense);
       const auto* s1 = navier_stokes(hcs, d, alpha, n + 1, sonine, dense);
       const auto* s2 = navier_stokes(hcs, d, alpha, n + 2, sonine, dense);
