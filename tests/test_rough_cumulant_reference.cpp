@@ -295,22 +295,23 @@ TEST(RoughCumulantReference, ToleranceGovernsBothTruncations) {
   OrderRequest request;
   request.tolerance = Rational(1, 1000);
   const auto out = model->evaluate(point, {"shear_viscosity"}, request);
-  // At (0.9, 0.5) the nonlinear HCS steps are 1.6e-3 (orders 1 → 2, a02) and 1.2e-3 (2 → 3, a02), and order 4 has
-  // no solution, so no degree meets 1e-3: the closest (3) is used and the value is flagged.
-  const RoughSonineCoolingState h2 = rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 2,
-                                                                RoughSonineScheme::nonlinear),
-                                h3 = rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 3,
-                                                                RoughSonineScheme::nonlinear);
-  const double step = std::abs(h3.cumulant(0, 2) - h2.cumulant(0, 2));
+  // At (0.9, 0.5) the oriented nonlinear HCS steps are 2.1e-3 (orders 1 → 2, a02) and 1.8e-3 (2 → 3, a02), and order 4
+  // has no solution, so no degree meets 1e-3: the closest (3) is used and the value is flagged.
+  const auto hcs = [](int n) {
+    return rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), n,
+                                      RoughSonineScheme::nonlinear, RoughSonineAnsatz::oriented);
+  };
+  const RoughSonineCoolingState h1 = hcs(1), h2 = hcs(2);
+  const double step = std::abs(h2.cumulant(0, 2) - h1.cumulant(0, 2));
   EXPECT_GT(step, 1e-3);
   EXPECT_FALSE(out[0].converged);
   request.tolerance = Rational(1, 100);
   const auto loose = model->evaluate(point, {"shear_viscosity"}, request);
   EXPECT_TRUE(loose[0].converged);
   EXPECT_LT(loose[0].error.to_double(), 1e-2);
-  // 5e-3: the HCS settles at degrees 2 and 3 (steps 1.6e-3, 1.2e-3) and η* meets it, but κ* moves by 1.5e-2 from
+  // 5e-3: the HCS settles at degrees 2 and 3 (steps 2.1e-3, 1.8e-3) and η* meets it, but κ* moves by 1.5e-2 from
   // the Maxwellian reference to degree 2 and by 5.6e-3 from degree 2 to 3: flagged, its error above the tolerance
-  // (the HCS steps alone would have passed it at degree 2 with the Sonine error 4e-4).
+  // (the HCS steps alone would have passed it at degree 2 with the Sonine error 3e-4).
   request.tolerance = Rational(1, 200);
   const auto mid = model->evaluate(point, {"shear_viscosity", "thermal_conductivity"}, request);
   EXPECT_TRUE(mid[0].converged);
