@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "gkt/collision/rough_collision_rule.hpp"
 #include "gkt/models/transport_model.hpp"
@@ -218,8 +220,9 @@ ParameterPoint rough_point() {
   return point;
 }
 
-// The model's keys: reference_state = "hcs" with hcs_order gives the library's values about the isotropic Sonine HCS
-// of `hcs` at every order, with the error (6.1); refusals name the key.
+// The model's keys: reference_state = "hcs" with hcs_order gives the library's values about the oriented Sonine HCS
+// of `hcs` (3D, both schemes) at every order, with the error (6.1) plus the step from the next lower cumulant degree;
+// refusals name the key.
 TEST(RoughCumulantReference, ModelKeys) {
   auto model = make_transport_model("rough");
   ParameterPoint point = rough_point();
@@ -228,16 +231,32 @@ TEST(RoughCumulantReference, ModelKeys) {
   OrderRequest request;
   request.order = 1;
   const auto out = model->evaluate(point, {"shear_viscosity", "bulk_viscosity"}, request);
-  const RoughSonineTransport t(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 3, 3);
-  const RoughSonineCoolingState hcs =
-      rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 2, RoughSonineScheme::nonlinear);
+  const RoughSonineTransport t(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 3, 3, true);
+  const auto nonlinear_hcs = [](int n) {
+    return rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), n,
+                                      RoughSonineScheme::nonlinear, RoughSonineAnsatz::oriented);
+  };
+  const RoughSonineCoolingState hcs = nonlinear_hcs(2), lower = nonlinear_hcs(1);
   const double e1 = t.at_cooling_state(1, hcs).shear_viscosity, e2 = t.at_cooling_state(2, hcs).shear_viscosity,
                e3 = t.at_cooling_state(3, hcs).shear_viscosity;
   EXPECT_NEAR(out[0].value.to_double(), e1, 1e-15);
   const TruncationEstimate e =
       estimate_truncation(Rational::from_double(e1), Rational::from_double(e2), Rational::from_double(e3));
-  EXPECT_NEAR(out[0].error.to_double(), e.error.to_double(), 1e-15);
+  const double step = std::abs(e1 - t.at_cooling_state(1, lower).shear_viscosity);  // cumulant degree 3 → 2
+  EXPECT_GT(step, 1e-4);
+  EXPECT_NEAR(out[0].error.to_double(), e.error.to_double() + step, 1e-15);
   EXPECT_NEAR(out[1].value.to_double(), t.at_cooling_state(1, hcs).bulk_viscosity, 1e-15);
+  // Degree 2: the step is taken from the Maxwellian reference (the HCS of order 0).
+  point.numbers["hcs_order"] = Rational(2);
+  const auto second = model->evaluate(point, {"thermal_conductivity"}, request);
+  const double m1 = t.at_maxwellian_state(1).thermal_conductivity,
+               k1 = t.at_cooling_state(1, lower).thermal_conductivity;
+  const TruncationEstimate ek = estimate_truncation(
+      Rational::from_double(k1), Rational::from_double(t.at_cooling_state(2, lower).thermal_conductivity),
+      Rational::from_double(t.at_cooling_state(3, lower).thermal_conductivity));
+  EXPECT_NEAR(second[0].value.to_double(), k1, 1e-15);
+  EXPECT_NEAR(second[0].error.to_double(), ek.error.to_double() + std::abs(k1 - m1), 1e-15);
+  point.numbers["hcs_order"] = Rational(3);
   // Without the key the default (Maxwellian reference, first approximation) is unchanged.
   ParameterPoint plain = rough_point();
   const auto first = model->evaluate(plain, {"shear_viscosity"}, request);
@@ -252,7 +271,8 @@ TEST(RoughCumulantReference, ModelKeys) {
   const RoughSonineCoolingState ho = rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 1,
                                                                 RoughSonineScheme::linear, RoughSonineAnsatz::oriented);
   EXPECT_NEAR(oriented[0].value.to_double(), to.at_cooling_state(1, ho).thermal_conductivity, 1e-15);
-  EXPECT_THROW((void)t.at_cooling_state(1, ho), std::invalid_argument);  // b's without the orientation tables
+  const RoughSonineTransport isotropic(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 1, 2);
+  EXPECT_THROW((void)isotropic.at_cooling_state(1, ho), std::invalid_argument);  // b's without the orientation tables
 
   ParameterPoint bad = rough_point();
   bad.numbers["hcs_order"] = Rational(3);
@@ -267,7 +287,7 @@ TEST(RoughCumulantReference, ModelKeys) {
 }
 
 // `tolerance` governs both truncations: the cumulant degree rises until the HCS (θ, ζ*, a20, a02, a11) moves less than
-// the tolerance to the next degree, then the Sonine order until its error is below it.
+// the tolerance to the next degree and the column's error (Sonine plus the step from the lower degree) is below it.
 TEST(RoughCumulantReference, ToleranceGovernsBothTruncations) {
   auto model = make_transport_model("rough");
   ParameterPoint point = rough_point();
@@ -275,19 +295,88 @@ TEST(RoughCumulantReference, ToleranceGovernsBothTruncations) {
   OrderRequest request;
   request.tolerance = Rational(1, 1000);
   const auto out = model->evaluate(point, {"shear_viscosity"}, request);
-  // At (0.9, 0.5) the nonlinear HCS steps are 1.6e-3 (orders 1 → 2, a02) and 1.2e-3 (2 → 3, a02), and order 4 has
-  // no solution, so no degree meets 1e-3: the closest (3) is used and the value is flagged.
-  const RoughSonineCoolingState h2 = rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 2,
-                                                                RoughSonineScheme::nonlinear),
-                                h3 = rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 3,
-                                                                RoughSonineScheme::nonlinear);
-  const double step = std::abs(h3.cumulant(0, 2) - h2.cumulant(0, 2));
+  // At (0.9, 0.5) the oriented nonlinear HCS steps are 2.1e-3 (orders 1 → 2, a02) and 1.8e-3 (2 → 3, a02), and order 4
+  // has no solution, so no degree meets 1e-3: the closest (3) is used and the value is flagged.
+  const auto hcs = [](int n) {
+    return rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), n,
+                                      RoughSonineScheme::nonlinear, RoughSonineAnsatz::oriented);
+  };
+  const RoughSonineCoolingState h1 = hcs(1), h2 = hcs(2);
+  const double step = std::abs(h2.cumulant(0, 2) - h1.cumulant(0, 2));
   EXPECT_GT(step, 1e-3);
   EXPECT_FALSE(out[0].converged);
   request.tolerance = Rational(1, 100);
   const auto loose = model->evaluate(point, {"shear_viscosity"}, request);
   EXPECT_TRUE(loose[0].converged);
   EXPECT_LT(loose[0].error.to_double(), 1e-2);
+  // 5e-3: the HCS settles at degrees 2 and 3 (steps 2.1e-3, 1.8e-3) and η* meets it, but κ* moves by 1.5e-2 from
+  // the Maxwellian reference to degree 2 and by 5.6e-3 from degree 2 to 3: flagged, its error above the tolerance
+  // (the HCS steps alone would have passed it at degree 2 with the Sonine error 3e-4).
+  request.tolerance = Rational(1, 200);
+  const auto mid = model->evaluate(point, {"shear_viscosity", "thermal_conductivity"}, request);
+  EXPECT_TRUE(mid[0].converged);
+  EXPECT_LT(mid[0].error.to_double(), 5e-3);
+  EXPECT_FALSE(mid[1].converged);
+  EXPECT_GT(mid[1].error.to_double(), 5e-3);
+}
+
+// The reported error covers the cumulant-degree truncation: at (0.9, 0.5), Sonine order 3, the degree-2 value of every
+// Navier–Stokes column lies within its error of the degree-4 value (κ*, μ* move by 3.3e-3, 3.4e-3 there, while their
+// Sonine errors alone are 8e-4, 7e-4).
+TEST(RoughCumulantReference, ErrorBoundsTheHigherCumulantDegree) {
+  auto model = make_transport_model("rough");
+  ParameterPoint point = rough_point();
+  point.choices = {{"hcs", "nonlinear"}, {"reference_state", "hcs"}};
+  OrderRequest request;
+  request.order = 3;
+  const std::vector<std::string> columns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
+                                         "density_heat_coefficient", "cooling_rate_first_order"};
+  point.numbers["hcs_order"] = Rational(4);
+  const auto high = model->evaluate(point, columns, request);
+  point.numbers["hcs_order"] = Rational(2);
+  const auto low = model->evaluate(point, columns, request);
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    ASSERT_TRUE(low[i].defined && high[i].defined) << columns[i];
+    EXPECT_LT(std::abs(low[i].value.to_double() - high[i].value.to_double()), low[i].error.to_double()) << columns[i];
+  }
+  EXPECT_GT(std::abs(low[2].value.to_double() - high[2].value.to_double()), 2e-3);  // κ*: the test has teeth
+}
+
+// 3D nonlinear reference: the oriented HCS (as the HCS columns beyond order 1). Against the linear oriented reference
+// at degree 2, order 2, every column differs by less than the second-order size max|a_pq, b_pq| · |v_lin − v_M| (the
+// two schemes differ by products of cumulants; a02 = 0.084 is the largest).
+TEST(RoughCumulantReference, NonlinearOrientedReferenceIsSecondOrderFromTheLinear) {
+  auto model = make_transport_model("rough");
+  ParameterPoint point = rough_point();
+  point.numbers["hcs_order"] = Rational(2);
+  OrderRequest request;
+  request.order = 2;
+  const std::vector<std::string> columns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
+                                         "density_heat_coefficient", "cooling_rate_first_order"};
+  point.choices = {{"hcs", "nonlinear"}, {"reference_state", "hcs"}};
+  const auto nonlinear = model->evaluate(point, columns, request);
+  point.choices = {{"hcs", "linear"}, {"reference_state", "hcs"}};
+  const auto linear = model->evaluate(point, columns, request);
+  const auto maxwellian = model->evaluate(rough_point(), columns, request);
+  const RoughSonineCoolingState h = rough_sonine_cooling_state(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 1,
+                                                               RoughSonineScheme::linear, RoughSonineAnsatz::oriented);
+  double size = 0;
+  for (double a : h.cumulants) size = std::max(size, std::abs(a));
+  for (double b : h.orientation_coefficients) size = std::max(size, std::abs(b));
+  EXPECT_GT(size, 0.05);
+  double largest = 0;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    const double lin = linear[i].value.to_double(), shift = std::abs(lin - maxwellian[i].value.to_double());
+    const double diff = std::abs(nonlinear[i].value.to_double() - lin);
+    EXPECT_LT(diff, size * shift) << columns[i];
+    largest = std::max(largest, diff);
+  }
+  EXPECT_GT(largest, 1e-5);  // the schemes do differ (oriented nonlinear is not the linear one)
+  // The nonlinear reference is the library's oriented nonlinear HCS.
+  const RoughSonineTransport t(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 4, 2, true);
+  const RoughSonineCoolingState hn = rough_sonine_cooling_state(
+      3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 1, RoughSonineScheme::nonlinear, RoughSonineAnsatz::oriented);
+  EXPECT_NEAR(nonlinear[2].value.to_double(), t.at_cooling_state(2, hn).thermal_conductivity, 1e-15);
 }
 
 }  // namespace

@@ -11,7 +11,8 @@
 // the bulk viscosity and first-order cooling rate (rough_bulk_viscosity.hpp, §19.9), d = 2, 3; at order
 // N > 1 (or with a tolerance) these five Navier–Stokes columns come from rough_sonine_transport.hpp (§19.16)
 // with the error of theory.md (6.1) from orders N + 1, N + 2, about Maxwellians or (reference_state = "hcs") about
-// the Sonine HCS with its cumulants (§19.16, (19.44)–(19.45)); the linear stability of the HCS from the
+// the Sonine HCS with its cumulants (§19.16, (19.44)–(19.45); the error then adds the step from the next lower
+// cumulant degree); the linear stability of the HCS from the
 // first-Sonine coefficients (rough_hcs_stability.hpp, §19.15).
 #include <algorithm>
 #include <array>
@@ -191,8 +192,9 @@ class RoughModel final : public TransportModel {
     specs.push_back(
         choice_spec("reference_state",
                     "f0 of the Navier-Stokes columns: Maxwellians at the Maxwellian theta (default), or the "
-                    "isotropic Sonine HCS of `hcs` (linear or nonlinear) with its theta, cooling rate and "
-                    "cumulants a_pq, p + q <= hcs_order",
+                    "Sonine HCS of `hcs` (linear or nonlinear; spheres: oriented, with its b_pq) with its theta, "
+                    "cooling rate and cumulants a_pq, p + q <= hcs_order; the error adds the change from "
+                    "hcs_order - 1 (2: from the Maxwellian reference)",
                     {"maxwellian", "hcs"}));
     specs.push_back({"hcs_order",
                      ParameterSpec::Kind::integer,
@@ -244,8 +246,9 @@ class RoughModel final : public TransportModel {
     // the oriented Sonine HCS's (§19.14, linear or nonlinear); the stability values are first approximations.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     const bool hcs_sonine = scheme == "nonlinear" || !first;
-    // reference_state = "hcs": the five Navier–Stokes columns about the Sonine HCS of `hcs` (3D linear: oriented) with
-    // its cumulants a_pq, p + q ≤ hcs_order (theory.md §19.16), at every order including 1 (with its error).
+    // reference_state = "hcs": the five Navier–Stokes columns about the Sonine HCS of `hcs` (3D: oriented, both
+    // schemes) with its cumulants a_pq, p + q ≤ hcs_order (theory.md §19.16), at every order including 1, with the
+    // error (6.1) plus the step from cumulant degree hcs_order − 1.
     const bool cumulant_reference = SchemaPoint(specs, point).choice("reference_state") == "hcs";
     if (point.numbers.contains("hcs_order") && !cumulant_reference)
       throw std::invalid_argument(
@@ -324,27 +327,26 @@ class RoughModel final : public TransportModel {
     HcsSonineStates hcs_states(d, alpha, beta, kappa,
                                linear_sonine ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
                                oriented ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic);
-    // The cumulant degree of the reference: hcs_order, or with a tolerance and no hcs_order the smallest degree K whose
-    // HCS (order K − 1) differs from the next (order K) by less than the tolerance in θ, ζ*, a20, a02, a11 (else the
-    // closest, and the Navier–Stokes values are flagged not converged).
-    int reference_degree = static_cast<int>(SchemaPoint(specs, point).number("hcs_order").to_double());
-    bool reference_converged = true;
+    // The cumulant degree K of the reference: hcs_order, or with a tolerance and no hcs_order the smallest K at which
+    // (i) the HCS of order K − 1 differs from the next (order K) by less than the tolerance in θ, ζ*, a20, a02, a11 and
+    // (ii) the column's own error — Sonine (6.1) plus the reference step |v(K) − v(K − 1)| — is below it; if no K up
+    // to the cap meets both, the K of (i) with the smallest error (none: the K of smallest HCS step), flagged not
+    // converged (theory.md §19.16, "Cumulant reference").
+    const int fixed_degree = static_cast<int>(SchemaPoint(specs, point).number("hcs_order").to_double());
     const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
     const bool wants_reference =
         cumulant_reference && std::any_of(coefficients.begin(), coefficients.end(), is_sonine_column);
-    if (wants_reference && tolerance && !point.numbers.contains("hcs_order")) {
-      HcsSonineStates states(d, alpha, beta, kappa,
-                             linear_sonine ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
-                             reference_ansatz(d, linear_sonine));
+    const bool scan_degree = wants_reference && tolerance && !point.numbers.contains("hcs_order");
+    std::array<bool, kMaxRoughReferenceDegree + 1> hcs_settled{};
+    int closest_hcs_degree = 2;  // the K of smallest HCS step, used when no K settles the HCS
+    if (wants_reference && reference_.size() > 16) reference_.clear();  // bound memory in sweeps, between evaluations
+    if (scan_degree) {
       double closest = std::numeric_limits<double>::infinity();
-      reference_converged = false;
       for (int k = 2; k <= kMaxRoughReferenceDegree; ++k) {
-        const double step = hcs_step(states.at(k - 1), states.at(k));
-        if (step < closest) closest = step, reference_degree = k;
-        if (step < tolerance->to_double()) {
-          reference_converged = true;
-          break;
-        }
+        const double step = hcs_step(reference_hcs(d, alpha, beta, kappa, linear_sonine, k),
+                                     reference_hcs(d, alpha, beta, kappa, linear_sonine, k + 1));
+        if (step < closest) closest = step, closest_hcs_degree = k;
+        hcs_settled[k] = step < tolerance->to_double();
       }
     }
     std::optional<HcsStability> stability;
@@ -354,18 +356,31 @@ class RoughModel final : public TransportModel {
         out.push_back(hcs_sonine_value(hcs_states, name, order));
         continue;
       }
-      if (cumulant_reference && is_sonine_column(name)) {  // theory.md §19.16 about the Sonine HCS, error (6.1)
+      if (cumulant_reference && is_sonine_column(name)) {  // theory.md §19.16 about the Sonine HCS
         const int tables = order.tolerance ? kMaxRoughReferenceOrder + 2 : order.order + 2;
-        CoefficientValue v =
-            choose_order(order, kMaxRoughReferenceOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
-              const auto at = [&](int m) {
-                return pick_transport(
-                    reference_values(d, alpha, beta, kappa, linear_sonine, reference_degree, m, tables), name);
-              };
-              return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
-            });
-        v.converged = v.converged && reference_converged;
-        out.push_back(v);
+        const auto at_degree = [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int k) {
+          return choose_order(order, kMaxRoughReferenceOrder, [&](int n) {
+            return reference_value(d, alpha, beta, kappa, linear_sonine, name, k, n, tables);
+          });
+        };
+        if (!scan_degree) {
+          out.push_back(at_degree(fixed_degree));
+          continue;
+        }
+        // Only the K whose HCS has settled are tried (each costs its weighted tables); none settled: the K of
+        // smallest HCS step, flagged.
+        std::optional<CoefficientValue> chosen, closest;
+        for (int k = 2; k <= kMaxRoughReferenceDegree && !chosen; ++k) {
+          if (!hcs_settled[k]) continue;
+          const CoefficientValue v = at_degree(k);
+          if (v.defined && v.converged && v.error < *tolerance) chosen = v;
+          if (v.defined && (!closest || v.error < closest->error)) closest = v;
+        }
+        if (!chosen) {
+          chosen = closest ? *closest : at_degree(closest_hcs_degree);
+          chosen->converged = false;
+        }
+        out.push_back(*chosen);
         continue;
       }
       if (!first && is_sonine_column(name)) {  // theory.md §19.16, error (6.1) from orders N + 1, N + 2
@@ -492,10 +507,10 @@ class RoughModel final : public TransportModel {
     return entry.values[n] = entry.transport->at_maxwellian_state(n);
   }
 
-  /// Returns the ansatz of the reference HCS: the one of the HCS columns (oriented in the linear scheme in 3D, whose
-  /// b_pq the reference carries; isotropic otherwise, theory.md §19.14).
-  static RoughSonineAnsatz reference_ansatz(int d, bool linear) {
-    return linear && d == 3 ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic;
+  /// Returns the ansatz of the reference HCS: oriented in 3D in both schemes (a_pq and b_pq, theory.md §19.14, the
+  /// HCS columns' ansatz beyond the nonlinear order 1 kept isotropic for compatibility), isotropic for disks.
+  static RoughSonineAnsatz reference_ansatz(int d) {
+    return d == 3 ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic;
   }
 
   /// Returns the largest change of θ, ζ*, a20, a02, a11 between two Sonine HCS orders (ζ*, a20 alone at β = −1;
@@ -514,42 +529,81 @@ class RoughModel final : public TransportModel {
     return step;
   }
 
-  /// The tables of one (d, α, β, κ, scheme, cumulant degree) about the Sonine HCS and the values solved so far.
+  /// The tables of one (d, α, β, κ, scheme) about the Sonine HCS: the HCS of every cumulant degree used, one set of
+  /// weighted tables of the highest degree so far (they serve every lower degree) and the values solved so far.
   struct RoughReferenceEntry {
-    RoughSonineCoolingState hcs;
+    std::map<int, RoughSonineCoolingState> hcs;  ///< by cumulant degree K (the HCS of order K − 1)
     std::unique_ptr<RoughSonineTransport> transport;
-    std::map<int, RoughTransportValues> values;
+    bool oriented = false;                                      ///< the tables carry the orientation forms
+    std::map<std::array<int, 2>, RoughTransportValues> values;  ///< by (K, Sonine order)
   };
 
-  /// Returns the Navier–Stokes values of order n about the Sonine HCS of order degree − 1 (theory.md §19.16; in 3D
-  /// with the linear scheme the oriented one, its b_pq carried); NaN where that HCS has no solution. The tables are
-  /// built once to `tables` (≥ n).
+  static std::string reference_key(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                                   bool linear) {
+    return std::to_string(d) + "|" + alpha.to_string() + "|" + beta.to_string() + "|" + kappa.to_string() + "|" +
+           (linear ? "linear" : "nonlinear");
+  }
+
+  /// Returns the reference HCS of cumulant degree K: the Sonine HCS of order K − 1 of the scheme, oriented in 3D
+  /// (theory.md §19.14), solved once per state.
+  const RoughSonineCoolingState& reference_hcs(int d, const Rational& alpha, const Rational& beta,
+                                               const Rational& kappa, bool linear, int degree) {
+    RoughReferenceEntry& entry = reference_[reference_key(d, alpha, beta, kappa, linear)];
+    auto h = entry.hcs.find(degree);
+    if (h == entry.hcs.end())
+      h = entry.hcs
+              .emplace(degree,
+                       rough_sonine_cooling_state(d, alpha, beta, kappa, degree - 1,
+                                                  linear ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
+                                                  reference_ansatz(d)))
+              .first;
+    return h->second;
+  }
+
+  /// Returns the Navier–Stokes values of order n about the Sonine HCS of order degree − 1 (theory.md §19.16; in 3D the
+  /// oriented one, its b_pq carried), degree 1 the Maxwellian reference; NaN where that HCS has no solution. The
+  /// tables are built to max(n, tables) and to the highest degree asked so far.
   RoughTransportValues reference_values(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
                                         bool linear, int degree, int n, int tables) {
-    if (reference_.size() > 16) reference_.clear();  // bound memory in long sweeps (never mid-evaluation)
-    const std::string key = std::to_string(d) + "|" + alpha.to_string() + "|" + beta.to_string() + "|" +
-                            kappa.to_string() + "|" + (linear ? "linear" : "nonlinear") + "|" + std::to_string(degree);
-    auto it = reference_.find(key);
-    if (it == reference_.end()) {
-      RoughReferenceEntry e;
-      e.hcs = rough_sonine_cooling_state(d, alpha, beta, kappa, degree - 1,
-                                         linear ? RoughSonineScheme::linear : RoughSonineScheme::nonlinear,
-                                         reference_ansatz(d, linear));
-      it = reference_.emplace(key, std::move(e)).first;
-    }
-    RoughReferenceEntry& entry = it->second;
-    if (const auto v = entry.values.find(n); v != entry.values.end()) return v->second;
-    if (!entry.hcs.solved) {
+    if (degree == 1) return transport_values(d, alpha, beta, kappa, n, tables);
+    RoughReferenceEntry& entry = reference_[reference_key(d, alpha, beta, kappa, linear)];
+    if (const auto v = entry.values.find({degree, n}); v != entry.values.end()) return v->second;
+    const RoughSonineCoolingState& hcs = reference_hcs(d, alpha, beta, kappa, linear, degree);
+    if (!hcs.solved) {
       const double nan = std::numeric_limits<double>::quiet_NaN();
-      return entry.values[n] = RoughTransportValues{nan, nan, nan, nan, nan, nan, nan};
+      return entry.values[{degree, n}] = RoughTransportValues{nan, nan, nan, nan, nan, nan, nan};
     }
-    if (!entry.transport || entry.transport->highest_order() < n) {
-      const bool oriented = std::any_of(entry.hcs.orientation_coefficients.begin(),
-                                        entry.hcs.orientation_coefficients.end(), [](double b) { return b != 0; });
-      entry.transport =
-          std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, std::max(n, tables), degree, oriented);
+    const bool oriented = std::any_of(hcs.orientation_coefficients.begin(), hcs.orientation_coefficients.end(),
+                                      [](double b) { return b != 0; });
+    if (!entry.transport || entry.transport->highest_order() < n || entry.transport->cumulant_degree() < degree ||
+        (oriented && !entry.oriented)) {
+      const int orders = std::max({n, tables, entry.transport ? entry.transport->highest_order() : 0});
+      const int degrees = std::max(degree, entry.transport ? entry.transport->cumulant_degree() : 0);
+      entry.oriented = entry.oriented || oriented;
+      entry.transport = std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, orders, degrees, entry.oriented);
     }
-    return entry.values[n] = entry.transport->at_cooling_state(n, entry.hcs);
+    return entry.values[{degree, n}] = entry.transport->at_cooling_state(n, hcs);
+  }
+
+  /// Returns one Navier–Stokes column at Sonine order n about the HCS of cumulant degree K: v_N(K) with the error
+  /// (6.1) from orders n + 1, n + 2 plus the reference step |v_N(K) − v_N(K − 1)| (K = 2 against the Maxwellian
+  /// reference, the HCS of order 0); flagged not converging where the lower reference has no value
+  /// (theory.md §19.16, "Cumulant reference").
+  OrderValue reference_value(int d, const Rational& alpha, const Rational& beta, const Rational& kappa, bool linear,
+                             const std::string& name, int degree, int n, int tables) {
+    const auto at = [&](int k, int m) {
+      return pick_transport(reference_values(d, alpha, beta, kappa, linear, k, m, tables), name);
+    };
+    const double v = at(degree, n);
+    OrderValue out = estimate_from_doubles(v, at(degree, n + 1), at(degree, n + 2));
+    if (!out.defined || out.infinite) return out;
+    const double lower = at(degree - 1, n);
+    if (!std::isfinite(lower)) {
+      out.estimate.converging = false;
+      return out;
+    }
+    out.estimate.error = out.estimate.error + Rational::from_double(std::abs(v - lower));
+    return out;
   }
 
   std::map<std::string, RoughSonineEntry> sonine_;
