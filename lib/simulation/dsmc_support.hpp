@@ -41,6 +41,41 @@ inline Vec3 collision_direction(RandomStream& rng, int d, const Vec3& ghat) {
   return sigma;
 }
 
+/// One accepted candidate of the majorant (NTC) collision scheme: the pair i ≠ j, its relative velocity g
+/// (the first `components` components, the rest 0), |g| and the collision direction σ̂.
+struct CandidateCollision {
+  std::size_t i = 0, j = 0;
+  Vec3 g{0, 0, 0};
+  double speed = 0;
+  Vec3 sigma{0, 0, 0};
+};
+
+/// Draws a pair i ≠ j uniformly among the particles of `v` and accepts it with probability
+/// rate(i, j)·|g|/g_max (the pair's rate over the majorant; rate ≤ 1); on acceptance draws σ̂ (density
+/// ∝ (σ̂·ĝ)_+ in dimension d) and returns true. The random numbers are drawn in this order: i, j, the
+/// acceptance, then σ̂.
+template <class Rate>
+bool draw_candidate(RandomStream& rng, const std::vector<Vec3>& v, int d, int components, double gmax, Rate rate,
+                    CandidateCollision& out) {
+  const std::size_t n = v.size();
+  const std::size_t i = rng.below(n);
+  std::size_t j = rng.below(n - 1);
+  if (j >= i) ++j;
+  Vec3 g{0, 0, 0};
+  for (int k = 0; k < components; ++k) g[k] = v[i][k] - v[j][k];
+  const double gn = std::sqrt(dot3(g, g));
+  if (rng.uniform() * gmax >= rate(i, j) * gn) return false;
+  out.i = i;
+  out.j = j;
+  out.g = g;
+  out.speed = gn;
+  out.sigma = collision_direction(rng, d, Vec3{g[0] / gn, g[1] / gn, g[2] / gn});
+  return true;
+}
+
+/// The rate factor of a single-species run: every pair at its |g|.
+inline double unit_rate(std::size_t, std::size_t) { return 1.0; }
+
 /// Removes the mean velocity from the first d components of every particle (collisions conserve it;
 /// a rescaling would amplify its round-off) and returns Σ v² afterwards (m = 1).
 inline double remove_mean_velocity(std::vector<Vec3>& v, int d) {

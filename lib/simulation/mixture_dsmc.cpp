@@ -99,16 +99,13 @@ MixtureDsmcRun run_mixture_hcs_dsmc(int d, const std::vector<DsmcSpecies>& speci
     while (accepted < target) {
       const double gmax = 2 * vmax;
       clock.candidate(frequency, temperature(), pair_time / gmax);
-      const std::size_t i = rng.below(n);
-      std::size_t j = rng.below(n - 1);
-      if (j >= i) ++j;
+      const auto rate = [&](std::size_t i, std::size_t j) { return weight[kind[i] * s + kind[j]]; };
+      detail::CandidateCollision c;
+      if (!detail::draw_candidate(rng, v, d, d, gmax, rate, c)) continue;
+      const std::size_t i = c.i, j = c.j;
       const std::size_t a = kind[i], b = kind[j];
-      Vec3 g{0, 0, 0};
-      for (int k = 0; k < d; ++k) g[k] = v[i][k] - v[j][k];
-      const double gn = std::sqrt(detail::dot3(g, g));
-      if (rng.uniform() * gmax >= weight[a * s + b] * gn) continue;
-      const Vec3 ghat{g[0] / gn, g[1] / gn, g[2] / gn};
-      const Vec3 sigma = detail::collision_direction(rng, d, ghat);
+      const Vec3& g = c.g;
+      const Vec3& sigma = c.sigma;
       const double sg = detail::dot3(sigma, g);
       const double ma = species[a].mass, mb = species[b].mass, impulse = (1 + alpha[a * s + b]) * sg / (ma + mb);
       energy -= ma * detail::dot3(v[i], v[i]) + mb * detail::dot3(v[j], v[j]);

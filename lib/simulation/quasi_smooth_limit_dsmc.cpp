@@ -88,15 +88,12 @@ QuasiSmoothLimitRun run_quasi_smooth_limit_dsmc(int d, const QuasiSmoothLimitPar
     while (accepted < target) {
       const double gmax = 2 * vmax;
       clock.candidate(frequency, energy / (d * count), pair_time / gmax);
-      const std::size_t i = rng.below(n);
-      std::size_t j = rng.below(n - 1);
-      if (j >= i) ++j;
-      Vec3 g{};
-      for (int k = 0; k < 3; ++k) g[k] = v[i][k] - v[j][k];
-      const double gn = std::sqrt(detail::dot3(g, g));
-      if (rng.uniform() * gmax >= gn) continue;
-      const Vec3 ghat{g[0] / gn, g[1] / gn, g[2] / gn};
-      const Vec3 sigma = detail::collision_direction(rng, d, ghat);
+      detail::CandidateCollision c;
+      // rejected with probability 1 − rate·|g|/g_max (the majorant)
+      if (!detail::draw_candidate(rng, v, d, 3, gmax, detail::unit_rate, c)) continue;
+      const std::size_t i = c.i, j = c.j;
+      const Vec3& g = c.g;
+      const Vec3& sigma = c.sigma;
       const double u = detail::dot3(sigma, g);
       const Vec3 kick = detail::cross(Vec3{w[i][0] + w[j][0], w[i][1] + w[j][1], w[i][2] + w[j][2]}, sigma);
       energy -= detail::dot3(v[i], v[i]) + detail::dot3(v[j], v[j]);

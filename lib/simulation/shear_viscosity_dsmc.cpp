@@ -59,17 +59,14 @@ ShearViscosityDsmcRun run_shear_viscosity_dsmc(int d, const ShearViscosityDsmcPa
     while (accepted < target) {
       const double gmax = 2 * vmax;
       clock.candidate(frequency, temperature(), pair_time / gmax);
-      const std::size_t i = rng.below(n);
-      std::size_t j = rng.below(n - 1);
-      if (j >= i) ++j;
-      Vec3 g{0, 0, 0};
-      for (int k = 0; k < d; ++k) g[k] = v[i][k] - v[j][k];
-      const double gn = std::sqrt(detail::dot3(g, g));
-      if (rng.uniform() * gmax >= gn) continue;          // rejected: the pair's rate is |g|/g_max of the majorant
+      detail::CandidateCollision c;
+      // rejected with probability 1 − rate·|g|/g_max (the majorant)
+      if (!detail::draw_candidate(rng, v, d, d, gmax, detail::unit_rate, c)) continue;
       integral += integrand * (clock.tau() - tau_last);  // the state before this collision held until now
       tau_last = clock.tau();
-      const Vec3 ghat{g[0] / gn, g[1] / gn, g[2] / gn};
-      const Vec3 sigma = detail::collision_direction(rng, d, ghat);
+      const std::size_t i = c.i, j = c.j;
+      const Vec3& g = c.g;
+      const Vec3& sigma = c.sigma;
       const double sg = detail::dot3(sigma, g);
       energy -= detail::dot3(v[i], v[i]) + detail::dot3(v[j], v[j]);
       shear -= v[i][0] * v[i][1] + v[j][0] * v[j][1];
