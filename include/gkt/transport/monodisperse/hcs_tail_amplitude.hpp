@@ -16,6 +16,7 @@ namespace gkt {
 /// reaches c ≈ A/2) and the continuation does not settle (2D α = 0.8 and 0.9 at N = 12); below 0.05 it was not
 /// measured.
 inline constexpr double kHcsTailAmplitudeMinAlpha = 0.05;
+/// The highest restitution where hcs_tail_amplitude was measured to work (2D and 3D, N = 12; see above).
 inline constexpr double kHcsTailAmplitudeMaxAlpha = 0.7;
 
 /// The tail amplitude at one resolution and matching speed.
