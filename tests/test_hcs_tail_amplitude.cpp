@@ -103,5 +103,8 @@ TEST(HcsTailAmplitude, RejectsBadInput) {
   EXPECT_THROW(gkt::hcs_tail_amplitude(4, 0.5, 6), std::invalid_argument);
   EXPECT_THROW(gkt::hcs_tail_amplitude(3, 1.0, 6), std::invalid_argument);
   EXPECT_THROW(gkt::hcs_tail_amplitude(3, 0.5, 2), std::invalid_argument);
+  // Outside the measured range [0.05, 0.7] (theory.md §10.7: 2D α = 0.8 does not settle at N = 12), before any work.
+  EXPECT_THROW(gkt::hcs_tail_amplitude(2, 0.8, 12), std::invalid_argument);
+  EXPECT_THROW(gkt::hcs_tail_amplitude(3, 0.04, 12), std::invalid_argument);
   EXPECT_THROW(gkt::boltzmann_gain_loss(2, 0.5, -1, [](double c) { return -c * c; }), std::invalid_argument);
 }

@@ -407,6 +407,56 @@ TEST(ModelFacade, TailSchemeMeetsTolerance1e4PastTheFormerCap) {
   }
 }
 
+// The HCS tail columns of scheme = "tail" (theory.md §10.6, §10.7): tail_exponent is the solver's A = 2β/ζ_r at
+// the resolution, with the error (6.1) from N + 1, N + 2 like every column, and +∞ at α = 1 (the Maxwellian);
+// tail_amplitude is refused where hcs_tail_amplitude was not measured to work (α > 0.7: φ_N converged only inside
+// the Gaussian core; resolutions below 12: 2D α = 0.5 at 5 and 6 does not settle) and by the other schemes; a scene
+// that lists no columns leaves both out.
+TEST(ModelFacade, TailColumnsThroughTheModel) {
+  auto model = gkt::make_transport_model("smooth-inelastic");
+  ParameterPoint p;
+  p.numbers["dimension"] = Rational(2);
+  p.numbers["alpha"] = Rational(1, 2);
+  p.choices["scheme"] = "tail";
+  gkt::OrderRequest order;
+  order.order = 3;
+  const auto v = model->evaluate(p, {"tail_exponent", "cooling_rate"}, order);
+  const auto seq = gkt::tail_galerkin_sequence(2, 0.5, 5, gkt::TailTrialSpace::power_law);
+  ASSERT_EQ(v.size(), 2U);
+  EXPECT_NEAR(v[0].value.to_double(), seq[2].tail_exponent, 1e-12);
+  // 2D: A = 2β/ζ_r, β = 2, ζ_r = ν ζ* with ν = √(2π) (theory.md (9.4), §10.6): A = 4.199 at α = 0.5 (§10.7).
+  EXPECT_NEAR(v[0].value.to_double(), 4 / (std::sqrt(2 * M_PI) * v[1].value.to_double()), 1e-10);
+  const double d1 = std::fabs(seq[3].tail_exponent - seq[2].tail_exponent);
+  const double d2 = std::fabs(seq[4].tail_exponent - seq[3].tail_exponent);
+  EXPECT_NEAR(v[0].error.to_double(), 1.25 * d1 / (1 - d2 / d1), 1e-6 * d1);  // (6.1)
+  ParameterPoint elastic = p;
+  elastic.numbers["alpha"] = Rational(1);
+  const auto a1 = model->evaluate(elastic, {"tail_exponent"}, order);
+  EXPECT_TRUE(a1[0].infinite);
+  auto refused = [&](const ParameterPoint& q, const std::string& c, int n) {
+    gkt::OrderRequest r;
+    r.order = n;
+    return refusal([&] { (void)model->evaluate(q, {c}, r); });
+  };
+  ParameterPoint core = p;  // 2D α = 0.8: the continuation does not settle at N = 12 (theory.md §10.7)
+  core.numbers["alpha"] = Rational(4, 5);
+  EXPECT_TRUE(contains(refused(core, "tail_amplitude", 12),
+                       "coefficients: tail_amplitude: alpha: must be a number in [0.05, 0.7] for the tail amplitude"));
+  EXPECT_TRUE(contains(refused(elastic, "tail_amplitude", 12), "coefficients: tail_amplitude: alpha:"));
+  EXPECT_TRUE(contains(refused(p, "tail_amplitude", 6), "order: tail_amplitude needs a resolution in [12, 22]"));
+  ParameterPoint standard = p;
+  standard.choices["scheme"] = "standard";
+  for (const char* c : {"tail_exponent", "tail_amplitude"})
+    EXPECT_TRUE(contains(refused(standard, c, 2),
+                         std::string("coefficients: ") + c + " is computed by scheme = \"tail\" only"));
+  const auto names = model->coefficient_names();
+  const auto defaults = model->default_coefficients({});
+  for (const char* c : {"tail_exponent", "tail_amplitude"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), c), names.end()) << c;
+    EXPECT_EQ(std::find(defaults.begin(), defaults.end(), c), defaults.end()) << c;
+  }
+}
+
 // reference_state = "hcs" (theory.md §17.11): a mixture of identical species gives the smooth-inelastic
 // model's η* and κ* (its first order keeps a2 of the nonlinear HCS in f0) to round-off; the default
 // (Maxwellian, GDH) does not; dense (φ = 1/5), the dense smooth-inelastic model with packing_fraction.

@@ -21,6 +21,7 @@ const std::vector<std::string> kRough{"rough", "rough-walton"};
 const std::vector<std::string> kMixture{"mixture"};
 const std::vector<std::string> kViscoelastic{"viscoelastic"};
 const std::vector<std::string> kAggregation{"aggregation"};
+const std::vector<std::string> kSmoothInelastic{"smooth-inelastic"};
 
 std::vector<ColumnDescription> make_catalogue() {
   const std::string aggregation_units = "m₁ = σ₁ = θ0 = n₁(0) = 1, time t₀ = 1/(n₁(0)σ₁^{d−1}√(θ0/m₁)); energies in θ0";
@@ -171,6 +172,14 @@ std::vector<ColumnDescription> make_catalogue() {
       {"critical_length", kMixture, "mixture HCS stability: L_c* (theory.md §17.7, §18.8)", "v̄/ν0 (L* = L ν0/v̄)",
        R::length},
       {"cooling_rate_first_order", kMixture, "ζ_U in ζ = ζ0 + ζ_U ∇·u (theory.md (18.7))", "dimensionless", R::none},
+      // The HCS tail φ ~ 𝒜 c^γ exp(−A c) of the tail scheme (theory.md §10.6, §10.7), in the scaled variables.
+      {"tail_exponent", kSmoothInelastic,
+       "HCS tail exponent A of φ ~ exp(−A c), A = 2β/ζ_r, c = v/v0 (scheme = \"tail\"; theory.md §10.6)", "1/v0",
+       R::other_reference},
+      {"tail_amplitude", kSmoothInelastic,
+       "HCS tail amplitude 𝒜 of φ ~ 𝒜 c^γ exp(−A c), φ the scaled distribution (scheme = \"tail\"; theory.md "
+       "§10.7)",
+       "n v0^{−d}", R::other_reference},
       // Every model without its own entry.
       {"shear_viscosity", {}, "shear viscosity η", "η0", R::viscosity},
       {"thermal_conductivity", {}, "thermal conductivity κ (q = −κ∇T)", "κ0", R::conductivity},

@@ -300,10 +300,10 @@ HcsTailMatch match_at(int d, double alpha, const TailHcsProfile& p, double gamma
 HcsTailAmplitude hcs_tail_amplitude(int dimension, double alpha, int order) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
-  if (!(alpha > 0 && alpha < 1))
+  if (!(alpha >= kHcsTailAmplitudeMinAlpha && alpha <= kHcsTailAmplitudeMaxAlpha))
     throw std::invalid_argument(
-        "alpha: must be a number in (0, 1) for the tail amplitude (α = 1 has no "
-        "exponential tail), got " +
+        "alpha: must be a number in [0.05, 0.7] for the tail amplitude, where it was measured to work (above, the "
+        "tail scheme's HCS is converged only inside the Gaussian core; alpha = 1 has no exponential tail), got " +
         std::to_string(alpha));
   if (order < 3 || order > kTailGalerkinMaxOrder)
     throw std::invalid_argument("order: must be an integer in [3, " + std::to_string(kTailGalerkinMaxOrder) +
