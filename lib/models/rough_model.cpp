@@ -333,7 +333,8 @@ class RoughModel final : public TransportModel {
         throw std::invalid_argument("coefficients: " + name +
                                     " of model rough is computed at order 1 only; use order = 1 without tolerance, "
                                     "or ask for the HCS columns or shear_viscosity, bulk_viscosity, "
-                                    "thermal_conductivity, density_heat_coefficient, cooling_rate_first_order");
+                                    "thermal_conductivity, density_heat_coefficient, cooling_rate_first_order or the "
+                                    "stability columns");
     }
     // The first-approximation state of the scheme, only for first-approximation HCS columns (the transport and
     // stability values use the Maxwellian state whatever `hcs`, §19.7, §19.15).
