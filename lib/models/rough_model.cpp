@@ -250,21 +250,23 @@ class RoughModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     auto specs = parameters();
-    // The trajectory integrates the first-Sonine balances (theory.md §19.13): no nonlinear scheme there; for
-    // spheres the linear scheme may carry the orientation term b00 P ("linear-oriented", §19.14 at order 1).
+    // The trajectory integrates the linear scheme's balances at Sonine order `order` (theory.md §19.13, (19.25b)): no
+    // nonlinear scheme there; for spheres the linear scheme may carry the orientation terms b_pq P S_p S_q
+    // ("linear-oriented", §19.14).
     for (auto& spec : specs)
       if (spec.name == "hcs") {
         spec.choices = {"linear", "maxwellian", "linear-or-maxwellian", "linear-oriented"};
         spec.description +=
             "; gkt evolve: linear-oriented = the linear scheme with the orientation term b00 "
-            "((c.w)^2 - c^2 w^2/3), spheres only, columns b00 and orientation_correlation";
+            "((c.w)^2 - c^2 w^2/3), spheres only, columns b00 and orientation_correlation (with order N > 1 "
+            "every b_pq, p + q <= N - 1)";
       }
     specs = rough_evolution_parameters(specs, {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
     for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
     specs.push_back(rough_evolution_order_parameter());
     return specs;
   }
-  /// T_t(τ), T_r(τ) and the cumulants from Maxwellians at T_t(0), T_r(0) (theory.md §19.13).
+  /// T_t(τ), T_r(τ) and the cumulants (at Sonine order `order`) from T_t(0), T_r(0) (theory.md §19.13).
   Trajectory evolve(const TrajectoryRequest& request) override {
     return rough_trajectory(evolution_parameters(), request);
   }

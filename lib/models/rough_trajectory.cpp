@@ -1,7 +1,8 @@
 // What `gkt evolve` asks the "rough" model for: the free cooling of rough spheres or disks from
 // Maxwellians at T_t(0), T_r(0), in the Maxwellian or the linear first-Sonine scheme, the latter for spheres
-// optionally with the orientation term b00 P (hcs = "linear-oriented") (rough_cooling_evolution.hpp; docs/theory.md
-// §19.13, conventions.md), and of the Walton gas in the Maxwellian approximation.
+// optionally with the orientation term b00 P (hcs = "linear-oriented"), or the linear scheme at Sonine order 2–3
+// with every a_pq (and b_pq) (`order`, (19.25b)) (rough_cooling_evolution.hpp; docs/theory.md §19.13,
+// conventions.md), and of the Walton gas in the Maxwellian approximation.
 #include <array>
 #include <cmath>
 #include <stdexcept>
