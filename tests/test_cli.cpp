@@ -814,7 +814,8 @@ TEST(CliRoughEvolve, RelaxesToTheTableAndRefusesBadInput) {
            {"moment_of_inertia=0", "moment_of_inertia: must be a number in (0, 1], got 0"},
            {"rotational_temperature=0", "rotational_temperature: must be a number > 0"},
            {"translational_temperature=-1", "translational_temperature: must be a number > 0"},
-           {"order=2", "order: unknown key for gkt evolve"},
+           {"order=4", "order: must be an integer in [1, 3], got 4"},
+           {"order=2 --set 'hcs=\"maxwellian\"'", "order: the trajectory at order 2 needs hcs = \"linear\""},
            {"'hcs=\"nonlinear\"'", "hcs: must be one of"},
            {"alpha=0.5 --set beta=0", "hcs: the linear scheme has no root at dimension = 3, alpha = 0.5, beta = 0"}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set " + set);
@@ -914,6 +915,53 @@ TEST(CliRoughEvolve, InitialCumulants) {
   const CliRun walton = run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + " --set a20=0.1");
   EXPECT_EQ(walton.status, 2);
   EXPECT_NE(walton.err.find("a20: unknown key for gkt evolve"), std::string::npos) << walton.err;
+}
+
+// `gkt evolve` at Sonine order 2 (theory.md §19.13, (19.25b)–(19.25c)): the oriented trajectory's last row equals
+// `gkt table` at order 2 (the oriented linear HCS) in θ, ζ*, a20, a02, a11, a03, b00, b01 and C; its columns add the
+// cubic cumulants and b10, b01 after the order-1 ones.
+TEST(CliRoughEvolve, SonineOrderTwoRelaxesToTheTable) {
+  const CliRun evolve =
+      run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set order=2 --set 'hcs=\"linear-oriented\"'");
+  const CliRun table =
+      run_gkt("table " + scene_path("rough_hcs.toml") +
+              " --set 'alpha=[0.9]' --set order=2 --set 'coefficients=[\"rotational_temperature_ratio\", "
+              "\"cooling_rate\", \"a20\", \"a02\", \"a11\", \"a03\", \"b00\", \"b01\", "
+              "\"orientation_correlation\"]'");
+  ASSERT_EQ(evolve.status, 0) << evolve.err;
+  ASSERT_EQ(table.status, 0) << table.err;
+  const auto et = parse_csv(evolve.out), tt = parse_csv(table.out);
+  ASSERT_EQ(et[0],
+            (std::vector<std::string>{"time", "collisions", "translational_temperature", "rotational_temperature",
+                                      "rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11", "a30", "a21",
+                                      "a12", "a03", "b00", "b10", "b01", "orientation_correlation"}));
+  for (const std::string name : {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11", "a03", "b00",
+                                 "b01", "orientation_correlation"}) {
+    const auto e = std::find(et[0].begin(), et[0].end(), name) - et[0].begin();
+    const auto t = std::find(tt[0].begin(), tt[0].end(), name) - tt[0].begin();
+    ASSERT_LT(static_cast<std::size_t>(t), tt[0].size()) << name;
+    EXPECT_NEAR(std::stod(et.back()[static_cast<std::size_t>(e)]), std::stod(tt[1][static_cast<std::size_t>(t)]), 1e-8)
+        << name;
+  }
+}
+
+// `gkt stability` about the Sonine HCS (reference_state = "hcs", theory.md (19.33)): values with error columns (the
+// Sonine and cumulant-degree steps), moved from the Maxwellian first approximation (disks, (0.9, 0.5)).
+TEST(CliRoughStability, AboutTheSonineHcs) {
+  const std::string base = "stability " + scene_path("rough_stability.toml") +
+                           " --set dimension=2 --set moment_of_inertia=0.5 --set alpha=0.9 --set beta=0.5";
+  const CliRun plain = run_gkt(base);
+  const CliRun hcs = run_gkt(base + " --set 'reference_state=\"hcs\"' --set 'hcs=\"nonlinear\"'");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  ASSERT_EQ(hcs.status, 0) << hcs.err;
+  const auto p = parse_csv(plain.out), h = parse_csv(hcs.out);
+  ASSERT_EQ(h[0], p[0]);
+  ASSERT_EQ(h[0][0], "critical_wavenumber_shear");
+  EXPECT_EQ(p[1][3], "nan");  // the first approximation has no error estimate
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_GT(std::stod(h[1][c + 3]), 0) << h[0][c];
+    EXPECT_GT(std::abs(std::stod(h[1][c]) - std::stod(p[1][c])), 1e-5) << h[0][c];
+  }
 }
 
 // `gkt stability` for rough spheres (theory.md §19.15): the three stability columns by default; β = −1

@@ -281,7 +281,6 @@ TEST(RoughCumulantReference, ModelKeys) {
   bad.choices = {{"hcs", "maxwellian"}, {"reference_state", "hcs"}};
   EXPECT_THROW((void)model->evaluate(bad, {"shear_viscosity"}, request), std::invalid_argument);
   bad.choices = {{"reference_state", "hcs"}};
-  EXPECT_THROW((void)model->evaluate(bad, {"critical_length"}, request), std::invalid_argument);
   request.order = 5;
   EXPECT_THROW((void)model->evaluate(bad, {"shear_viscosity"}, request), std::invalid_argument);
 }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,8 @@
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
+
+#include <Eigen/Dense>
 
 #include "evolution/cvode_support.hpp"
 
@@ -33,9 +36,17 @@ struct Problem {
   const RoughCoolingRates* rates = nullptr;             // the engine's balances, or
   const RoughMaxwellianRates* maxwellian = nullptr;     // Maxwellian rates as a function of θ
   const RoughOrientedCoolingRates* oriented = nullptr;  // with `rates` (its collision frequency): the b00 balances
+  const RoughSonineCoolingRates* sonine = nullptr;      // or the order-N linear scheme alone (y = ln T_t, ln T_r, C, u)
+  Eigen::PartialPivLU<Eigen::MatrixXd> projection;      // ⟨ψ_t Φ_w⟩_M of the order-N scheme, factorised
+  std::vector<double> sonine_initial;                   // u(0) of the order-N scheme
   bool linear = false;
   std::array<double, 3> base{};  // Maxwellian ⟨x²⟩, ⟨y²⟩, ⟨xy⟩
   RoughCumulants initial{};      // a20, a02, a11 at τ = 0 (linear scheme)
+
+  [[nodiscard]] int size() const {
+    if (sonine != nullptr) return 3 + static_cast<int>(sonine->unknowns());
+    return oriented != nullptr ? 7 : linear ? 6 : 3;
+  }
 
   [[nodiscard]] std::array<double, 3> cumulants(const double* y) const {
     return linear ? std::array<double, 3>{y[3], y[4], y[5]} : std::array<double, 3>{};
@@ -58,6 +69,26 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
     dv[0] = -sq * z[0];
     dv[1] = -sq * z[1];
     dv[2] = sq;
+    return 0;
+  }
+  if (p.sonine != nullptr) {
+    // theory.md (19.25b): Π du/ds = G(τ, u) + l (z_r − z_t)⟨ψ⟩(u), ⟨ψ⟩(u) = ⟨ψ⟩_M + Π u, ds = √T_t dτ.
+    const std::size_t k = p.sonine->unknowns();
+    const std::span<const double> u(yv + 3, k);
+    const RoughSonineRates r = p.sonine->at(std::exp(log_theta) / p.sonine->kappa(), u);
+    dv[0] = -sq * r.translational_rate;
+    dv[1] = -sq * r.rotational_rate;
+    dv[2] = sq * p.sonine->collision_frequency_factor(u);
+    const double spin_excess = r.rotational_rate - r.translational_rate;
+    const auto& pm = p.sonine->projections();
+    Eigen::VectorXd rhs(static_cast<Eigen::Index>(k));
+    for (std::size_t t = 0; t < k; ++t) {
+      double moment = p.sonine->maxwellian_moments()[t];
+      for (std::size_t w = 0; w < k; ++w) moment += pm[t][w] * u[w];
+      rhs(static_cast<Eigen::Index>(t)) = r.residual[t] + p.sonine->spin_degrees()[t] * spin_excess * moment;
+    }
+    const Eigen::VectorXd du = p.projection.solve(rhs);
+    for (std::size_t t = 0; t < k; ++t) dv[3 + t] = sq * du(static_cast<Eigen::Index>(t));
     return 0;
   }
   const auto a = p.cumulants(yv);
@@ -98,7 +129,7 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   for (std::size_t i = 0; i < times.size(); ++i)
     if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
       throw std::invalid_argument("times: must be positive and increasing");
-  const int n = problem.oriented != nullptr ? 7 : problem.linear ? 6 : 3;
+  const int n = problem.size();
 
   SUNContext raw_context = nullptr;
   check(SUNContext_Create(nullptr, &raw_context), "SUNContext_Create");
@@ -108,8 +139,12 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   yv[0] = std::log(translational0);
   yv[1] = std::log(rotational0);
   yv[2] = 0.0;
-  for (int k = 3; k < std::min(n, 6); ++k) yv[k] = problem.initial[static_cast<std::size_t>(k - 3)];
-  if (n == 7) yv[6] = 0.0;  // b00(0) = 0: Maxwellian directions
+  if (problem.sonine != nullptr) {
+    for (int k = 3; k < n; ++k) yv[k] = problem.sonine_initial[static_cast<std::size_t>(k - 3)];
+  } else {
+    for (int k = 3; k < std::min(n, 6); ++k) yv[k] = problem.initial[static_cast<std::size_t>(k - 3)];
+    if (n == 7) yv[6] = 0.0;  // b00(0) = 0: Maxwellian directions
+  }
 
   const std::unique_ptr<void, CvodeDeleter> cvode(CVodeCreate(CV_BDF, raw_context));
   if (!cvode) throw std::runtime_error("CVODE: CVodeCreate failed");
@@ -134,6 +169,26 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
     s.translational_temperature = std::exp(yv[0]);
     s.rotational_temperature = std::exp(yv[1]);
     s.collisions = yv[2];
+    if (problem.sonine != nullptr) {
+      const RoughSonineCoolingRates& r = *problem.sonine;
+      const std::size_t na = r.cumulant_indices().size();
+      s.cumulants.assign(yv + 3, yv + 3 + na);
+      s.orientation_coefficients.assign(yv + 3 + na, yv + n);
+      for (std::size_t w = 0; w < na; ++w) {
+        const auto pq = r.cumulant_indices()[w];
+        if (pq == std::array<int, 2>{2, 0}) s.a20 = s.cumulants[w];
+        if (pq == std::array<int, 2>{0, 2}) s.a02 = s.cumulants[w];
+        if (pq == std::array<int, 2>{1, 1}) s.a11 = s.cumulants[w];
+      }
+      for (std::size_t o = 0; o < s.orientation_coefficients.size(); ++o)
+        s.orientation_correlation += r.correlation_weights()[o] * s.orientation_coefficients[o];
+      if (!s.orientation_coefficients.empty()) s.b00 = s.orientation_coefficients.front();  // (0, 0) comes first
+      if (dimension != 3) s.orientation_correlation = std::nan("");                         // c·ŵ ≡ 0 for disks
+      const std::span<const double> u(yv + 3, r.unknowns());
+      s.cooling_rate = (d + 2) / 4 * r.at(std::exp(yv[1] - yv[0]) / r.kappa(), u).translational_rate;
+      result.samples.push_back(std::move(s));
+      continue;
+    }
     const auto a = problem.cumulants(yv);
     s.a20 = a[0];
     s.a02 = a[1];
@@ -213,6 +268,31 @@ RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rate
   problem.initial = initial_cumulants;
   problem.base = rates.maxwellian_fourth_moments();
   return integrate(problem, 3, translational0, rotational0, times, rtol, atol);
+}
+
+RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& rates, double translational0,
+                                                 double rotational0, const std::vector<double>& times, double rtol,
+                                                 double atol, const RoughCumulants& initial_cumulants) {
+  check_rough_initial_cumulants(rates.dimension(), initial_cumulants);
+  if (rates.spin_decoupled() && (initial_cumulants[1] != 0 || initial_cumulants[2] != 0))
+    throw std::invalid_argument("a02, a11: at beta = -1 the spin decouples and carries no cumulant: leave them 0");
+  Problem problem;
+  problem.sonine = &rates;
+  problem.linear = true;
+  const std::size_t k = rates.unknowns();
+  Eigen::MatrixXd pm(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
+  for (std::size_t t = 0; t < k; ++t)
+    for (std::size_t w = 0; w < k; ++w)
+      pm(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(w)) = rates.projections()[t][w];
+  problem.projection.compute(pm);
+  problem.sonine_initial.assign(k, 0.0);  // the higher cumulants and every b_pq start at 0
+  for (std::size_t w = 0; w < rates.cumulant_indices().size(); ++w) {
+    const auto pq = rates.cumulant_indices()[w];
+    if (pq == std::array<int, 2>{2, 0}) problem.sonine_initial[w] = initial_cumulants[0];
+    if (pq == std::array<int, 2>{0, 2}) problem.sonine_initial[w] = initial_cumulants[1];
+    if (pq == std::array<int, 2>{1, 1}) problem.sonine_initial[w] = initial_cumulants[2];
+  }
+  return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol);
 }
 
 RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,

@@ -46,6 +46,9 @@ Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const Traj
 /// linear scheme (default 0), bounded here by the union of both dimensions' realizability limits; the
 /// exact limits of theory.md (19.24a) are applied per dimension (check_rough_initial_cumulants).
 std::vector<ParameterSpec> rough_initial_cumulant_parameters();
+/// Returns the key `order` of `gkt evolve` for the "rough" model: the Sonine order N of the linear scheme's
+/// trajectory, an integer in [1, 3] (default 1: the first-Sonine trajectory; theory.md §19.13, (19.25b)).
+ParameterSpec rough_evolution_order_parameter();
 /// Returns the Walton gas's Maxwellian cooling trajectory (keys dimension, alpha, beta0,
 /// moment_of_inertia, friction, the initial temperatures, rtol, atol): the temperatures, θ and ζ*.
 Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request);

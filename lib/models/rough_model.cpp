@@ -13,7 +13,8 @@
 // with the error of theory.md (6.1) from orders N + 1, N + 2, about Maxwellians or (reference_state = "hcs") about
 // the Sonine HCS with its cumulants (§19.16, (19.44)–(19.45); the error then adds the step from the next lower
 // cumulant degree); the linear stability of the HCS from the
-// first-Sonine coefficients (rough_hcs_stability.hpp, §19.15).
+// first-Sonine coefficients (rough_hcs_stability.hpp, §19.15), or at order N about the Maxwellian HCS or
+// (reference_state = "hcs") about the Sonine HCS, from its θ, ζ* and the coefficients about it (§19.15, (19.33)).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -72,6 +73,38 @@ HcsStability rough_stability(int d, const Rational& alpha, const Rational& beta,
   in.density_heat_coefficient = decoupled ? q.density_heat_translational : q.density_heat_total;
   in.cooling_rate_first_order = b.cooling_rate_first_order;
   return rough_hcs_stability(in);
+}
+
+/// Returns the HCS stability of the constant-β gas about a reference state with temperature ratio θ and cooling
+/// rate ζ* and the Navier–Stokes values `v` computed about it (Sonine order N; theory.md §19.15, (19.33)); NaN values
+/// where the state or the coefficients do not exist or η*, κ* − μ* make (19.31) meaningless (η* ≤ 0 or κ* ≤ 0 at a
+/// diverging order). At β = −1 (θ = +∞) the translational κ*, μ*.
+HcsStability rough_reference_stability(int d, const Rational& alpha, const Rational& beta, double theta, double zeta,
+                                       const RoughTransportValues& v) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const bool decoupled = std::isinf(theta);
+  RoughStabilityInput in;
+  in.dimension = d;
+  in.temperature_ratio = theta;
+  const bool conservative = alpha == Rational(1) && (beta == Rational(1) || beta == Rational(-1));
+  in.cooling_rate = conservative ? 0.0 : zeta;  // ζ* = 0 exactly where no energy is lost ((19.3))
+  in.shear_viscosity = v.shear_viscosity;
+  in.bulk_viscosity = v.bulk_viscosity;
+  in.thermal_conductivity = decoupled ? v.thermal_conductivity_translational : v.thermal_conductivity;
+  in.density_heat_coefficient = decoupled ? v.density_heat_translational : v.density_heat_coefficient;
+  in.cooling_rate_first_order = v.cooling_rate_first_order;
+  if (!(theta > 0) || !std::isfinite(zeta) || !(in.shear_viscosity > 0) || !std::isfinite(in.shear_viscosity) ||
+      !(in.thermal_conductivity > 0) || !std::isfinite(in.thermal_conductivity) ||
+      !std::isfinite(in.density_heat_coefficient))
+    return HcsStability{nan, nan, nan};
+  return rough_hcs_stability(in);
+}
+
+/// Returns the stability value `name` of `s` as a double (critical_length +∞ for a stable HCS).
+double pick_stability(const HcsStability& s, const std::string& name) {
+  return name == "critical_wavenumber_shear"  ? s.shear_wavenumber
+         : name == "critical_wavenumber_heat" ? s.heat_wavenumber
+                                              : s.critical_length;
 }
 
 /// Highest Sonine order of the rough HCS (cumulants a_pq, p + q ≤ N + 1); its error needs order N + 1
@@ -159,7 +192,8 @@ class RoughModel final : public TransportModel {
            "reference; with reference_state = hcs about the Sonine HCS and its cumulants, order up to 4); "
            "translation-rotation "
            "correlation (3D; first approximation at order 1, from the oriented Sonine HCS at orders 2-3); "
-           "linear stability of the homogeneous cooling state";
+           "linear stability of the homogeneous cooling state (first Sonine about the Maxwellian HCS, or at order up "
+           "to 8, or 4 about the Sonine HCS with reference_state = hcs)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto names = kRoughTableColumns;
@@ -208,28 +242,31 @@ class RoughModel final : public TransportModel {
                      {}});
     return specs;
   }
-  /// The HCS columns take orders 1 … kMaxRoughHcsOrder, the Navier–Stokes columns 1 … kMaxRoughOrder; C and
-  /// the stability values are first approximations.
+  /// The HCS columns take orders 1 … kMaxRoughHcsOrder, the Navier–Stokes columns and the stability values
+  /// 1 … kMaxRoughOrder (1 … kMaxRoughReferenceOrder about the Sonine HCS); C beyond order 1 is the Sonine HCS's.
   [[nodiscard]] int max_order() const override { return kMaxRoughOrder; }
   [[nodiscard]] bool supports(Capability capability) const override {
     return capability == Capability::table || capability == Capability::evolve || capability == Capability::stability;
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     auto specs = parameters();
-    // The trajectory integrates the first-Sonine balances (theory.md §19.13): no nonlinear scheme there; for
-    // spheres the linear scheme may carry the orientation term b00 P ("linear-oriented", §19.14 at order 1).
+    // The trajectory integrates the linear scheme's balances at Sonine order `order` (theory.md §19.13, (19.25b)): no
+    // nonlinear scheme there; for spheres the linear scheme may carry the orientation terms b_pq P S_p S_q
+    // ("linear-oriented", §19.14).
     for (auto& spec : specs)
       if (spec.name == "hcs") {
         spec.choices = {"linear", "maxwellian", "linear-or-maxwellian", "linear-oriented"};
         spec.description +=
             "; gkt evolve: linear-oriented = the linear scheme with the orientation term b00 "
-            "((c.w)^2 - c^2 w^2/3), spheres only, columns b00 and orientation_correlation";
+            "((c.w)^2 - c^2 w^2/3), spheres only, columns b00 and orientation_correlation (with order N > 1 "
+            "every b_pq, p + q <= N - 1)";
       }
     specs = rough_evolution_parameters(specs, {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
     for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
+    specs.push_back(rough_evolution_order_parameter());
     return specs;
   }
-  /// T_t(τ), T_r(τ) and the cumulants from Maxwellians at T_t(0), T_r(0) (theory.md §19.13).
+  /// T_t(τ), T_r(τ) and the cumulants (at Sonine order `order`) from T_t(0), T_r(0) (theory.md §19.13).
   Trajectory evolve(const TrajectoryRequest& request) override {
     return rough_trajectory(evolution_parameters(), request);
   }
@@ -243,7 +280,8 @@ class RoughModel final : public TransportModel {
     // chosen by a tolerance scan (row_tolerance set) carries its estimate like any other order. The HCS
     // columns take the Sonine HCS (theory.md §19.14) beyond it or with the nonlinear scheme, the five
     // Navier–Stokes columns the Sonine solver of §19.16; C at order 1 is §19.8's first approximation, beyond it
-    // the oriented Sonine HCS's (§19.14, linear or nonlinear); the stability values are first approximations.
+    // the oriented Sonine HCS's (§19.14, linear or nonlinear); the stability values at order N > 1 come from the
+    // coefficients of order N about the Maxwellian HCS, or with reference_state = "hcs" about the Sonine HCS (§19.15).
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     const bool hcs_sonine = scheme == "nonlinear" || !first;
     // reference_state = "hcs": the five Navier–Stokes columns about the Sonine HCS of `hcs` (3D: oriented, both
@@ -286,21 +324,19 @@ class RoughModel final : public TransportModel {
                                       std::to_string(kMaxRoughHcsOrder) + ", got " + std::to_string(order.order));
         continue;
       }
-      if (cumulant_reference && is_sonine_column(name)) {
+      if (cumulant_reference && (is_sonine_column(name) || is_critical(name))) {
         if (!order.tolerance && order.order > kMaxRoughReferenceOrder)
           throw std::invalid_argument("order: " + name +
                                       " of model rough with reference_state = \"hcs\" takes orders 1 to " +
                                       std::to_string(kMaxRoughReferenceOrder) + ", got " + std::to_string(order.order));
         continue;
       }
-      if (cumulant_reference && is_critical(name))
-        throw std::invalid_argument("reference_state: " + name +
-                                    " is computed about the Maxwellian HCS only; use reference_state = \"maxwellian\"");
-      if (!first && !is_sonine_column(name))
+      if (!first && !is_sonine_column(name) && !is_critical(name))
         throw std::invalid_argument("coefficients: " + name +
                                     " of model rough is computed at order 1 only; use order = 1 without tolerance, "
                                     "or ask for the HCS columns or shear_viscosity, bulk_viscosity, "
-                                    "thermal_conductivity, density_heat_coefficient, cooling_rate_first_order");
+                                    "thermal_conductivity, density_heat_coefficient, cooling_rate_first_order or the "
+                                    "stability columns");
     }
     // The first-approximation state of the scheme, only for first-approximation HCS columns (the transport and
     // stability values use the Maxwellian state whatever `hcs`, §19.7, §19.15).
@@ -335,11 +371,12 @@ class RoughModel final : public TransportModel {
     const int fixed_degree = static_cast<int>(SchemaPoint(specs, point).number("hcs_order").to_double());
     const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
     const bool wants_reference =
-        cumulant_reference && std::any_of(coefficients.begin(), coefficients.end(), is_sonine_column);
+        cumulant_reference && std::any_of(coefficients.begin(), coefficients.end(),
+                                          [&](const std::string& c) { return is_sonine_column(c) || is_critical(c); });
     const bool scan_degree = wants_reference && tolerance && !point.numbers.contains("hcs_order");
     std::array<bool, kMaxRoughReferenceDegree + 1> hcs_settled{};
-    int closest_hcs_degree = 2;  // the K of smallest HCS step, used when no K settles the HCS
-    if (wants_reference && reference_.size() > 16) reference_.clear();  // bound memory in sweeps, between evaluations
+    int closest_hcs_degree = 2;                      // the K of smallest HCS step, used when no K settles the HCS
+    if (reference_.size() > 16) reference_.clear();  // bound memory in sweeps, between evaluations
     if (scan_degree) {
       double closest = std::numeric_limits<double>::infinity();
       for (int k = 2; k <= kMaxRoughReferenceDegree; ++k) {
@@ -356,7 +393,9 @@ class RoughModel final : public TransportModel {
         out.push_back(hcs_sonine_value(hcs_states, name, order));
         continue;
       }
-      if (cumulant_reference && is_sonine_column(name)) {  // theory.md §19.16 about the Sonine HCS
+      // theory.md §19.16 about the Sonine HCS; the stability values from its θ, ζ* and those coefficients (§19.15,
+      // (19.33)), with the same error: (6.1) on the value itself plus the step from the next lower cumulant degree.
+      if (cumulant_reference && (is_sonine_column(name) || is_critical(name))) {
         const int tables = order.tolerance ? kMaxRoughReferenceOrder + 2 : order.order + 2;
         const auto at_degree = [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int k) {
           return choose_order(order, kMaxRoughReferenceOrder, [&](int n) {
@@ -390,6 +429,14 @@ class RoughModel final : public TransportModel {
           const auto at = [&](int m) {
             return pick_transport(transport_values(d, alpha, beta, kappa, m, tables), name);
           };
+          return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
+        }));
+        continue;
+      }
+      if (!first && is_critical(name)) {  // about the Maxwellian HCS at order N (theory.md §19.15, (19.33))
+        const int tables = order.tolerance ? kMaxRoughOrder + 2 : order.order + 2;
+        out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
+          const auto at = [&](int m) { return reference_column(d, alpha, beta, kappa, true, name, 1, m, tables); };
           return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
         }));
         continue;
@@ -536,6 +583,7 @@ class RoughModel final : public TransportModel {
     std::unique_ptr<RoughSonineTransport> transport;
     bool oriented = false;                                      ///< the tables carry the orientation forms
     std::map<std::array<int, 2>, RoughTransportValues> values;  ///< by (K, Sonine order)
+    std::optional<RoughCoolingState> maxwellian;                ///< the Maxwellian HCS (θ, ζ* of degree 1)
   };
 
   static std::string reference_key(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
@@ -585,15 +633,35 @@ class RoughModel final : public TransportModel {
     return entry.values[{degree, n}] = entry.transport->at_cooling_state(n, hcs);
   }
 
+  /// Returns column `name` — a Navier–Stokes column or a stability value — at Sonine order n about the HCS of cumulant
+  /// degree K (1: the Maxwellian reference at the Maxwellian θ, ζ*); the stability values from that HCS's θ, ζ* and the
+  /// five coefficients about it (theory.md (19.33)); NaN where that HCS has no solution.
+  double reference_column(int d, const Rational& alpha, const Rational& beta, const Rational& kappa, bool linear,
+                          const std::string& name, int degree, int n, int tables) {
+    const RoughTransportValues v = reference_values(d, alpha, beta, kappa, linear, degree, n, tables);
+    if (is_sonine_column(name)) return pick_transport(v, name);
+    double theta = 0, zeta = 0;
+    if (degree == 1) {
+      RoughReferenceEntry& entry = reference_[reference_key(d, alpha, beta, kappa, linear)];
+      if (!entry.maxwellian)
+        entry.maxwellian = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
+      theta = entry.maxwellian->temperature_ratio;
+      zeta = entry.maxwellian->cooling_rate;
+    } else {
+      const RoughSonineCoolingState& hcs = reference_hcs(d, alpha, beta, kappa, linear, degree);
+      theta = hcs.temperature_ratio;
+      zeta = hcs.cooling_rate;
+    }
+    return pick_stability(rough_reference_stability(d, alpha, beta, theta, zeta, v), name);
+  }
+
   /// Returns one Navier–Stokes column at Sonine order n about the HCS of cumulant degree K: v_N(K) with the error
   /// (6.1) from orders n + 1, n + 2 plus the reference step |v_N(K) − v_N(K − 1)| (K = 2 against the Maxwellian
   /// reference, the HCS of order 0); flagged not converging where the lower reference has no value
   /// (theory.md §19.16, "Cumulant reference").
   OrderValue reference_value(int d, const Rational& alpha, const Rational& beta, const Rational& kappa, bool linear,
                              const std::string& name, int degree, int n, int tables) {
-    const auto at = [&](int k, int m) {
-      return pick_transport(reference_values(d, alpha, beta, kappa, linear, k, m, tables), name);
-    };
+    const auto at = [&](int k, int m) { return reference_column(d, alpha, beta, kappa, linear, name, k, m, tables); };
     const double v = at(degree, n);
     OrderValue out = estimate_from_doubles(v, at(degree, n + 1), at(degree, n + 2));
     if (!out.defined || out.infinite) return out;

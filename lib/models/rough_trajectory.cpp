@@ -1,7 +1,8 @@
 // What `gkt evolve` asks the "rough" model for: the free cooling of rough spheres or disks from
 // Maxwellians at T_t(0), T_r(0), in the Maxwellian or the linear first-Sonine scheme, the latter for spheres
-// optionally with the orientation term b00 P (hcs = "linear-oriented") (rough_cooling_evolution.hpp; docs/theory.md
-// §19.13, conventions.md), and of the Walton gas in the Maxwellian approximation.
+// optionally with the orientation term b00 P (hcs = "linear-oriented"), or the linear scheme at Sonine order 2–3
+// with every a_pq (and b_pq) (`order`, (19.25b)) (rough_cooling_evolution.hpp; docs/theory.md §19.13,
+// conventions.md), and of the Walton gas in the Maxwellian approximation.
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 
 #include "gkt/evolution/rough_cooling_evolution.hpp"
 #include "gkt/transport/rough/rough_oriented_cooling_rates.hpp"
+#include "gkt/transport/rough/rough_sonine_cooling_rates.hpp"
 #include "gkt/transport/rough/rough_sonine_cooling_state.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "models/models.hpp"
@@ -20,6 +22,72 @@ namespace {
 /// Returns the rows of a rough trajectory: temperatures, θ, ζ*, (linear scheme) the cumulants and (`oriented`) b00
 /// and the orientation correlation C.
 Trajectory tabulate_rough_trajectory(const RoughEvolutionResult& result, bool linear, bool oriented = false);
+
+/// Returns "<letter><p><q>" (single digits at these orders).
+std::string indexed_column(char letter, const std::array<int, 2>& pq) {
+  return std::string(1, letter) + static_cast<char>('0' + pq[0]) + static_cast<char>('0' + pq[1]);
+}
+
+/// Returns the trajectory of the linear scheme at Sonine order N > 1 (theory.md §19.13, (19.25b)–(19.25c)): hcs =
+/// "linear" the isotropic ansatz (a_pq), "linear-oriented" (spheres) with the b_pq; columns as the order-1 ones, then
+/// the higher a_pq (by p + q, then q), then b00 … and orientation_correlation (oriented); spin cumulants nan at β = −1.
+Trajectory rough_sonine_trajectory(const SchemaPoint& p, int d, const Rational& alpha, const Rational& beta,
+                                   const Rational& kappa, const std::string& scheme, int order,
+                                   const RoughCumulants& initial, const std::vector<double>& times) {
+  if (scheme != "linear" && scheme != "linear-oriented")
+    throw std::invalid_argument("order: the trajectory at order " + std::to_string(order) +
+                                " needs hcs = \"linear\" or \"linear-oriented\" (the Sonine cumulants), got hcs = \"" +
+                                scheme + "\"");
+  const bool oriented = scheme == "linear-oriented";
+  if (oriented && d != 3)
+    throw std::invalid_argument("hcs: \"linear-oriented\" needs dimension = 3 (disks have c.w = 0)");
+  if (oriented && beta == Rational(-1))
+    throw std::invalid_argument("hcs: \"linear-oriented\" needs beta > -1 (at -1 the spin decouples)");
+  check_rough_initial_cumulants(d, initial);
+  const RoughSonineAnsatz ansatz = oriented ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic;
+  // A steady state to relax to: the linear HCS of this order (theory.md §19.14).
+  if (!rough_sonine_cooling_state(d, alpha, beta, kappa, order, RoughSonineScheme::linear, ansatz).solved)
+    throw std::invalid_argument("hcs: the " + std::string(oriented ? "oriented " : "") +
+                                "linear scheme has no root at order " + std::to_string(order) +
+                                ", dimension = " + std::to_string(d) + ", alpha = " + alpha.to_decimal_string() +
+                                ", beta = " + beta.to_decimal_string() + " (theory.md §19.14); use a lower order");
+  const RoughSonineCoolingRates rates(d, alpha, beta, kappa, order, ansatz);
+  const RoughEvolutionResult result = evolve_rough_sonine_cooling(
+      rates, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(), times,
+      p.number("rtol").to_double(), p.number("atol").to_double(), initial);
+  Trajectory out = tabulate_rough_trajectory(result, true, oriented);
+  const auto& ia = rates.cumulant_indices();
+  const auto& ib = rates.orientation_indices();
+  const std::size_t base = out.columns.size() - (oriented ? 2 : 0);  // after a11
+  std::vector<std::string> extra;
+  std::vector<std::size_t> extra_a;
+  for (std::size_t w = 0; w < ia.size(); ++w)
+    if (ia[w][0] + ia[w][1] > 2) extra.push_back(indexed_column('a', ia[w])), extra_a.push_back(w);
+  for (std::size_t o = 1; o < ib.size(); ++o) extra.push_back(indexed_column('b', ib[o]));  // b00 is there
+  // Columns: …, a11, the higher a_pq, [b00, the higher b_pq, orientation_correlation].
+  std::vector<std::string> columns(out.columns.begin(), out.columns.begin() + static_cast<std::ptrdiff_t>(base));
+  columns.insert(columns.end(), extra.begin(), extra.begin() + static_cast<std::ptrdiff_t>(extra_a.size()));
+  if (oriented) {
+    columns.emplace_back("b00");
+    columns.insert(columns.end(), extra.begin() + static_cast<std::ptrdiff_t>(extra_a.size()), extra.end());
+    columns.emplace_back("orientation_correlation");
+  }
+  const double nan = std::nan("");
+  const bool decoupled = rates.spin_decoupled();
+  for (std::size_t r = 0; r < out.rows.size(); ++r) {
+    const RoughEvolutionSample& s = result.samples[r];
+    std::vector<double> row(out.rows[r].begin(), out.rows[r].begin() + static_cast<std::ptrdiff_t>(base));
+    if (decoupled) row[base - 2] = row[base - 1] = nan;  // a02, a11: no spin cumulant at β = −1
+    for (const std::size_t w : extra_a) row.push_back(s.cumulants[w]);
+    if (oriented) {
+      row.insert(row.end(), s.orientation_coefficients.begin(), s.orientation_coefficients.end());
+      row.push_back(s.orientation_correlation);
+    }
+    out.rows[r] = std::move(row);
+  }
+  out.columns = std::move(columns);
+  return out;
+}
 
 }  // namespace
 
@@ -55,12 +123,30 @@ std::vector<ParameterSpec> rough_initial_cumulant_parameters() {
                    "(Cauchy-Schwarz, theory.md (19.24a))")};
 }
 
+/// Highest Sonine order of the trajectory: the HCS columns' (kMaxRoughHcsOrder of rough_model.cpp).
+constexpr int kMaxRoughEvolveOrder = 3;
+
+ParameterSpec rough_evolution_order_parameter() {
+  return {"order",
+          ParameterSpec::Kind::integer,
+          Rational(1),
+          Rational(kMaxRoughEvolveOrder),
+          true,
+          true,
+          Rational(1),
+          "Sonine order N of the trajectory, hcs = \"linear\" or \"linear-oriented\": the cumulants a_pq with p + q "
+          "<= N + 1 (and, linear-oriented, b_pq with p + q <= N - 1) of the linear scheme (theory.md (19.25b))",
+          {}};
+}
+
 Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request) {
   const SchemaPoint p(schema, request.parameters);
   const int d = p.number("dimension") == Rational(2) ? 2 : 3;
   const Rational alpha = p.number("alpha"), beta = p.number("beta"), kappa = p.number("moment_of_inertia");
   const std::string scheme = p.choice("hcs");
   const RoughCumulants initial{p.number("a20").to_double(), p.number("a02").to_double(), p.number("a11").to_double()};
+  const int order = static_cast<int>(p.number("order").to_double());
+  if (order > 1) return rough_sonine_trajectory(p, d, alpha, beta, kappa, scheme, order, initial, request.times);
   if (scheme == "linear-oriented") {
     // The linear scheme with the orientation term b00 P (theory.md §19.13, (19.26a) at order 1): spheres, and a
     // steady state to relax to.

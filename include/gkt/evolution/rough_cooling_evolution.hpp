@@ -1,6 +1,7 @@
 // Time evolution of a freely cooling homogeneous gas of rough spheres or disks: the translational
 // and rotational temperatures T_t(τ), T_r(τ) and, in the linear first-Sonine scheme, the cumulants
-// a20, a02, a11 (and for spheres, optionally, the orientation coefficient b00) (docs/theory.md §19.13), integrated with
+// a20, a02, a11 (and for spheres, optionally, the orientation coefficient b00), or at Sonine order N every a_pq
+// (and b_pq) of the linear scheme (docs/theory.md §19.13), integrated with
 // SUNDIALS CVODE (BDF, dense, difference- quotient Jacobian). From any θ(0) = T_r(0)/T_t(0) the ratio relaxes to the
 // HCS value of rough_homogeneous_cooling_state (the same balances) and T_t then follows Haff's law.
 //
@@ -16,6 +17,7 @@
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/transport/rough/rough_cooling_rates.hpp"
 #include "gkt/transport/rough/rough_oriented_cooling_rates.hpp"
+#include "gkt/transport/rough/rough_sonine_cooling_rates.hpp"
 
 namespace gkt {
 
@@ -33,6 +35,10 @@ struct RoughEvolutionSample {
   double b00 = 0;  ///< the orientation coefficient of b00 P (evolve_rough_oriented_cooling; else 0)
   /// C = ⟨(c·ŵ)²/(c²ŵ²)⟩ = 1/3 + b00/5 (theory.md (19.28)); 1/3 without the orientation term.
   double orientation_correlation = 1.0 / 3;
+  /// evolve_rough_sonine_cooling: every a_pq and b_pq, in the order of the rates' indices (else empty).
+  /// @{
+  std::vector<double> cumulants, orientation_coefficients;
+  /// @}
 };
 
 /// The samples at the requested times and CVODE's counters.
@@ -70,6 +76,16 @@ RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rate
                                                    const RoughOrientedCoolingRates& oriented, double translational0,
                                                    double rotational0, const std::vector<double>& times, double rtol,
                                                    double atol, const RoughCumulants& initial_cumulants = {});
+
+/// Returns the trajectory of the linear scheme at the Sonine order N of `rates` (theory.md §19.13, (19.25b)–(19.25c)):
+/// every a_pq (p + q ≤ N + 1) and, with the oriented rates (3D), every b_pq (p + q ≤ N − 1), from a20, a02, a11 =
+/// `initial_cumulants` and the others 0 (realizable, check_rough_initial_cumulants; at β = −1 a02 = a11 = 0: the spin
+/// decouples). Its stationary point is rough_sonine_cooling_state(d, α, β, κ, N, linear, the rates' ansatz); at
+/// N = 1 it is the trajectory of evolve_rough_cooling (isotropic) or evolve_rough_oriented_cooling (oriented) from
+/// other engine tables. Otherwise as evolve_rough_cooling with linear = true.
+RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& rates, double translational0,
+                                                 double rotational0, const std::vector<double>& times, double rtol,
+                                                 double atol, const RoughCumulants& initial_cumulants = {});
 
 /// Maxwellian rates at θ = T_r/T_t: (z_t, z_r) = (ζ_t, ζ_r)/(nσ^{d−1}v_t ν) (e.g. from the Walton
 /// quadrature of rough_walton.hpp, times 4/(d+2)).

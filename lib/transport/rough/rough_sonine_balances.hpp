@@ -53,6 +53,16 @@ class RoughSonineBalances {
   [[nodiscard]] std::size_t unknowns() const { return cumulants_.size() + orientations_.size(); }
   /// Returns C − 1/3 = ⟨(c·ŵ)²/(xy)⟩ − 1/3 per unit b_pq, in the order of orientations() (theory.md §19.14).
   [[nodiscard]] const std::vector<double>& correlation_weights() const { return correlation_weights_; }
+  /// Returns ⟨ψ_t⟩_M for the tests t = x, y, then the unknowns' (x^k y^l, P x^k y^l), as doubles of exact rationals.
+  [[nodiscard]] const std::vector<double>& maxwellian_moments() const { return maxwellian_; }
+  /// Returns ⟨ψ_t Φ_w⟩_M, [t][w] (t as in maxwellian_moments(), w the unknowns): ⟨ψ_t⟩ = ⟨ψ_t⟩_M + Σ_w a_w ⟨ψ_t Φ_w⟩_M.
+  [[nodiscard]] const std::vector<std::vector<double>>& projections() const { return projection_; }
+  /// Returns the weight of unknown w (0-based) as monomials: ((i, j, e) of x^i y^j (c·ŵ)^{2e}, coefficient).
+  [[nodiscard]] std::vector<std::pair<std::array<int, 3>, double>> weight_expansion(std::size_t w) const {
+    std::vector<std::pair<std::array<int, 3>, double>> out;
+    for (const auto& [m, c] : weight_terms_.at(w + 1)) out.push_back({monomials_[m], c});
+    return out;
+  }
   /// Returns true at β = −1 (the spin decouples; the unknowns are a_p0 only, τ plays no role).
   [[nodiscard]] bool spin_decoupled() const { return decoupled_; }
   /// Returns the residuals at τ and a (the unknowns: a_pq, then b_pq): F_0 = R[x]/d − R[y]/d_r (absent when
