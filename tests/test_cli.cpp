@@ -910,10 +910,29 @@ TEST(CliRoughEvolve, InitialCumulants) {
   const CliRun disks = run_gkt("evolve " + scene_path("rough_evolve.toml") + quick +
                                " --set dimension=2 --set moment_of_inertia=0.5 --set a20=-0.45 --set a02=-0.6");
   EXPECT_EQ(disks.status, 0) << disks.err;
-  // Walton: Maxwellian only, no cumulant keys.
+  // Walton: cumulants need hcs = "linear" (the default stays the Maxwellian equations); with it the last row
+  // equals `gkt table`'s linear HCS (theory.md §19.19).
   const CliRun walton = run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + " --set a20=0.1");
   EXPECT_EQ(walton.status, 2);
-  EXPECT_NE(walton.err.find("a20: unknown key for gkt evolve"), std::string::npos) << walton.err;
+  EXPECT_NE(walton.err.find("a20, a02, a11: initial cumulants need the linear scheme"), std::string::npos)
+      << walton.err;
+  const CliRun linear = run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + quick +
+                                " --set rotational_temperature=0.5 --set 'hcs=\"linear\"' --set a02=0.1");
+  ASSERT_EQ(linear.status, 0) << linear.err;
+  const CliRun walton_table =
+      run_gkt("table " + scene_path("rough_walton.toml") +
+              " --set 'alpha=[0.9]' --set 'friction=[1]' --set beta0=1 --set 'hcs=\"linear\"' --set "
+              "'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\", \"a20\", \"a02\", \"a11\"]'");
+  ASSERT_EQ(walton_table.status, 0) << walton_table.err;
+  const auto lt = parse_csv(linear.out), wt = parse_csv(walton_table.out);
+  ASSERT_EQ(lt.size(), 4u);
+  ASSERT_EQ(lt[0][6], "a20");
+  for (std::size_t k = 0; k < 5; ++k) {
+    const auto column = std::find(wt[0].begin(), wt[0].end(), lt[0][4 + k]);
+    ASSERT_NE(column, wt[0].end()) << lt[0][4 + k];
+    EXPECT_NEAR(std::stod(lt.back()[4 + k]), std::stod(wt[1][static_cast<std::size_t>(column - wt[0].begin())]), 1e-7)
+        << lt[0][4 + k];
+  }
 }
 
 // `gkt stability` for rough spheres (theory.md §19.15): the three stability columns by default; β = −1

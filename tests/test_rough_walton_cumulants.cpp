@@ -163,8 +163,9 @@ TEST(RoughWaltonCumulants, TrajectoryEndsOnTheLinearHcs) {
   EXPECT_NEAR(last.a11, hcs.a11, 1e-7);
   // The first sample has moved from the initial cumulants; the interpolant reproduces direct quadratures.
   EXPECT_NE(r.samples.front().a02, -0.1);
-  const gkt::RoughWaltonInterpolant table(3, 0.9, 1.0, k, 0.5, 0.5, 8.0, 48);
-  EXPECT_LT(table.check(6), 1e-9);
+  // The interpolant at the trajectory's density (16 nodes per unit of ln τ) against direct quadratures.
+  const gkt::RoughWaltonInterpolant table(3, 0.9, 1.0, k, 0.5, 1.0, 4.0, 24);
+  EXPECT_LT(table.check(3), 1e-9);
 }
 
 TEST(RoughWaltonCumulants, InfiniteFrictionTrajectoryIsTheConstantBetaOne) {
@@ -189,4 +190,30 @@ TEST(RoughWaltonCumulants, InfiniteFrictionTrajectoryIsTheConstantBetaOne) {
                std::invalid_argument);
   EXPECT_THROW((void)gkt::evolve_rough_walton_cooling(3, 0.9, 1, 0.4, 0.5, 1, 1, {1}, 1e-8, 1e-12, {-1, 0, 0}),
                std::invalid_argument);
+}
+
+// The library DSMC with the Walton rule (4000 particles, 20 + 20 × 5 collisions per particle; about 1 s per
+// state): the linear θ is nearer the DSMC than the Maxwellian θ, within 1.5 % + 4σ (the Maxwellian one is
+// 2–5 % off here), and inside the error the model prints (the step |θ_linear − θ_Maxwellian|); the cumulants
+// have the DSMC's signs and lie within 25 % + 4σ (a20: 0.005 + 4σ) — the first-Sonine spin moments are
+// 7–20 % low at these states (theory.md §19.19).
+TEST(RoughWaltonCumulants, LinearSchemeAgainstDsmc) {
+  for (int d : {3, 2}) {
+    const double k = d == 3 ? 0.4 : 0.5;
+    const auto w = gkt::rough_walton_linear_cooling_state(d, 0.9, 1.0, k, 0.5);
+    ASSERT_TRUE(w.linear_scheme_solved);
+    const auto s = gkt::test::run_rough_hcs_dsmc(d, 0.9, 1.0, k, w.temperature_ratio, 4000, 20, 20, 5, 5, 0.5);
+    std::printf(
+        "walton linear d=%d: theta %.4f (Maxwellian %.4f) DSMC %.4f +- %.4f; a20 %.4f / %.4f +- %.4f; a02 "
+        "%.4f / %.4f +- %.4f; a11 %.4f / %.4f +- %.4f\n",
+        d, w.temperature_ratio, w.maxwellian_temperature_ratio, s.theta, s.theta_error, w.a20, s.a20, s.a20_error,
+        w.a02, s.a02, s.a02_error, w.a11, s.a11, s.a11_error);
+    EXPECT_LT(std::abs(w.temperature_ratio - s.theta), std::abs(w.maxwellian_temperature_ratio - s.theta));
+    EXPECT_NEAR(w.temperature_ratio, s.theta, 0.015 * s.theta + 4 * s.theta_error);
+    EXPECT_LT(std::abs(w.temperature_ratio - s.theta),
+              std::abs(w.temperature_ratio - w.maxwellian_temperature_ratio) + 4 * s.theta_error);
+    EXPECT_NEAR(w.a20, s.a20, 0.005 + 4 * s.a20_error);
+    EXPECT_NEAR(w.a02, s.a02, 0.25 * std::abs(s.a02) + 4 * s.a02_error);
+    EXPECT_NEAR(w.a11, s.a11, 0.25 * std::abs(s.a11) + 4 * s.a11_error);
+  }
 }

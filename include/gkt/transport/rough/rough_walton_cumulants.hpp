@@ -32,9 +32,12 @@ RoughWaltonProductions rough_walton_productions(int dimension, double alpha, dou
 
 /// The Walton HCS in the linear first-Sonine scheme, with the Maxwellian state it corrects.
 struct RoughWaltonCumulantState {
-  double temperature_ratio = 0;             ///< θ = T_r/T_t of the linear scheme
-  double cooling_rate = 0;                  ///< ζ* = ζ/ν0(T_t) of the linear scheme
-  double a20 = 0, a02 = 0, a11 = 0;         ///< the cumulants (theory.md (19.9))
+  double temperature_ratio = 0;  ///< θ = T_r/T_t of the linear scheme
+  double cooling_rate = 0;       ///< ζ* = ζ/ν0(T_t) of the linear scheme
+  /// The cumulants a20, a02, a11 (theory.md (19.9)).
+  /// @{
+  double a20 = 0, a02 = 0, a11 = 0;
+  /// @}
   double maxwellian_temperature_ratio = 0;  ///< θ of the Maxwellian approximation (rough_walton.hpp)
   double maxwellian_cooling_rate = 0;       ///< ζ* of the Maxwellian approximation
   /// True when the Maxwellian ζ_t = ζ_r has no finite root (μ_f = 0, β0 = −1, or friction too weak;
