@@ -935,6 +935,55 @@ TEST(CliRoughEvolve, InitialCumulants) {
   }
 }
 
+// rough-walton's first-Sonine HCS columns (theory.md §19.19): hcs = "linear" moves θ and prints the step from the
+// Maxwellian as its error; μ_f = 10⁶ equals the rough model's linear scheme; where the linear scheme has no root
+// (the constant-β no-root state (0.5, 0) at μ_f = 10⁶) "linear" refuses with one line and "linear-or-maxwellian"
+// falls back to the Maxwellian θ with nan cumulants; the default stays the Maxwellian columns.
+TEST(CliRoughWalton, LinearHcsColumns) {
+  const std::string hcs_columns =
+      " --set 'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\", \"a20\", \"a02\", \"a11\"]'";
+  const std::string state = " --set 'alpha=[0.9]' --set 'friction=[0.5]'";
+  const CliRun maxwellian = run_gkt("table " + scene_path("rough_walton.toml") + state + hcs_columns);
+  const CliRun linear =
+      run_gkt("table " + scene_path("rough_walton.toml") + state + hcs_columns + " --set 'hcs=\"linear\"'");
+  ASSERT_EQ(maxwellian.status, 0) << maxwellian.err;
+  ASSERT_EQ(linear.status, 0) << linear.err;
+  const auto m = parse_csv(maxwellian.out), l = parse_csv(linear.out);
+  const auto column = [](const std::vector<std::string>& header, const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t theta = column(l[0], "rotational_temperature_ratio"),
+                    theta_error = column(l[0], "rotational_temperature_ratio_error"), a02 = column(l[0], "a02");
+  ASSERT_LT(theta_error, l[0].size());
+  EXPECT_EQ(m[1][a02], "0");
+  EXPECT_GT(std::stod(l[1][a02]), 0.05);  // the spin tail is longer than a Maxwellian's
+  const double step = std::abs(std::stod(l[1][theta]) - std::stod(m[1][theta]));
+  EXPECT_GT(step, 0.01);
+  EXPECT_NEAR(std::stod(l[1][theta_error]), step, 0.01 * step);
+  // μ_f = 10⁶: the rough model's linear scheme (β = β0 = 0.5).
+  const CliRun big = run_gkt("table " + scene_path("rough_walton.toml") + hcs_columns +
+                             " --set 'alpha=[0.9]' --set 'friction=[1000000]' --set beta0=0.5 --set 'hcs=\"linear\"'");
+  const CliRun rough = run_gkt("table " + scene_path("rough_hcs.toml") + hcs_columns + " --set 'alpha=[0.9]'");
+  ASSERT_EQ(big.status, 0) << big.err;
+  ASSERT_EQ(rough.status, 0) << rough.err;
+  const auto b = parse_csv(big.out), r = parse_csv(rough.out);
+  for (const char* name : {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11"})
+    EXPECT_NEAR(std::stod(b[1][column(b[0], name)]), std::stod(r[1][column(r[0], name)]), 1e-6) << name;
+  const std::string no_root = " --set 'alpha=[0.5]' --set 'friction=[1000000]' --set beta0=0";
+  const CliRun refused =
+      run_gkt("table " + scene_path("rough_walton.toml") + no_root + hcs_columns + " --set 'hcs=\"linear\"'");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_TRUE(refused.out.empty());
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  EXPECT_NE(refused.err.find("hcs: the linear scheme of the Walton gas has no root"), std::string::npos);
+  const CliRun fallback = run_gkt("table " + scene_path("rough_walton.toml") + no_root + hcs_columns +
+                                  " --set 'hcs=\"linear-or-maxwellian\"'");
+  ASSERT_EQ(fallback.status, 0) << fallback.err;
+  const auto f = parse_csv(fallback.out);
+  EXPECT_NEAR(std::stod(f[1][column(f[0], "rotational_temperature_ratio")]), 2.0604, 1e-4);  // theory.md §19.6
+  EXPECT_EQ(f[1][column(f[0], "a02")], "nan");
+}
+
 // `gkt stability` for rough spheres (theory.md §19.15): the three stability columns by default; β = −1
 // (spin decoupled) equals the smooth gas's first-Sonine stability at the Maxwellian (checked against
 // the library in test_rough_hcs_stability.cpp); α = β = 1 is stable (0, 0, inf); the stability values

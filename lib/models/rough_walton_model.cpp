@@ -131,8 +131,6 @@ class RoughWaltonModel final : public TransportModel {
     const auto specs = parameters();
     const auto [d, alpha, beta0, kappa] = read_rough_grain(specs, point, "beta0");
     require_first_approximation(order, "rough-walton");
-    const RoughWaltonState s =
-        rough_walton_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"));
     // The HCS columns of `hcs` (theory.md §19.19); the transport and stability columns use the Maxwellian θ, ζ*.
     const std::string scheme = SchemaPoint(specs, point).choice("hcs");
     std::optional<RoughWaltonCumulantState> linear;
@@ -148,16 +146,21 @@ class RoughWaltonModel final : public TransportModel {
             " (strong inelasticity with weak roughness or weak friction, docs/theory.md section 19.19); use hcs = "
             "\"maxwellian\" or \"linear-or-maxwellian\"");
     }
+    // The Maxwellian state with its transport coefficients, unless `linear` (which carries the Maxwellian θ, ζ*)
+    // serves every column.
+    RoughWaltonState s;
+    if (!linear || !std::all_of(coefficients.begin(), coefficients.end(), is_walton_hcs_column))
+      s = rough_walton_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"));
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
       if (linear && is_walton_hcs_column(name)) {
         const bool solved = linear->linear_scheme_solved && !linear->spin_decoupled;
         if (name == "rotational_temperature_ratio") {
-          out.push_back(solved ? linear_value(linear->temperature_ratio, s.temperature_ratio)
-                               : first_approximation(s.temperature_ratio));
+          out.push_back(solved ? linear_value(linear->temperature_ratio, linear->maxwellian_temperature_ratio)
+                               : first_approximation(linear->maxwellian_temperature_ratio));
         } else if (name == "cooling_rate") {
-          out.push_back(solved ? linear_value(linear->cooling_rate, s.cooling_rate)
-                               : first_approximation(s.cooling_rate));
+          out.push_back(solved ? linear_value(linear->cooling_rate, linear->maxwellian_cooling_rate)
+                               : first_approximation(linear->maxwellian_cooling_rate));
         } else {
           const double a = name == "a20" ? linear->a20 : name == "a02" ? linear->a02 : linear->a11;
           out.push_back(solved ? linear_value(a, 0) : first_approximation(std::nan("")));

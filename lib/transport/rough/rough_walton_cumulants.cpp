@@ -342,9 +342,11 @@ RoughWaltonCumulantState rough_walton_linear_cooling_state(int dimension, double
     std::array<double, 3> a{};
     RoughBalances balances;
   };
-  const auto at = [&](double log_tau) {
+  // The scan runs on a coarser rule (half the panels per piece, a quarter of the nodes; its G_0 differs by ~1e-7,
+  // far below the steps between scan points); the root and its cumulants come from the full rule.
+  const auto at = [&](double log_tau, int rule) {
     const RoughWaltonProductions p =
-        rough_walton_productions(dimension, alpha, beta0, kappa, friction, std::exp(log_tau), panels);
+        rough_walton_productions(dimension, alpha, beta0, kappa, friction, std::exp(log_tau), rule);
     const RoughBalances b = rough_linear_balances(dimension, p.table, {});
     Eigen::Matrix3d mat;
     Eigen::Vector3d g;
@@ -358,8 +360,9 @@ RoughWaltonCumulantState rough_walton_linear_cooling_state(int dimension, double
     pt.balances = rough_linear_balances(dimension, p.table, pt.a);
     return pt;
   };
-  const double center = std::log(out.maxwellian_temperature_ratio / kappa), step = 1.0 / 32, span = 2;
-  const Point mid_point = at(center);
+  const double center = std::log(out.maxwellian_temperature_ratio / kappa), step = 1.0 / 16, span = 2;
+  const int scan = std::max(1, panels / 2);
+  const Point mid_point = at(center, scan);
   // Walk outward on both sides at once; try each bracket (sign change of G_0 without a pole) as found.
   const auto solve = [&](double a_lt, Point pa, double b_lt, Point pb) -> bool {
     // Regula falsi (Illinois) on G_0.
@@ -368,7 +371,7 @@ RoughWaltonCumulantState rough_walton_linear_cooling_state(int dimension, double
     double c_lt = a_lt;
     for (int it = 0; it < 100 && std::abs(b_lt - a_lt) > 1e-12; ++it) {
       c_lt = (a_lt * pb.g0 - b_lt * pa.g0) / (pb.g0 - pa.g0);
-      pc = at(c_lt);
+      pc = at(c_lt, panels);
       if (pc.g0 == 0) break;
       if ((pc.g0 < 0) == (pb.g0 < 0)) {
         b_lt = c_lt;
@@ -394,12 +397,12 @@ RoughWaltonCumulantState rough_walton_linear_cooling_state(int dimension, double
   Point left = mid_point, right = mid_point;
   for (double k = 1; k * step <= span + step / 2; ++k) {
     const double l_lt = center - k * step, r_lt = center + k * step;
-    const Point r_new = at(r_lt);
+    const Point r_new = at(r_lt, scan);
     if ((right.g0 < 0) != (r_new.g0 < 0) && (right.det < 0) == (r_new.det < 0) &&
         solve(r_lt - step, right, r_lt, r_new))
       return out;
     right = r_new;
-    const Point l_new = at(l_lt);
+    const Point l_new = at(l_lt, scan);
     if ((left.g0 < 0) != (l_new.g0 < 0) && (left.det < 0) == (l_new.det < 0) && solve(l_lt, l_new, l_lt + step, left))
       return out;
     left = l_new;

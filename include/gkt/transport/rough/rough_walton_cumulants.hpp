@@ -49,8 +49,8 @@ struct RoughWaltonCumulantState {
 };
 
 /// Returns the linear-scheme HCS for d ∈ {2, 3}, α ∈ (0, 1], β0 ∈ [−1, 1], κ ∈ (0, 1], μ_f ≥ 0 (ranges
-/// as rough_walton_rates): τ by a scan of ln τ (steps 1/32, outward from the Maxwellian root, ±2) for sign
-/// changes of ζ_t − ζ_r after the fourth-degree balances are solved for a(τ), then regula falsi to 1e-12
+/// as rough_walton_rates): τ by a scan of ln τ (steps 1/16 on a 4-panel rule, outward from the Maxwellian root, ±2) for
+/// sign changes of ζ_t − ζ_r after the fourth-degree balances are solved for a(τ), then regula falsi to 1e-12
 /// (theory.md §19.19). Cost: ≈ 15–25 quadratures of rough_walton_productions.
 RoughWaltonCumulantState rough_walton_linear_cooling_state(int dimension, double alpha, double beta0, double kappa,
                                                            double friction, int panels = 8);
