@@ -911,10 +911,78 @@ TEST(CliRoughEvolve, InitialCumulants) {
   const CliRun disks = run_gkt("evolve " + scene_path("rough_evolve.toml") + quick +
                                " --set dimension=2 --set moment_of_inertia=0.5 --set a20=-0.45 --set a02=-0.6");
   EXPECT_EQ(disks.status, 0) << disks.err;
-  // Walton: Maxwellian only, no cumulant keys.
+  // Walton: cumulants need hcs = "linear" (the default stays the Maxwellian equations); with it the last row
+  // equals `gkt table`'s linear HCS (theory.md §19.19).
   const CliRun walton = run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + " --set a20=0.1");
   EXPECT_EQ(walton.status, 2);
-  EXPECT_NE(walton.err.find("a20: unknown key for gkt evolve"), std::string::npos) << walton.err;
+  EXPECT_NE(walton.err.find("a20, a02, a11: initial cumulants need the linear scheme"), std::string::npos)
+      << walton.err;
+  const CliRun linear = run_gkt("evolve " + scene_path("rough_walton_evolve.toml") + quick +
+                                " --set rotational_temperature=0.5 --set 'hcs=\"linear\"' --set a02=0.1");
+  ASSERT_EQ(linear.status, 0) << linear.err;
+  const CliRun walton_table =
+      run_gkt("table " + scene_path("rough_walton.toml") +
+              " --set 'alpha=[0.9]' --set 'friction=[1]' --set beta0=1 --set 'hcs=\"linear\"' --set "
+              "'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\", \"a20\", \"a02\", \"a11\"]'");
+  ASSERT_EQ(walton_table.status, 0) << walton_table.err;
+  const auto lt = parse_csv(linear.out), wt = parse_csv(walton_table.out);
+  ASSERT_EQ(lt.size(), 4u);
+  ASSERT_EQ(lt[0][6], "a20");
+  for (std::size_t k = 0; k < 5; ++k) {
+    const auto column = std::find(wt[0].begin(), wt[0].end(), lt[0][4 + k]);
+    ASSERT_NE(column, wt[0].end()) << lt[0][4 + k];
+    EXPECT_NEAR(std::stod(lt.back()[4 + k]), std::stod(wt[1][static_cast<std::size_t>(column - wt[0].begin())]), 1e-7)
+        << lt[0][4 + k];
+  }
+}
+
+// rough-walton's first-Sonine HCS columns (theory.md §19.19): hcs = "linear" moves θ and prints the step from the
+// Maxwellian as its error; μ_f = 10⁶ equals the rough model's linear scheme; where the linear scheme has no root
+// (the constant-β no-root state (0.5, 0) at μ_f = 10⁶) "linear" refuses with one line and "linear-or-maxwellian"
+// falls back to the Maxwellian θ with nan cumulants; the default stays the Maxwellian columns.
+TEST(CliRoughWalton, LinearHcsColumns) {
+  const std::string hcs_columns =
+      " --set 'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\", \"a20\", \"a02\", \"a11\"]'";
+  const std::string state = " --set 'alpha=[0.9]' --set 'friction=[0.5]'";
+  const CliRun maxwellian = run_gkt("table " + scene_path("rough_walton.toml") + state + hcs_columns);
+  const CliRun linear =
+      run_gkt("table " + scene_path("rough_walton.toml") + state + hcs_columns + " --set 'hcs=\"linear\"'");
+  ASSERT_EQ(maxwellian.status, 0) << maxwellian.err;
+  ASSERT_EQ(linear.status, 0) << linear.err;
+  const auto m = parse_csv(maxwellian.out), l = parse_csv(linear.out);
+  const auto column = [](const std::vector<std::string>& header, const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t theta = column(l[0], "rotational_temperature_ratio"),
+                    theta_error = column(l[0], "rotational_temperature_ratio_error"), a02 = column(l[0], "a02");
+  ASSERT_LT(theta_error, l[0].size());
+  EXPECT_EQ(m[1][a02], "0");
+  EXPECT_GT(std::stod(l[1][a02]), 0.05);  // the spin tail is longer than a Maxwellian's
+  const double step = std::abs(std::stod(l[1][theta]) - std::stod(m[1][theta]));
+  EXPECT_GT(step, 0.01);
+  EXPECT_NEAR(std::stod(l[1][theta_error]), step, 0.01 * step);
+  // μ_f = 10⁶: the rough model's linear scheme (β = β0 = 0.5).
+  const CliRun big = run_gkt("table " + scene_path("rough_walton.toml") + hcs_columns +
+                             " --set 'alpha=[0.9]' --set 'friction=[1000000]' --set beta0=0.5 --set 'hcs=\"linear\"'");
+  const CliRun rough = run_gkt("table " + scene_path("rough_hcs.toml") + hcs_columns + " --set 'alpha=[0.9]'");
+  ASSERT_EQ(big.status, 0) << big.err;
+  ASSERT_EQ(rough.status, 0) << rough.err;
+  const auto b = parse_csv(big.out), r = parse_csv(rough.out);
+  for (const char* name : {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11"})
+    EXPECT_NEAR(std::stod(b[1][column(b[0], name)]), std::stod(r[1][column(r[0], name)]), 1e-6) << name;
+  const std::string no_root = " --set 'alpha=[0.5]' --set 'friction=[1000000]' --set beta0=0";
+  const CliRun refused =
+      run_gkt("table " + scene_path("rough_walton.toml") + no_root + hcs_columns + " --set 'hcs=\"linear\"'");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_TRUE(refused.out.empty());
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  EXPECT_NE(refused.err.find("hcs: the linear scheme of the Walton gas has no root"), std::string::npos);
+  const CliRun fallback = run_gkt("table " + scene_path("rough_walton.toml") + no_root + hcs_columns +
+                                  " --set 'hcs=\"linear-or-maxwellian\"'");
+  ASSERT_EQ(fallback.status, 0) << fallback.err;
+  const auto f = parse_csv(fallback.out);
+  EXPECT_NEAR(std::stod(f[1][column(f[0], "rotational_temperature_ratio")]), 2.0604, 1e-4);  // theory.md §19.6
+  EXPECT_EQ(f[1][column(f[0], "a02")], "nan");
 }
 
 // `gkt evolve` at Sonine order 2 (theory.md §19.13, (19.25b)–(19.25c)): the oriented trajectory's last row equals

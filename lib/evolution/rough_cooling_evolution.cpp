@@ -39,6 +39,8 @@ struct Problem {
   const RoughSonineCoolingRates* sonine = nullptr;      // or the order-N linear scheme alone (y = ln T_t, ln T_r, C, u)
   Eigen::PartialPivLU<Eigen::MatrixXd> projection;      // ⟨ψ_t Φ_w⟩_M of the order-N scheme, factorised
   std::vector<double> sonine_initial;                   // u(0) of the order-N scheme
+  const RoughLinearProductions* productions = nullptr;  // or the linear scheme's averages as a function of τ
+  int dimension = 3;
   bool linear = false;
   std::array<double, 3> base{};  // Maxwellian ⟨x²⟩, ⟨y²⟩, ⟨xy⟩
   RoughCumulants initial{};      // a20, a02, a11 at τ = 0 (linear scheme)
@@ -107,10 +109,15 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
     dv[6] = sq * (b.residual[3] + spin_excess * base[3] * a4[3]) / base[3];
     return 0;
   }
-  const RoughBalances b = p.rates->at(std::exp(log_theta) / p.rates->kappa(), a);
+  const RoughBalances b =
+      p.productions != nullptr
+          ? rough_linear_balances(p.dimension, p.productions->table(std::exp(log_theta) / p.productions->kappa), a)
+          : p.rates->at(std::exp(log_theta) / p.rates->kappa(), a);
+  if (p.productions != nullptr && !(std::isfinite(b.translational_rate) && std::isfinite(b.rotational_rate))) return 1;
   dv[0] = -sq * b.translational_rate;
   dv[1] = -sq * b.rotational_rate;
-  dv[2] = sq * p.rates->collision_frequency_factor(a[0]);
+  dv[2] = sq * (p.productions != nullptr ? 1 + p.productions->collision_a20 * a[0]
+                                         : p.rates->collision_frequency_factor(a[0]));
   if (!p.linear) return 0;
   constexpr std::array<double, 3> spin_degree{0, 2, 1};
   const double spin_excess = b.rotational_rate - b.translational_rate;
@@ -204,7 +211,10 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
       s.cooling_rate =
           (d + 2) / 4 *
           (problem.maxwellian != nullptr ? (*problem.maxwellian)(theta)[0]
-                                         : problem.rates->at(theta / problem.rates->kappa(), a).translational_rate);
+           : problem.productions != nullptr
+               ? rough_linear_balances(dimension, problem.productions->table(theta / problem.productions->kappa), a)
+                     .translational_rate
+               : problem.rates->at(theta / problem.rates->kappa(), a).translational_rate);
     }
     result.samples.push_back(s);
   }
@@ -293,6 +303,21 @@ RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& 
     if (pq == std::array<int, 2>{1, 1}) problem.sonine_initial[w] = initial_cumulants[2];
   }
   return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol);
+}
+
+RoughEvolutionResult evolve_rough_linear_cooling(int dimension, const RoughLinearProductions& productions,
+                                                 double translational0, double rotational0,
+                                                 const std::vector<double>& times, double rtol, double atol,
+                                                 const RoughCumulants& initial_cumulants) {
+  check_rough_initial_cumulants(dimension, initial_cumulants);
+  Problem problem;
+  problem.productions = &productions;
+  problem.dimension = dimension;
+  problem.linear = true;
+  problem.initial = initial_cumulants;
+  const double dt = dimension, dr = dimension == 3 ? 3 : 1;
+  problem.base = {dt / 2 * (dt / 2 + 1), dr / 2 * (dr / 2 + 1), dt / 2 * dr / 2};
+  return integrate(problem, dimension, translational0, rotational0, times, rtol, atol);
 }
 
 RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,

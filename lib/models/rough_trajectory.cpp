@@ -9,10 +9,12 @@
 #include <string>
 
 #include "gkt/evolution/rough_cooling_evolution.hpp"
+#include "gkt/evolution/rough_walton_evolution.hpp"
 #include "gkt/transport/rough/rough_oriented_cooling_rates.hpp"
 #include "gkt/transport/rough/rough_sonine_cooling_rates.hpp"
 #include "gkt/transport/rough/rough_sonine_cooling_state.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
+#include "gkt/transport/rough/rough_walton_cumulants.hpp"
 #include "models/models.hpp"
 
 namespace gkt::detail {
@@ -191,14 +193,35 @@ Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, con
   const int d = p.number("dimension") == Rational(2) ? 2 : 3;
   const double alpha = p.number("alpha").to_double(), beta0 = p.number("beta0").to_double();
   const double kappa = p.number("moment_of_inertia").to_double(), friction = p.number("friction").to_double();
+  const std::string scheme = p.choice("hcs");
+  const RoughCumulants initial{p.number("a20").to_double(), p.number("a02").to_double(), p.number("a11").to_double()};
+  check_rough_initial_cumulants(d, initial);
+  const double t0 = p.number("translational_temperature").to_double();
+  const double r0 = p.number("rotational_temperature").to_double();
+  // The first-Sonine balances (theory.md §19.19) where the linear HCS exists ("linear" refuses elsewhere).
+  bool linear = scheme == "linear";
+  if (scheme == "linear-or-maxwellian") {
+    const RoughWaltonCumulantState s = rough_walton_linear_cooling_state(d, alpha, beta0, kappa, friction);
+    linear = !s.spin_decoupled && s.linear_scheme_solved;
+  }
+  if (!linear && initial != RoughCumulants{})
+    throw std::invalid_argument(
+        "a20, a02, a11: initial cumulants need the linear scheme (hcs = \"linear\"" +
+        std::string(scheme == "linear-or-maxwellian" ? ", which has no root at this state" : "") + "); got hcs = \"" +
+        scheme + "\"");
+  if (linear) {
+    const RoughEvolutionResult result =
+        evolve_rough_walton_cooling(d, alpha, beta0, kappa, friction, t0, r0, request.times,
+                                    p.number("rtol").to_double(), p.number("atol").to_double(), initial);
+    return tabulate_rough_trajectory(result, true);
+  }
   // Maxwellian rates by quadrature (theory.md (19.21)), ζ/ν0 → z = ζ/(nσ^{d−1}v_t ν) = (4/(d+2)) ζ/ν0.
   const RoughMaxwellianRates rates = [=](double theta) {
     const RoughWaltonRates r = rough_walton_rates(d, alpha, beta0, kappa, friction, theta);
     return std::array<double, 2>{4.0 / (d + 2) * r.translational, 4.0 / (d + 2) * r.rotational};
   };
   const RoughEvolutionResult result = evolve_rough_maxwellian_cooling(
-      d, rates, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(),
-      request.times, p.number("rtol").to_double(), p.number("atol").to_double());
+      d, rates, t0, r0, request.times, p.number("rtol").to_double(), p.number("atol").to_double());
   return tabulate_rough_trajectory(result, false);
 }
 

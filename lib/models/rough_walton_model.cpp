@@ -5,10 +5,12 @@
 // model. The linear stability of the HCS from these coefficients (rough_hcs_stability.hpp, §19.15).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "gkt/evolution/rough_hcs_stability.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
+#include "gkt/transport/rough/rough_walton_cumulants.hpp"
 #include "models/models.hpp"
 #include "models/rough_parameters.hpp"
 
@@ -41,6 +43,23 @@ HcsStability walton_stability(int d, const RoughWaltonState& s) {
   return rough_hcs_stability(in);
 }
 
+/// The HCS columns the `hcs` key governs (theory.md §19.19).
+bool is_walton_hcs_column(const std::string& name) {
+  return name == "rotational_temperature_ratio" || name == "cooling_rate" || name == "a20" || name == "a02" ||
+         name == "a11";
+}
+
+/// θ, ζ*, a20, a02, a11 of the first-Sonine (linear) HCS with the one-step error |linear − Maxwellian| (the
+/// cumulants: |a|, their step from the Maxwellian 0); theory.md §19.19.
+CoefficientValue linear_value(double x, double maxwellian) {
+  CoefficientValue v = first_approximation(x);
+  if (v.defined) {
+    v.error_estimated = true;
+    v.error = Rational::from_double(std::abs(x - maxwellian));
+  }
+  return v;
+}
+
 class RoughWaltonModel final : public TransportModel {
  public:
   [[nodiscard]] std::string name() const override { return "rough-walton"; }
@@ -54,6 +73,7 @@ class RoughWaltonModel final : public TransportModel {
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto names = kWaltonTableColumns;
     for (const auto& c : stability_coefficient_names()) names.push_back(c);
+    for (const char* c : {"a20", "a02", "a11"}) names.emplace_back(c);  // theory.md §19.19
     return names;
   }
   /// Without `coefficients` a scene gets the columns it had before the stability values existed.
@@ -72,6 +92,13 @@ class RoughWaltonModel final : public TransportModel {
                      Rational(1, 2),
                      "Coulomb friction coefficient mu_f (0: smooth; the model rough is mu_f -> infinity)",
                      {}});
+    specs.push_back(choice_spec("hcs",
+                                "approximation of the homogeneous cooling state (theta, cooling rate, cumulants a20, "
+                                "a02, a11): Maxwellian (cumulants 0), first Sonine with cumulants in the linear scheme "
+                                "(error: the step from the Maxwellian), or first Sonine falling back to Maxwellian "
+                                "(cumulants nan) where the linear scheme has no root; the transport and stability "
+                                "columns stay at the Maxwellian theta",
+                                {"maxwellian", "linear", "linear-or-maxwellian"}));
     return specs;
   }
   [[nodiscard]] int max_order() const override { return 1; }
@@ -79,9 +106,22 @@ class RoughWaltonModel final : public TransportModel {
     return capability == Capability::table || capability == Capability::evolve || capability == Capability::stability;
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
-    return rough_evolution_parameters(parameters(), {"dimension", "alpha", "beta0", "moment_of_inertia", "friction"});
+    auto specs = parameters();
+    // gkt evolve: the Maxwellian equations (default, as before) or the first-Sonine balances (theory.md §19.19).
+    for (auto& spec : specs)
+      if (spec.name == "hcs") {
+        spec.choices = {"maxwellian", "linear", "linear-or-maxwellian"};
+        spec.description =
+            "scheme of the trajectory: the Maxwellian two-temperature equations, or the first-Sonine balances "
+            "carrying a20, a02, a11 (linear; refused where the linear HCS has no root), or linear where it has one "
+            "and Maxwellian elsewhere";
+      }
+    specs = rough_evolution_parameters(specs, {"dimension", "alpha", "beta0", "moment_of_inertia", "friction", "hcs"});
+    for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
+    return specs;
   }
-  /// T_t(τ), T_r(τ) from Maxwellians, the Walton rates by quadrature at every step (theory.md §19.13).
+  /// T_t(τ), T_r(τ) from Maxwellians, the Walton rates by quadrature at every step (theory.md §19.13), or with
+  /// hcs = "linear" the first-Sonine trajectory with a20, a02, a11 (theory.md §19.19).
   Trajectory evolve(const TrajectoryRequest& request) override {
     return rough_walton_trajectory(evolution_parameters(), request);
   }
@@ -91,10 +131,42 @@ class RoughWaltonModel final : public TransportModel {
     const auto specs = parameters();
     const auto [d, alpha, beta0, kappa] = read_rough_grain(specs, point, "beta0");
     require_first_approximation(order, "rough-walton");
-    const RoughWaltonState s =
-        rough_walton_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"));
+    // The HCS columns of `hcs` (theory.md §19.19); the transport and stability columns use the Maxwellian θ, ζ*.
+    const std::string scheme = SchemaPoint(specs, point).choice("hcs");
+    std::optional<RoughWaltonCumulantState> linear;
+    if (scheme != "maxwellian" && std::any_of(coefficients.begin(), coefficients.end(), is_walton_hcs_column)) {
+      linear = rough_walton_linear_cooling_state(d, alpha.to_double(), beta0.to_double(), kappa.to_double(),
+                                                 SchemaPoint(specs, point).number("friction").to_double());
+      if (!linear->linear_scheme_solved && scheme == "linear")
+        throw std::invalid_argument(
+            "hcs: the linear scheme of the Walton gas has no root with realizable cumulants at dimension = " +
+            std::to_string(d) + ", alpha = " + alpha.to_decimal_string() + ", beta0 = " + beta0.to_decimal_string() +
+            ", moment_of_inertia = " + kappa.to_decimal_string() +
+            ", friction = " + SchemaPoint(specs, point).number("friction").to_decimal_string() +
+            " (strong inelasticity with weak roughness or weak friction, docs/theory.md section 19.19); use hcs = "
+            "\"maxwellian\" or \"linear-or-maxwellian\"");
+    }
+    // The Maxwellian state with its transport coefficients, unless `linear` (which carries the Maxwellian θ, ζ*)
+    // serves every column.
+    RoughWaltonState s;
+    if (!linear || !std::all_of(coefficients.begin(), coefficients.end(), is_walton_hcs_column))
+      s = rough_walton_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"));
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
+      if (linear && is_walton_hcs_column(name)) {
+        const bool solved = linear->linear_scheme_solved && !linear->spin_decoupled;
+        if (name == "rotational_temperature_ratio") {
+          out.push_back(solved ? linear_value(linear->temperature_ratio, linear->maxwellian_temperature_ratio)
+                               : first_approximation(linear->maxwellian_temperature_ratio));
+        } else if (name == "cooling_rate") {
+          out.push_back(solved ? linear_value(linear->cooling_rate, linear->maxwellian_cooling_rate)
+                               : first_approximation(linear->maxwellian_cooling_rate));
+        } else {
+          const double a = name == "a20" ? linear->a20 : name == "a02" ? linear->a02 : linear->a11;
+          out.push_back(solved ? linear_value(a, 0) : first_approximation(std::nan("")));
+        }
+        continue;
+      }
       const auto& critical = stability_coefficient_names();
       if (std::find(critical.begin(), critical.end(), name) != critical.end()) {
         out.push_back(rough_stability_value(walton_stability(d, s), name));  // theory.md §19.15
@@ -115,6 +187,8 @@ class RoughWaltonModel final : public TransportModel {
         x = s.bulk_viscosity;  // theory.md (19.18)
       } else if (name == "cooling_rate_first_order") {
         x = s.cooling_rate_first_order;  // theory.md (19.19)
+      } else if (name == "a20" || name == "a02" || name == "a11") {
+        x = s.spin_decoupled ? std::nan("") : 0.0;  // hcs = "maxwellian": no cumulants
       } else {
         throw std::invalid_argument("coefficients: unknown coefficient '" + name +
                                     "' for model rough-walton; valid: " + join(coefficient_names()));

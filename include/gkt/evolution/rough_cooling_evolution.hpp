@@ -87,6 +87,21 @@ RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& 
                                                  double rotational0, const std::vector<double>& times, double rtol,
                                                  double atol, const RoughCumulants& initial_cumulants = {});
 
+/// The linear scheme's collision averages as a function of τ = θ/κ, for a gas without exact engine tables (the
+/// Walton gas, rough_walton_evolution.hpp).
+struct RoughLinearProductions {
+  std::function<RoughProductionTable(double tau)> table;  ///< R_X[ψ_t] at τ (RoughCoolingRates::production)
+  double collision_a20 = 0;  ///< the collision frequency is 1 + collision_a20 · a20 times the Maxwellian one
+  double kappa = 0;          ///< κ (τ = θ/κ)
+};
+
+/// Returns the first-Sonine trajectory (theory.md (19.24)–(19.25)) with the balances of rough_linear_balances
+/// from `productions`; otherwise as evolve_rough_cooling with linear = true.
+RoughEvolutionResult evolve_rough_linear_cooling(int dimension, const RoughLinearProductions& productions,
+                                                 double translational0, double rotational0,
+                                                 const std::vector<double>& times, double rtol, double atol,
+                                                 const RoughCumulants& initial_cumulants = {});
+
 /// Maxwellian rates at θ = T_r/T_t: (z_t, z_r) = (ζ_t, ζ_r)/(nσ^{d−1}v_t ν) (e.g. from the Walton
 /// quadrature of rough_walton.hpp, times 4/(d+2)).
 using RoughMaxwellianRates = std::function<std::array<double, 2>(double temperature_ratio)>;

@@ -147,12 +147,15 @@ std::array<double, 3> RoughCoolingRates::maxwellian_fourth_moments() const {
 double RoughCoolingRates::collision_frequency_factor(double a20) const { return 1 + impl_->collision_a20 * a20; }
 
 RoughBalances RoughCoolingRates::at(double tau, const std::array<double, 3>& a) const {
-  const int d = impl_->dimension;
-  const double dt = d, dr = d == 3 ? 3 : 1;
-  const std::array<double, 3> base = maxwellian_fourth_moments();
-  std::array<std::array<double, 5>, 4> v{};
+  RoughProductionTable v{};
   for (std::size_t w = 0; w < 4; ++w)
     for (std::size_t t = 0; t < 5; ++t) v[w][t] = impl_->table[w][t](tau);
+  return rough_linear_balances(impl_->dimension, v, a);
+}
+
+RoughBalances rough_linear_balances(int dimension, const RoughProductionTable& v, const std::array<double, 3>& a) {
+  const double dt = dimension, dr = dimension == 3 ? 3 : 1;
+  const std::array<double, 3> base{dt / 2 * (dt / 2 + 1), dr / 2 * (dr / 2 + 1), dt / 2 * dr / 2};
   RoughBalances b;
   const double z0 = -2 / dt * v[0][0];
   b.translational_rate = z0;

@@ -25,6 +25,16 @@ struct RoughBalances {
   std::array<std::array<double, 3>, 4> jacobian{};  ///< ∂G/∂a (exact: G is linear in a)
 };
 
+/// The collision averages of the linear scheme at one τ: productions[X][t] = R_X[ψ_t] (weights X ∈ {1, S2(x),
+/// S2(y), S1(x)S1(y)}, tests t ∈ {x, y, x², y², xy}; RoughCoolingRates::production, theory.md (19.10)).
+using RoughProductionTable = std::array<std::array<double, 5>, 4>;
+
+/// Returns the rates and the linear-scheme balances at cumulants a = (a20, a02, a11) from the collision
+/// averages at one τ, for dimension d ∈ {2, 3} (theory.md (19.10)–(19.11); the algebra of
+/// RoughCoolingRates::at, shared with the Walton gas's quadrature, rough_walton_cumulants.hpp).
+RoughBalances rough_linear_balances(int dimension, const RoughProductionTable& productions,
+                                    const std::array<double, 3>& a);
+
 /// The rough gas's collisional rates for d ∈ {2, 3}, α ∈ (0, 1], β ∈ [−1, 1], κ ∈ (0, 1].
 class RoughCoolingRates {
  public:
