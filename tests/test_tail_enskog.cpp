@@ -111,10 +111,12 @@ TEST(TailEnskog, ConvergesWithResolutionAtStrongDissipation) {
   }
 }
 
-// Bad input: a negative packing fraction or χ < 1 is refused, naming the field.
+// Bad input: a packing fraction outside [0, max] or χ < 1 is refused, naming the field.
 TEST(TailEnskog, RejectsAnUnphysicalDenseState) {
   EXPECT_THROW((void)gkt::tail_galerkin_sequence(3, 0.5, 2, gkt::TailTrialSpace::power_law, {-0.1, 1.0, 0.0}),
                std::invalid_argument);
   EXPECT_THROW((void)gkt::tail_galerkin_sequence(3, 0.5, 2, gkt::TailTrialSpace::power_law, {0.1, 0.5, 0.0}),
                std::invalid_argument);
+  EXPECT_THROW((void)gkt::tail_galerkin_sequence(3, 0.5, 2, gkt::TailTrialSpace::power_law, {0.6, 10.0, 0.0}),
+               std::invalid_argument);  // above the 3D maximum 0.5
 }

@@ -24,6 +24,7 @@
 #include <utility>
 
 #include "gkt/operators/collisional_transfer.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
 #include "transport/monodisperse/tail_collisional_transfer.hpp"
 
 namespace gkt {
@@ -971,8 +972,12 @@ std::vector<TailGalerkinValues> run_tail_sequence(int dimension, double alpha, i
 
 std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order, TailTrialSpace trial,
                                                        const EnskogState& dense) {
-  if (!(dense.packing_fraction >= 0 && dense.chi >= 1))
-    throw std::invalid_argument("packing_fraction: must be >= 0 with a contact value chi >= 1");
+  if (dimension == 2 || dimension == 3) {  // the dimension itself is checked by run_tail_sequence
+    const double phi_max = max_packing_fraction(dimension).to_double();
+    if (!(dense.packing_fraction >= 0 && dense.packing_fraction <= phi_max && dense.chi >= 1))
+      throw std::invalid_argument("packing_fraction: must be a number in [0, " + std::to_string(phi_max) +
+                                  "] with a contact value chi >= 1, got " + std::to_string(dense.packing_fraction));
+  }
   return run_tail_sequence(dimension, alpha, max_order, trial, nullptr, dense);
 }
 
