@@ -1,7 +1,7 @@
-// The Enskog collisional-transfer integrals of the tail scheme (docs/theory.md §15.8): the σ̂- and
-// angle-integrated kernels at each radial node (c1, c2) of the tail scheme's 2-D rule, so that every
-// collisional-transfer table of collisional_transfer.hpp becomes a sum over nodes of φ(c1) × (a partner
-// function of c2) × kernel — for any isotropic HCS φ, not only a finite Sonine sum.
+// The Enskog collisional-transfer integrals of the tail scheme (docs/theory.md §15.8; [garzo1999] for the
+// revised Enskog equation): the σ̂- and angle-integrated kernels at each radial node (c1, c2) of the tail scheme's 2-D
+// rule, so that every collisional-transfer table of collisional_transfer.hpp becomes a sum over nodes of φ(c1) × (a
+// partner function of c2) × kernel — for any isotropic HCS φ, not only a finite Sonine sum.
 #pragma once
 
 #include <cstddef>
