@@ -14,6 +14,7 @@
 #include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "gkt/models/transport_model.hpp"
 #include "gkt/transport/closed_forms/first_sonine_formulas.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/monodisperse/homogeneous_cooling_state.hpp"
 #include "gkt/transport/monodisperse/tail_galerkin.hpp"
@@ -311,7 +312,7 @@ TEST(ModelFacade, ToleranceDrivesTheMixtureHcsOrder) {
 }
 
 // scheme = "tail" (theory.md §10.6): the model's value at order N is the solver's resolution N with the
-// error (6.1) from N + 1, N + 2, in 3D and 2D; what the scheme does not do (dense, linear HCS, a4,
+// error (6.1) from N + 1, N + 2, in 3D and 2D, dilute and dense; what the scheme does not do (linear HCS, a4,
 // closed forms, orders past the cap) is refused with the field named.
 TEST(ModelFacade, TailSchemeThroughTheModel) {
   auto model = gkt::make_transport_model("smooth-inelastic");
@@ -342,9 +343,18 @@ TEST(ModelFacade, TailSchemeThroughTheModel) {
   EXPECT_NEAR(v2[0].value.to_double(), seq2[2].shear_viscosity, 1e-12);
   EXPECT_NEAR(v2[1].value.to_double(), seq2[2].a2, 1e-12);
   EXPECT_GT(std::fabs(v2[1].value.to_double() - v[1].value.to_double()), 1e-2);  // not the 3D values
+  // Dense (theory.md §15.8): the model's values are the Enskog sequence at φ with the Carnahan–Starling χ.
   ParameterPoint dense = p;
   dense.numbers["packing_fraction"] = Rational(1, 10);
-  EXPECT_TRUE(contains(refused(dense, {"a2"}, 2), "scheme: \"tail\" is dilute only"));
+  const auto vd = model->evaluate(dense, {"thermal_conductivity", "bulk_viscosity", "cooling_rate", "pressure"}, order);
+  const gkt::EnskogState state = gkt::enskog_state(3, 0.1);
+  const auto seqd = gkt::tail_galerkin_sequence(3, 0.5, 5, gkt::TailTrialSpace::power_law, state);
+  ASSERT_EQ(vd.size(), 4U);
+  EXPECT_NEAR(vd[0].value.to_double(), seqd[2].thermal_conductivity, 1e-12);
+  EXPECT_NEAR(vd[1].value.to_double(), seqd[2].bulk_viscosity, 1e-12);
+  EXPECT_NEAR(vd[2].value.to_double(), state.chi * seq[2].cooling_rate, 1e-12);  // (15.1)
+  EXPECT_NEAR(vd[3].value.to_double(), state.pressure(3, 0.5), 1e-15);           // (15.5)
+  EXPECT_GT(std::fabs(vd[0].value.to_double() - v[0].value.to_double()), 0.01);  // not the dilute κ* (1.623)
   ParameterPoint linear = p;
   linear.choices["hcs"] = "linear";
   EXPECT_TRUE(contains(refused(linear, {"a2"}, 1), "hcs:"));

@@ -151,7 +151,7 @@ class SmoothInelasticModel final : public TransportModel {
         choice_spec("hcs", "cumulant scheme of the homogeneous cooling state", {"nonlinear", "linear"}),
         choice_spec("scheme",
                     "trial-function weight: Maxwellian (standard), HCS (modified) or Gaussian core with the "
-                    "exponential HCS tail (tail: dilute, converges at strong dissipation)",
+                    "exponential HCS tail (tail: dilute or Enskog, converges at strong dissipation)",
                     {"standard", "modified", "tail"}),
         {"packing_fraction",
          ParameterSpec::Kind::real,
@@ -192,7 +192,12 @@ class SmoothInelasticModel final : public TransportModel {
       throw std::invalid_argument("packing_fraction: must be a number in [0, " +
                                   max_packing_fraction(d).to_decimal_string() +
                                   "] for dimension = " + std::to_string(d) + ", got " + phi.to_decimal_string());
-    if (p.choice("scheme") == "tail") return evaluate_tail(d, alpha, phi, scheme, coefficients, order);
+    if (p.choice("scheme") == "tail") {
+      const PairCorrelation& closure_tail = pair_correlation(closure);
+      const Dense dense_tail{phi, phi.sign() == 0 ? Rational(1) : closure_tail.contact_value(d, phi),
+                             phi.sign() == 0 ? Rational(0) : closure_tail.packing_derivative(d, phi), closure};
+      return evaluate_tail(d, alpha, dense_tail, scheme, coefficients, order);
+    }
     if (!order.tolerance && order.order > kMaxOrder)
       throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(kMaxOrder) +
                                   "] for scheme = \"" + p.choice("scheme") + "\", got " + std::to_string(order.order));
@@ -338,13 +343,12 @@ class SmoothInelasticModel final : public TransportModel {
   }
 
  private:
-  /// The dilute values (2D, 3D) of the tail scheme (tail_galerkin.hpp, theory.md §10.6): a2, a3, ζ*, η*, κ*,
-  /// μ* (and the HCS stability values from them) at resolution N with the error (6.1) from N + 1, N + 2, in the
-  /// power-law trial space.
-  std::vector<CoefficientValue> evaluate_tail(int d, const Rational& alpha, const Rational& phi,
+  /// The values (2D, 3D) of the tail scheme (tail_galerkin.hpp, theory.md §10.6; dense: §15.8): a2, a3, ζ*,
+  /// η*, κ*, μ* (dense also the bulk viscosity and ζ_U; the HCS stability values from them) at resolution N with
+  /// the error (6.1) from N + 1, N + 2, in the power-law trial space; the pressure exactly (15.5).
+  std::vector<CoefficientValue> evaluate_tail(int d, const Rational& alpha, const Dense& dense,
                                               const std::string& hcs_scheme,
                                               const std::vector<std::string>& coefficients, const OrderRequest& order) {
-    if (phi.sign() != 0) throw std::invalid_argument("scheme: \"tail\" is dilute only: use packing_fraction = 0");
     if (hcs_scheme != "nonlinear")
       throw std::invalid_argument("hcs: the tail scheme solves the full HCS: use hcs = \"nonlinear\"");
     // The highest resolution with an error (two more needed); the model's order range covers it (`gkt table`
@@ -353,11 +357,10 @@ class SmoothInelasticModel final : public TransportModel {
     if (!order.tolerance && order.order > highest)
       throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(highest) +
                                   "] for scheme = \"tail\", got " + std::to_string(order.order));
-    const Dense dilute{Rational(0), Rational(1), Rational(0), "carnahan-starling"};
     std::vector<CoefficientValue> out;
     for (const auto& c : coefficients) {
-      if (c == "pressure") {
-        out.push_back({reduced_pressure(d, alpha, Rational(0)), Rational(0), order.order, true, true, true});
+      if (c == "pressure") {  // exact, independent of the cumulants (theory.md (15.5))
+        out.push_back({reduced_pressure(d, alpha, dense.phi * dense.chi), Rational(0), order.order, true, true, true});
         continue;
       }
       if (c == "tail_amplitude") {
@@ -380,11 +383,13 @@ class SmoothInelasticModel final : public TransportModel {
         if (c == "a3") return v.a3;
         if (c == "cooling_rate") return v.cooling_rate;
         if (c == "tail_exponent") return v.tail_exponent;
-        const NavierStokesValues ns{v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient, 0, 0};
-        return pick_transport(ns, *transport, d, v.cooling_rate, dilute, alpha);
+        const NavierStokesValues ns{v.shear_viscosity, v.thermal_conductivity, v.density_heat_coefficient,
+                                    v.bulk_viscosity, v.cooling_rate_first_order};
+        // pick_transport wants the dilute ζ* (the dense one is χ times it, theory.md (15.1)).
+        return pick_transport(ns, *transport, d, v.cooling_rate / dense.chi.to_double(), dense, alpha);
       };
       auto value_at = [&](int n) {
-        const auto& seq = tail_sequence(d, alpha, n + 2);
+        const auto& seq = tail_sequence(d, alpha, dense, n + 2);
         const auto& s0 = seq[static_cast<std::size_t>(n - 1)];
         const auto& s1 = seq[static_cast<std::size_t>(n)];
         const auto& s2 = seq[static_cast<std::size_t>(n + 1)];
@@ -450,12 +455,12 @@ class SmoothInelasticModel final : public TransportModel {
   }
   /// The tail-scheme values at resolutions 1 … at least `needed` (memoised per d and α; a longer sequence
   /// is computed in steps of four resolutions, the collision kernel being shared within one sequence).
-  const std::vector<TailGalerkinValues>& tail_sequence(int d, const Rational& alpha, int needed) {
-    auto& seq = tail_memo_[std::to_string(d) + ":" + alpha.to_string()];
+  const std::vector<TailGalerkinValues>& tail_sequence(int d, const Rational& alpha, const Dense& dense, int needed) {
+    auto& seq = tail_memo_[std::to_string(d) + ":" + dense.key(alpha)];
     if (static_cast<int>(seq.size()) < needed)
       seq = tail_galerkin_sequence(d, alpha.to_double(),
                                    std::min(kTailGalerkinMaxOrder, std::max(needed, static_cast<int>(seq.size()) + 4)),
-                                   TailTrialSpace::power_law);
+                                   TailTrialSpace::power_law, dense.phi.sign() == 0 ? EnskogState{} : dense.state());
     return seq;
   }
   /// The transport value `which` from one order's η*, κ*, μ*, …; the stability values also need the

@@ -15,11 +15,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 #include <thread>
 #include <tuple>
+#include <utility>
+
+#include "gkt/operators/collisional_transfer.hpp"
+#include "gkt/transport/common/pair_correlation.hpp"
+#include "transport/monodisperse/tail_collisional_transfer.hpp"
 
 namespace gkt {
 
@@ -93,6 +99,17 @@ struct TrialWeight {
     return std::exp(log_weight(c, tail) + (power == 0 ? 0.0 : 0.5 * power * std::log1p(c * c)));
   }
   [[nodiscard]] double variable(double c) const { return in_speed ? std::sqrt(4 + c * c) - 2 : c * c; }
+  /// d(log of the weight)/dc.
+  [[nodiscard]] double log_slope(double c) const {
+    double slope = -2 * c;  // Gaussian
+    if (!std::isinf(tail)) {
+      const double r = std::sqrt(1 + 4 * c * c / (tail * tail));
+      slope = -4 * c / (r + 1) + 8 * c * c * c / (tail * tail * r * (r + 1) * (r + 1));
+    }
+    return slope + power * c / (1 + c * c);
+  }
+  /// d(variable)/dc.
+  [[nodiscard]] double variable_slope(double c) const { return in_speed ? c / std::sqrt(4 + c * c) : 2 * c; }
 };
 
 /// ν = √2 π^{(d−1)/2}/Γ(d/2): the factor that turns the reduced operator of (9.1) into the
@@ -408,6 +425,25 @@ struct TrialBasis {
       out[k + 1] = ((x - a[static_cast<std::size_t>(k)]) * out[k] - b[static_cast<std::size_t>(k)] * out[k - 1]) /
                    b[static_cast<std::size_t>(k + 1)];
   }
+  /// Σ_k coefficient_k w(c) Q_k(c) and its derivative in c (the HCS φ and φ' for the collisional transfer).
+  [[nodiscard]] std::pair<double, double> function_and_slope(double c, const Eigen::VectorXd& coefficient) const {
+    const double x = weight.variable(c);
+    const auto k_max = static_cast<int>(coefficient.size()) - 1;
+    double q_prev = 0, q = q0, dq_prev = 0, dq = 0, f = coefficient[0] * q, df = 0;
+    for (int k = 0; k < k_max; ++k) {
+      const auto ku = static_cast<std::size_t>(k);
+      const double qn = ((x - a[ku]) * q - (k > 0 ? b[ku] : 0.0) * q_prev) / b[ku + 1];
+      const double dqn = (q + (x - a[ku]) * dq - (k > 0 ? b[ku] : 0.0) * dq_prev) / b[ku + 1];
+      q_prev = q;
+      q = qn;
+      dq_prev = dq;
+      dq = dqn;
+      f += coefficient[k + 1] * q;
+      df += coefficient[k + 1] * dq;
+    }
+    const double w = weight(c);
+    return {w * f, w * (weight.log_slope(c) * f + weight.variable_slope(c) * df)};
+  }
 };
 
 TrialBasis trial_basis(const Grid& grid, const TrialWeight& weight, int k_max) {
@@ -532,6 +568,67 @@ Eigen::MatrixXd linearised_operator(const Grid& grid, const Kernel& kernel, Fami
   return l;
 }
 
+/// The collisional-transfer tables of collisional_transfer.hpp over the tail-basis HCS φ instead of a Sonine
+/// sum (theory.md §15.8): f_M Σ a_k S_k → φ, f_M Σ a_l D_l c → ∂_c φ = φ'(c) ĉ, f_M Σ a_l T_l → −½∂_c·(cφ)
+/// = −½(d φ + c φ'), and a trial function f_M S_q → F_q of the mode's basis.
+struct DenseTransfer {
+  std::vector<double> shear_source, heat_source_temperature, heat_source_density, scalar_source;  // [p]
+  std::vector<double> shear_flux, heat_flux, cooling_scalar;  // [q]: tensor, vector, scalar (HCS basis) trials
+  double shear_gradient = 0, heat_gradient_temperature = 0, heat_gradient_density = 0, cooling_gradient = 0;
+};
+
+DenseTransfer dense_transfer_sums(const Grid& grid, const detail::TransferKernel& kernel, const TrialBasis& hcs,
+                                  const Eigen::VectorXd& phi_coefficients, const TrialBasis& vector_basis,
+                                  const TrialBasis& tensor_basis, int n_max) {
+  const int k_max = n_max + 1;
+  const auto nn = static_cast<std::size_t>(n_max + 1), kk = static_cast<std::size_t>(k_max + 1);
+  const double d = grid.dimension;
+  DenseTransfer t;
+  t.shear_source.assign(nn, 0.0);
+  t.heat_source_temperature.assign(nn, 0.0);
+  t.heat_source_density.assign(nn, 0.0);
+  t.scalar_source.assign(kk, 0.0);
+  t.shear_flux.assign(nn, 0.0);
+  t.heat_flux.assign(nn, 0.0);
+  t.cooling_scalar.assign(kk, 0.0);
+  // φ, φ' on the 1-D rule (the nodes off it, inside the diagonal triangles, directly).
+  std::vector<std::pair<double, double>> on_rule(grid.c.size());
+  for (std::size_t i = 0; i < grid.c.size(); ++i) on_rule[i] = hcs.function_and_slope(grid.c[i], phi_coefficients);
+  std::vector<double> fv(nn), ft(nn), fs(kk);
+  for (std::size_t node = 0; node < grid.pairs.size(); ++node) {
+    const auto& r = grid.pairs[node];
+    const double phi1 = r.i1 >= 0 ? on_rule[static_cast<std::size_t>(r.i1)].first
+                                  : hcs.function_and_slope(r.c1, phi_coefficients).first;
+    const auto [phi2, slope2] =
+        r.i2 >= 0 ? on_rule[static_cast<std::size_t>(r.i2)] : hcs.function_and_slope(r.c2, phi_coefficients);
+    const double gradient2 = slope2 / r.c2;                         // ∂_c φ = (φ'/c) c
+    const double temperature2 = -0.5 * (d * phi2 + r.c2 * slope2);  // −½∂_c·(cφ)
+    trial_values(vector_basis, n_max, r.c2, fv.data());
+    trial_values(tensor_basis, n_max, r.c2, ft.data());
+    trial_values(hcs, k_max, r.c2, fs.data());
+    const double* shear = kernel.family(node, detail::kTransferShearSource);
+    const double* heat = kernel.family(node, detail::kTransferHeatSource);
+    const double* scalar = kernel.family(node, detail::kTransferScalarSource);
+    const double* v = kernel.scalars(node);
+    for (std::size_t p = 0; p < nn; ++p) {
+      t.shear_source[p] += phi1 * gradient2 * shear[p];
+      t.heat_source_temperature[p] += phi1 * temperature2 * heat[p];
+      t.heat_source_density[p] += phi1 * phi2 * heat[p];
+      t.shear_flux[p] += phi1 * ft[p] * v[detail::kTransferShearFlux];
+      t.heat_flux[p] += phi1 * fv[p] * v[detail::kTransferHeatFlux];
+    }
+    for (std::size_t p = 0; p < kk; ++p) {
+      t.scalar_source[p] += phi1 * gradient2 * scalar[p];
+      t.cooling_scalar[p] += phi1 * fs[p] * v[detail::kTransferCoolingScalar];
+    }
+    t.shear_gradient += phi1 * gradient2 * v[detail::kTransferShearGradient];
+    t.heat_gradient_temperature += phi1 * temperature2 * v[detail::kTransferHeatGradient];
+    t.heat_gradient_density += phi1 * phi2 * v[detail::kTransferHeatGradient];
+    t.cooling_gradient += phi1 * gradient2 * v[detail::kTransferCoolingGradient];
+  }
+  return t;
+}
+
 /// Returns the solution x of m x = rhs with every row scaled to unit norm first. The rows of the Sonine
 /// tests S_p differ in size by up to 1e15 at N ≥ 11 and α = 0.2 (the tail reaches c ≈ 30 there), and
 /// full-pivoting LU of the unscaled matrix then loses the small rows: the tensor mode broke down at
@@ -544,9 +641,11 @@ Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& m, const Eigen::Vector
 /// One resolution N with the weight's exponent `tail` and the trial space `trial` (TrialWeight): the HCS
 /// with trial/test degree K = N + 1 (Newton from `start`, φ on the 1-D rule — the previous solution, or
 /// the Maxwellian if empty; the solution is left there), then, if `transport`, the three Chapman–Enskog modes
-/// with degree N (theory.md (10.12)–(10.14)).
+/// with degree N (theory.md (10.12)–(10.14)); with `transfer` (the dense gas `dense`), those of the Enskog gas
+/// and its scalar mode (theory.md §15.8).
 TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, double alpha, TailTrialSpace trial,
-                                    double tail, int order, bool transport, std::vector<double>& start) {
+                                    double tail, int order, bool transport, std::vector<double>& start,
+                                    const EnskogState& dense = {}, const detail::TransferKernel* transfer = nullptr) {
   const double d = grid.dimension, m = d / 2 - 1, nu = frequency_factor(grid.dimension);
   const int k_max = order + 1, n_max = order;
   const auto kk = static_cast<std::size_t>(k_max + 1);
@@ -676,6 +775,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
   std::vector<double> qv(nn), qt(nn);
   Eigen::MatrixXd mv = Eigen::MatrixXd::Zero(ni, ni), dv = mv, dt = mv;
   Eigen::VectorXd ua = Eigen::VectorXd::Zero(ni), ub = ua, ue = ua, vector_flux = ua, tensor_flux = ua;
+  Eigen::VectorXd pressure_source = ua;  // ∫φ((d/2)S_p + xS_p'): the part of U^A, U^B ∝ p* (theory.md (15.6))
   std::vector<double> sv(nn), st(nn);
   for (std::size_t i = 0; i < grid.c.size(); ++i) {
     const double c = grid.c[i], x = c * c;
@@ -693,6 +793,7 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
       const double xv = x_derivative(sv, p, m + 1), xt = x_derivative(st, p, m + 2);
       ua[p] += phi * ((d / 2) * sv[pu] + xv - x * sv[pu] - x * xv);  // theory.md (10.5)
       ub[p] += phi * ((d / 2) * sv[pu] + xv - x * sv[pu]);
+      pressure_source[p] += phi * ((d / 2) * sv[pu] + xv);
       ue[p] -= phi * x * ((d + 1 - 2 / d) * st[pu] + 2 * ((d - 1) / d) * xt);
       for (int k = 0; k <= n_max; ++k) {
         const double fv = wv * qv[static_cast<std::size_t>(k)], ft = wt * qt[static_cast<std::size_t>(k)];
@@ -717,21 +818,76 @@ TailGalerkinValues solve_resolution(const Grid& grid, const Kernel& kernel, doub
       -linearised_operator(grid, kernel, kVectorSelf, kVectorPartner, vector_basis, n_max, start, phi_at);
   const Eigen::MatrixXd lt =
       -linearised_operator(grid, kernel, kTensorSelf, kTensorPartner, tensor_basis, n_max, start, phi_at);
+  // Enskog (theory.md §15.8): the operator and ζ_r carry χ (the solutions divide by it), the kinetic sources
+  // gain the pressure terms (15.6) and the collisional-transfer sources, the fluxes their collisional parts.
+  const bool is_dense = transfer != nullptr;
+  const double chi = is_dense ? dense.chi : 1.0, phi_chi = dense.packing_fraction * chi;
+  const double dlnchi = is_dense ? dense.phi_dchi / chi : 0.0;  // φ ∂ln χ/∂φ
+  DenseTransfer dt_sums;
+  if (is_dense) {
+    dt_sums = dense_transfer_sums(grid, *transfer, basis, b, vector_basis, tensor_basis, n_max);
+    const double e = collisional_transfer_factor(grid.dimension), inv = 1 / (1 + alpha);
+    const double p_star = dense.pressure(grid.dimension, alpha);
+    const double phi_dp = std::pow(2.0, d - 2) * (1 + alpha) * phi_chi * (1 + dlnchi);  // φ ∂p*/∂φ
+    for (int p = 0; p <= n_max; ++p) {
+      ua[p] += (p_star - 1) * pressure_source[p] + e * phi_chi * inv * dt_sums.heat_source_temperature[p];  // (15.6)
+      ub[p] += (p_star + phi_dp - 1) * pressure_source[p] +
+               e * phi_chi * (1 + 0.5 * dlnchi) * inv * dt_sums.heat_source_density[p];
+      ue[p] -= e * phi_chi * inv * dt_sums.shear_source[p];                                                 // (15.4)
+      vector_flux[p] += e * phi_chi * inv * dt_sums.heat_flux[p];                                           // (15.10)
+      tensor_flux[p] += 0.5 * (1 + alpha) * d / (d - 1) * e * phi_chi * inv * inv * dt_sums.shear_flux[p];  // (15.7)
+    }
+  }
   // Row p = 0 of the vector modes is the solubility condition ∫ c·c X = 0 (no momentum).
   Eigen::MatrixXd la = lv - (zeta_r / 2) * (dv + mv), lb = lv - (zeta_r / 2) * dv;
   la.row(0) = mv.row(0);
   lb.row(0) = mv.row(0);
   ua[0] = 0;
-  const Eigen::VectorXd heat = solve_equilibrated(la, ua);
-  Eigen::VectorXd rb = ub + zeta_r * (mv * heat);
+  const Eigen::VectorXd heat = solve_equilibrated(la, ua) / chi;
+  // The A→B coupling comes from ∂_t^(0) of the density gradient: (1 + φ∂_φ ln χ) in the dense gas (§15.3).
+  Eigen::VectorXd rb = ub / chi + zeta_r * (1 + dlnchi) * (mv * heat);
   rb[0] = 0;
   const Eigen::VectorXd density = solve_equilibrated(lb, rb);
-  const Eigen::VectorXd shear = solve_equilibrated(lt - (zeta_r / 2) * ((d - 1) / d) * dt, ue);
+  const Eigen::VectorXd shear = solve_equilibrated(lt - (zeta_r / 2) * ((d - 1) / d) * dt, ue) / chi;
   const double kappa_factor = -16 * (d - 1) * nu / (d * d * (d + 2) * (d + 2));  // theory.md (10.6)
   out.thermal_conductivity = kappa_factor * vector_flux.dot(heat);
   // Elastic: μ* = 0 exactly (ζ_r = 0 and the source U^B of (10.5) vanishes for the Maxwellian).
   out.density_heat_coefficient = alpha == 1 ? 0.0 : kappa_factor * vector_flux.dot(density);
   out.shear_viscosity = -8 * nu / (d * (d + 2) * (d + 2)) * tensor_flux.dot(shear);  // theory.md (10.7)
+  if (is_dense) {
+    const double g_d = collisional_gradient_factor(grid.dimension), phi = dense.packing_fraction;
+    const double gradient = g_d * (1 + alpha) * chi * phi * phi / (1 + alpha);
+    out.thermal_conductivity += -8 * (d - 1) / d * gradient * dt_sums.heat_gradient_temperature;  // (15.11)
+    if (alpha != 1) out.density_heat_coefficient += -8 * (d - 1) / d * gradient * dt_sums.heat_gradient_density;
+    out.shear_viscosity += 2 * gradient * dt_sums.shear_gradient;              // (15.8)
+    out.bulk_viscosity = (d + 2) / d * 2 * gradient * dt_sums.shear_gradient;  // (15.9)
+    out.cooling_rate *= chi;                                                   // (15.1)
+    if (alpha != 1) {  // the scalar mode and ζ_U (15.12), (15.13); zero at α = 1
+      // Trials F_0 … F_{N+1} of the HCS basis, tests S_0 … S_{N+1}; rows 0, 1 are the solubility conditions
+      // (no mass, no energy), as the Sonine scheme's trials S_2 … S_{N+1}.
+      const Eigen::MatrixXd ls = -linearised_operator(grid, kernel, kScalar, kScalar, basis, k_max, start, phi_at);
+      Eigen::MatrixXd scalar_matrix = ls + (zeta_r / 2) * (sonine_moment - 2 * drift);
+      scalar_matrix.row(0) = mass;
+      scalar_matrix.row(1) = energy;
+      const double e = collisional_transfer_factor(grid.dimension), inv = 1 / (1 + alpha);
+      const double p_star = dense.pressure(grid.dimension, alpha);
+      Eigen::VectorXd u_zeta = drift * b, u_fixed(kk);  // ⟨x S_p'⟩_φ
+      for (std::size_t p = 0; p < kk; ++p) {
+        const auto pi = static_cast<Eigen::Index>(p);
+        u_fixed[pi] = -2 / d * (1 - p_star) * u_zeta[pi] - e * phi_chi * inv / d * dt_sums.scalar_source[p];
+      }
+      u_zeta.head(2).setZero();
+      u_fixed.head(2).setZero();
+      const Eigen::VectorXd delta_fixed = solve_equilibrated(scalar_matrix, u_fixed) / chi;
+      const Eigen::VectorXd delta_zeta = solve_equilibrated(scalar_matrix, u_zeta) / chi;
+      // ζ11 = (2(1−α²)χ/d) Σ_q δ_q ⟨φ, F_q⟩_{+2}, ν for the raw operator's units.
+      Eigen::VectorXd cooling(kk);
+      for (std::size_t q = 0; q < kk; ++q)
+        cooling[static_cast<Eigen::Index>(q)] = nu * 2 * (1 - alpha * alpha) * chi / d * dt_sums.cooling_scalar[q];
+      const double zeta10 = -(1 - alpha) * e * phi_chi / (2 * d * d) * dt_sums.cooling_gradient;
+      out.cooling_rate_first_order = (zeta10 + cooling.dot(delta_fixed)) / (1 - cooling.dot(delta_zeta));
+    }
+  }
   out.solved = std::isfinite(out.thermal_conductivity) && std::isfinite(out.shear_viscosity) &&
                std::isfinite(out.density_heat_coefficient);
   return out;
@@ -755,7 +911,7 @@ namespace {
 
 /// tail_galerkin_sequence, also recording each resolution's φ_N on the nodes if `profiles` is given.
 std::vector<TailGalerkinValues> run_tail_sequence(int dimension, double alpha, int max_order, TailTrialSpace trial,
-                                                  std::vector<TailHcsProfile>* profiles) {
+                                                  std::vector<TailHcsProfile>* profiles, const EnskogState& dense) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
   if (!(alpha > 0 && alpha <= 1))
@@ -784,6 +940,14 @@ std::vector<TailGalerkinValues> run_tail_sequence(int dimension, double alpha, i
   }
   const Grid grid = make_grid(dimension, c_max, reach, degree);
   const Kernel kernel = collision_kernel(grid, alpha, p_max);
+  // Enskog: the collisional-transfer kernel on the same nodes (theory.md §15.8), independent of φ and χ.
+  std::optional<detail::TransferKernel> transfer;
+  if (dense.packing_fraction > 0) {
+    std::vector<detail::TransferNode> nodes;
+    nodes.reserve(grid.pairs.size());
+    for (const auto& r : grid.pairs) nodes.push_back({r.c1, r.c2, r.weight});
+    transfer = detail::collisional_transfer_kernel(dimension, alpha, p_max, nodes);
+  }
   std::vector<TailGalerkinValues> out;
   std::vector<double> start;  // φ of the previous solution on the 1-D rule (empty: the Maxwellian)
   for (int n = 1; n <= max_order; ++n) {
@@ -793,7 +957,8 @@ std::vector<TailGalerkinValues> run_tail_sequence(int dimension, double alpha, i
       used = tail;
       // Only the last pass solves the Chapman–Enskog modes (the others set A of the weight).
       const bool last = pass == kWeightPasses - 1 || alpha == 1;
-      v = solve_resolution(grid, kernel, alpha, trial, tail, n, last, start);
+      v = solve_resolution(grid, kernel, alpha, trial, tail, n, last, start, dense,
+                           last && transfer ? &*transfer : nullptr);
       if (!v.solved || alpha == 1) break;
       tail = v.tail_exponent;
     }
@@ -805,15 +970,21 @@ std::vector<TailGalerkinValues> run_tail_sequence(int dimension, double alpha, i
 
 }  // namespace
 
-std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order,
-                                                       TailTrialSpace trial) {
-  return run_tail_sequence(dimension, alpha, max_order, trial, nullptr);
+std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order, TailTrialSpace trial,
+                                                       const EnskogState& dense) {
+  if (dimension == 2 || dimension == 3) {  // the dimension itself is checked by run_tail_sequence
+    const double phi_max = max_packing_fraction(dimension).to_double();
+    if (!(dense.packing_fraction >= 0 && dense.packing_fraction <= phi_max && dense.chi >= 1))
+      throw std::invalid_argument("packing_fraction: must be a number in [0, " + std::to_string(phi_max) +
+                                  "] with a contact value chi >= 1, got " + std::to_string(dense.packing_fraction));
+  }
+  return run_tail_sequence(dimension, alpha, max_order, trial, nullptr, dense);
 }
 
 std::vector<TailHcsProfile> tail_galerkin_hcs_profiles(int dimension, double alpha, int max_order,
                                                        TailTrialSpace trial) {
   std::vector<TailHcsProfile> profiles;
-  run_tail_sequence(dimension, alpha, max_order, trial, &profiles);
+  run_tail_sequence(dimension, alpha, max_order, trial, &profiles, {});
   return profiles;
 }
 

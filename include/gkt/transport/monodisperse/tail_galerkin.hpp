@@ -11,6 +11,8 @@
 
 #include <vector>
 
+#include "gkt/transport/common/enskog_state.hpp"
+
 namespace gkt {
 
 /// Highest resolution (polynomial degree N of the transport modes) the tail scheme accepts; a cost cap
@@ -18,17 +20,19 @@ namespace gkt {
 /// scaling of the linear solves keeps 2D α = 0.2 stable to N = 24 (theory.md §10.6).
 inline constexpr int kTailGalerkinMaxOrder = 24;
 
-/// The tail-scheme quantities at one resolution N (dilute).
+/// The tail-scheme quantities at one resolution N (dilute, or the Enskog gas of theory.md §15.8).
 struct TailGalerkinValues {
   int order = 0;                        ///< N: CE trial/test degree N, HCS degree N + 1 in c²
   bool solved = false;                  ///< false if Newton's method found no HCS at this N
   double a2 = 0;                        ///< Sonine cumulant a2 of the HCS
   double a3 = 0;                        ///< Sonine cumulant a3 of the HCS
-  double cooling_rate = 0;              ///< ζ* = ζ/ν0
+  double cooling_rate = 0;              ///< ζ* = ζ/ν0 (dense: χ times the dilute, theory.md (15.1))
   double tail_exponent = 0;             ///< A of φ ~ exp(−A c): 2β/ζ_r, β = π^{(d−1)/2}/Γ((d+1)/2)
   double shear_viscosity = 0;           ///< η* = η/η0
   double thermal_conductivity = 0;      ///< κ* = κ/κ0
   double density_heat_coefficient = 0;  ///< μ* = nμ/(Tκ0)
+  double bulk_viscosity = 0;            ///< /η0; zero in the dilute gas (theory.md (15.9))
+  double cooling_rate_first_order = 0;  ///< ζ_U of ζ = ζ0 + ζ_U ∇·u (theory.md (15.13)); zero in the dilute gas
 };
 
 /// The trial functions of the tail scheme (docs/theory.md §10.6).
@@ -44,9 +48,13 @@ enum class TailTrialSpace {
 /// collision kernel on the quadrature grid is computed once for max_order (on every core) and shared by
 /// all resolutions (each resolution uses the leading Sonine test functions). Throws
 /// std::invalid_argument naming the field for d ∉ {2, 3}, α outside (0, 1] or max_order outside
-/// [1, kTailGalerkinMaxOrder].
+/// [1, kTailGalerkinMaxOrder]. With `dense.packing_fraction` > 0 the values are those of the (revised)
+/// Enskog gas at that density (theory.md §15.8): χ-scaled operator and ζ*, the kinetic sources of §15.3 and
+/// the collisional transfer of §15.2–15.5 by quadrature over the tail-basis φ; the collisional-transfer
+/// kernel is computed once per sequence as the collision kernel.
 std::vector<TailGalerkinValues> tail_galerkin_sequence(int dimension, double alpha, int max_order,
-                                                       TailTrialSpace trial = TailTrialSpace::even);
+                                                       TailTrialSpace trial = TailTrialSpace::even,
+                                                       const EnskogState& dense = {});
 
 /// The HCS of the tail scheme at one resolution as a function of the speed, for the tail amplitude
 /// (hcs_tail_amplitude.hpp, theory.md §10.7).
