@@ -27,7 +27,7 @@ struct DenseCellClosures {
 
 /// Returns the closures of `g` (φ > 0; σ_k > 0; x_k summing to 1). I_ℓij by the binary's exact (18.20)
 /// or, for s ≥ 3, the lens-centroid closure of §18.12 — equal to revised_enskog_functionals to rounding
-/// (the λ integral of (18.17) by the same 24-node Gauss–Legendre rule).
+/// (the λ integral of (18.17) by Gauss–Legendre rules of 6 to 24 points chosen by φ, the library's 24 at most).
 DenseCellClosures dense_cell_closures(const DenseCellGeometry& g);
 
 }  // namespace gkt::detail
