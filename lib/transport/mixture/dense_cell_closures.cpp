@@ -3,6 +3,7 @@
 // rearranged so that each node of the λ integral (18.17) costs O(s²) instead of O(s⁴).
 #include "transport/mixture/dense_cell_closures.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -127,38 +128,39 @@ DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) {
   // ∂_ℓχ_jk = v_d(F_φ σ_ℓ^d + a F_u σ_ℓ^{d−1}) the Hessian at λn is 2σ_iℓ^d χ_iℓ + 2v_d(T_iφ σ_ℓ^d + T_iu σ_ℓ^{d−1} +
   // (i ↔ ℓ))
   // + v_d² (A_φφ σ_i^dσ_ℓ^d + A_φu(σ_i^dσ_ℓ^{d−1} + σ_ℓ^dσ_i^{d−1}) + A_uu σ_i^{d−1}σ_ℓ^{d−1}).
-  std::array<double, 16> hessian{};
+  // The node-dependent pieces enter H linearly: integrate them over λ first, assemble H once.
+  std::array<double, kMax> t_phi{}, t_u{};
+  std::array<double, 16> f{};
+  double a_pp = 0, a_pu = 0, a_uu = 0;
   const Rule& r = rule(phi);
   for (std::size_t q = 0; q < static_cast<std::size_t>(r.size); ++q) {
-    const double lambda = r.node[q], w = r.weight[q] * b2, ig = 1 / (1 - lambda * phi);
-    std::array<double, kMax> t_phi{}, t_u{};
-    double a_pp = 0, a_pu = 0, a_uu = 0;
-    std::array<double, 16> f{};
+    const double lambda = r.node[q], w = r.weight[q] * b2, ig = 1 / (1 - lambda * phi), wl = w * lambda;
     for (int j = 0; j < s; ++j)
       for (int k = j; k < s; ++k) {
         const int P = j * kMax + k;
         const Contact c = contact(d, ig, width[P] * lambda * y);
-        f[P] = f[k * kMax + j] = c.f;
-        const double nj = lambda * n[j], nk = lambda * n[k], m = j == k ? 1.0 : 2.0;
-        a_pp += m * weight[P] * nj * nk * c.f_phiphi;
-        a_pu += m * weight[P] * nj * nk * c.f_phiu * width[P];
-        a_uu += m * weight[P] * nj * nk * c.f_uu * width[P] * width[P];
-        t_phi[j] += weight[P] * nk * c.f_phi;
-        t_u[j] += weight[P] * nk * c.f_u * width[P];
+        f[P] += w * c.f;
+        const double pair = (j == k ? 1.0 : 2.0) * weight[P] * n[j] * n[k] * wl * lambda;  // w λ² n_j n_k
+        a_pp += pair * c.f_phiphi;
+        a_pu += pair * c.f_phiu * width[P];
+        a_uu += pair * c.f_uu * width[P] * width[P];
+        t_phi[j] += wl * weight[P] * n[k] * c.f_phi;
+        t_u[j] += wl * weight[P] * n[k] * c.f_u * width[P];
         if (k != j) {
-          t_phi[k] += weight[P] * nj * c.f_phi;
-          t_u[k] += weight[P] * nj * c.f_u * width[P];
+          t_phi[k] += wl * weight[P] * n[j] * c.f_phi;
+          t_u[k] += wl * weight[P] * n[j] * c.f_u * width[P];
         }
       }
-    for (int i = 0; i < s; ++i)
-      for (int l = 0; l < s; ++l)
-        hessian[i * kMax + l] +=
-            w * (2 * weight[i * kMax + l] * f[i * kMax + l] +
-                 2 * vd * (t_phi[i] * volume[l] + t_u[i] * surface[l] + t_phi[l] * volume[i] + t_u[l] * surface[i]) +
-                 vd * vd *
-                     (a_pp * volume[i] * volume[l] + a_pu * (volume[i] * surface[l] + volume[l] * surface[i]) +
-                      a_uu * surface[i] * surface[l]));
   }
+  std::array<double, 16> hessian{};
+  for (int i = 0; i < s; ++i)
+    for (int l = 0; l < s; ++l)
+      hessian[i * kMax + l] =
+          2 * weight[i * kMax + l] * f[std::min(i, l) * kMax + std::max(i, l)] +
+          2 * vd * (t_phi[i] * volume[l] + t_u[i] * surface[l] + t_phi[l] * volume[i] + t_u[l] * surface[i]) +
+          vd * vd *
+              (a_pp * volume[i] * volume[l] + a_pu * (volume[i] * surface[l] + volume[l] * surface[i]) +
+               a_uu * surface[i] * surface[l]);
   // b_ℓi = H_iℓ/(2B_2) − Σ_k σ_ik^d [χ_ik δ_kℓ + ½ n_k ∂_ℓχ_ik] (18.19)
   auto dchi = [&](int P, int l) { return vd * (at[P].f_phi * volume[l] + at[P].f_u * width[P] * surface[l]); };
   std::array<double, 16> remainder{};  // at i·4 + ℓ
