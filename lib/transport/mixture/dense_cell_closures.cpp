@@ -20,16 +20,18 @@ constexpr int kMax = 4;
 struct Contact {
   double f, f_phi, f_u, f_phiphi, f_phiu, f_uu;
 };
-Contact contact(int d, double inverse_gap, double u) {
+template <int D>
+[[gnu::always_inline]] inline Contact contact(double inverse_gap, double u) {
   const double g1 = inverse_gap, g2 = g1 * g1, g3 = g2 * g1, g4 = g3 * g1, g5 = g4 * g1;
-  if (d == 3)
+  if constexpr (D == 3)
     return {g1 + 1.5 * u * g2 + 0.5 * u * u * g3,
             g2 + 3 * u * g3 + 1.5 * u * u * g4,
             1.5 * g2 + u * g3,
             2 * g3 + 9 * u * g4 + 6 * u * u * g5,
             3 * g3 + 3 * u * g4,
             g3};
-  return {g1 + 0.5625 * u * g2, g2 + 1.125 * u * g3, 0.5625 * g2, 2 * g3 + 3.375 * u * g4, 1.125 * g3, 0};
+  else
+    return {g1 + 0.5625 * u * g2, g2 + 1.125 * u * g3, 0.5625 * g2, 2 * g3 + 3.375 * u * g4, 1.125 * g3, 0};
 }
 
 /// Gauss–Legendre nodes and weights on [0, 1] (Golub–Welsch), for 6, 8, 12, 16 and 24 points.
@@ -82,10 +84,11 @@ double lens_centroid_offset(int d, double sigma_i, double sigma_j, double sigma_
   return (va * ca + vb * (distance - cb)) / (va + vb) - 0.5 * distance;
 }
 
-}  // namespace
-
-DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) {
-  const int d = g.d, s = g.s;
+/// dense_cell_closures in dimension D (the contact polynomials then inline without a branch).
+template <int D>
+DenseCellClosures closures(const DenseCellGeometry& g) {
+  constexpr int d = D;
+  const int s = g.s;
   // v_d and B_2 of (18.2) per dimension, computed once (pow and tgamma would dominate a call).
   static const std::array<double, 2> volume_factor{std::numbers::pi / 4, std::numbers::pi / 6},
       virial{std::numbers::pi / 2, 2 * std::numbers::pi / 3};
@@ -114,12 +117,11 @@ DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) {
       const double sij = 0.5 * (g.sigma[i] + g.sigma[j]);
       width[P] = g.sigma[i] * g.sigma[j] / sij;
       weight[P] = d == 3 ? sij * sij * sij : sij * sij;
-      at[P] = contact(d, inverse_gap, width[P] * y);
+      at[P] = contact<D>(inverse_gap, width[P] * y);
       out.chi[P] = at[P].f;
       // n ∂χ/∂n_ℓ = n v_d (F_φ σ_ℓ^d + a F_u σ_ℓ^{d−1}) (18.1)
-      for (int l = 0; l < s; ++l)
-        out.log_chi_derivative[P * kMax + l] =
-            density * vd * (at[P].f_phi * volume[l] + at[P].f_u * width[P] * surface[l]) / at[P].f;
+      const double scale = density * vd / at[P].f, a = scale * at[P].f_phi, b = scale * at[P].f_u * width[P];
+      for (int l = 0; l < s; ++l) out.log_chi_derivative[P * kMax + l] = a * volume[l] + b * surface[l];
     }
   for (int k = 1; k < s; ++k) out.unequal = out.unequal || g.sigma[k] != g.sigma[0];
   if (!out.unequal) return out;
@@ -138,7 +140,7 @@ DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) {
     for (int j = 0; j < s; ++j)
       for (int k = j; k < s; ++k) {
         const int P = j * kMax + k;
-        const Contact c = contact(d, ig, width[P] * lambda * y);
+        const Contact c = contact<D>(ig, width[P] * lambda * y);
         f[P] += w * c.f;
         const double pair = (j == k ? 1.0 : 2.0) * weight[P] * n[j] * n[k] * wl * lambda;  // w λ² n_j n_k
         a_pp += pair * c.f_phiphi;
@@ -235,5 +237,9 @@ DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) {
   }
   return out;
 }
+
+}  // namespace
+
+DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) { return g.d == 3 ? closures<3>(g) : closures<2>(g); }
 
 }  // namespace gkt::detail
