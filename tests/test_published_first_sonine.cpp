@@ -103,6 +103,32 @@ TEST(PublishedFirstSonine, DiffersFromTheCompleteOrderOneOnlyForUnequalSpecies) 
       std::invalid_argument);
 }
 
+// Dilute ternaries whose mass-flux elimination pivots in the second column: the closed form's LU
+// once replayed its row swaps wrongly there (these two states were 38–50 % off in D_ij and λ*; about a
+// fifth of random dilute ternaries with m, σ spread over e^{±2}, e^{±1} were affected). Equal to the
+// engine's published truncation to 1e-12 now.
+TEST(PublishedFirstSonine, DiluteTernariesThatPivotEqualTheEngine) {
+  struct State {
+    int d;
+    double m[3], sigma[3], x[3], alpha[6];  // α_11, α_12, α_13, α_22, α_23, α_33
+  };
+  const State states[] = {
+      {3, {0.97, 4.2, 3.66}, {0.48, 0.57, 2.7}, {0.36, 0.35, 0.29}, {0.99, 0.41, 0.63, 0.8, 0.54, 0.79}},
+      {2, {0.24, 3.44, 0.74}, {0.71, 0.82, 0.84}, {0.72, 0.01, 0.27}, {0.85, 0.8, 0.32, 0.52, 0.69, 0.82}}};
+  const int pair[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+  for (const State& c : states) {
+    gkt::Mixture m = gkt::make_mixture(
+        c.d, {{c.m[0], c.sigma[0], c.x[0], "1"}, {c.m[1], c.sigma[1], c.x[1], "2"}, {c.m[2], c.sigma[2], c.x[2], "3"}},
+        1.0);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m.alpha[static_cast<std::size_t>(i * 3 + j)] = c.alpha[pair[i][j]];
+    const gkt::MixtureNavierStokes engine(m, 1);
+    expect_equal(gkt::published_first_sonine(gkt::mixture_cell(m)),
+                 engine.coefficients(1, gkt::MixtureTruncation::published), engine.cooling_state(), 3, 1e-12,
+                 "pivoting ternary d=" + std::to_string(c.d));
+  }
+}
+
 // (b) α = 1, dilute: the mass flux is Chapman & Cowling's first approximation [D12]_1 (their
 // (9.81,1) generalised to d), the thermal diffusion at fixed pressure D^T_i − D^p_i vanishes (their
 // [D_T]_1 = 0), and η is Hirschfelder, Curtiss & Bird's first approximation for a binary of rigid
