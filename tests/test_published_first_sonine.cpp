@@ -13,9 +13,11 @@
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 #include "gkt/transport/mixture/published_first_sonine.hpp"
+#include "gkt/transport/mixture/revised_enskog_functionals.hpp"
 #include "gkt/transport/mixture/tracer_diffusion.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
 #include "mixture_test_helpers.hpp"
+#include "transport/mixture/dense_cell_closures.hpp"
 
 using gkt::Rational;
 using gkt::test::relative;
@@ -99,6 +101,32 @@ TEST(PublishedFirstSonine, DiffersFromTheCompleteOrderOneOnlyForUnequalSpecies) 
   EXPECT_THROW(
       (void)gkt::MixtureNavierStokes(binary(3, 2, 1, 0.5, 0.8), 2).coefficients(2, gkt::MixtureTruncation::published),
       std::invalid_argument);
+}
+
+// Dilute ternaries whose mass-flux elimination pivots in the second column: the closed form's LU
+// once replayed its row swaps wrongly there (these two states were 38–50 % off in D_ij and λ*; about a
+// fifth of random dilute ternaries with m, σ spread over e^{±2}, e^{±1} were affected). Equal to the
+// engine's published truncation to 1e-12 now.
+TEST(PublishedFirstSonine, DiluteTernariesThatPivotEqualTheEngine) {
+  struct State {
+    int d;
+    double m[3], sigma[3], x[3], alpha[6];  // α_11, α_12, α_13, α_22, α_23, α_33
+  };
+  const State states[] = {
+      {3, {0.97, 4.2, 3.66}, {0.48, 0.57, 2.7}, {0.36, 0.35, 0.29}, {0.99, 0.41, 0.63, 0.8, 0.54, 0.79}},
+      {2, {0.24, 3.44, 0.74}, {0.71, 0.82, 0.84}, {0.72, 0.01, 0.27}, {0.85, 0.8, 0.32, 0.52, 0.69, 0.82}}};
+  const int pair[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+  for (const State& c : states) {
+    gkt::Mixture m = gkt::make_mixture(
+        c.d, {{c.m[0], c.sigma[0], c.x[0], "1"}, {c.m[1], c.sigma[1], c.x[1], "2"}, {c.m[2], c.sigma[2], c.x[2], "3"}},
+        1.0);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m.alpha[static_cast<std::size_t>(i * 3 + j)] = c.alpha[pair[i][j]];
+    const gkt::MixtureNavierStokes engine(m, 1);
+    expect_equal(gkt::published_first_sonine(gkt::mixture_cell(m)),
+                 engine.coefficients(1, gkt::MixtureTruncation::published), engine.cooling_state(), 3, 1e-12,
+                 "pivoting ternary d=" + std::to_string(c.d));
+  }
 }
 
 // (b) α = 1, dilute: the mass flux is Chapman & Cowling's first approximation [D12]_1 (their
@@ -195,7 +223,11 @@ TEST(PublishedFirstSonine, RefusesBadInput) {
   cell = gkt::mixture_cell(binary(3, 2, 1, 0.5, 0.8));
   cell.restitution[1] = 0.5;  // α_01 ≠ α_10
   EXPECT_THROW((void)gkt::published_first_sonine(cell), std::invalid_argument);
-  EXPECT_THROW((void)gkt::mixture_cell(binary(3, 2, 1, 0.5, 0.8, 0.2)), std::invalid_argument);
+  cell = gkt::mixture_cell(binary(3, 2, 1, 0.5, 0.8, 0.2));  // dense states are taken …
+  cell.packing_fraction = 0.6;                               // … below φ_max only
+  EXPECT_THROW((void)gkt::published_first_sonine(cell), std::invalid_argument);
+  cell.packing_fraction = -0.1;
+  EXPECT_THROW((void)gkt::published_first_sonine(cell), std::invalid_argument);
 }
 
 // The dense published truncation drops ϖ_i (GDH): κ is GDH's closed form κ^c =
@@ -292,4 +324,103 @@ TEST(PublishedFirstSonine, MixtureModelSchemeKey) {
   };
   EXPECT_EQ(message({2, std::nullopt}).rfind("order: scheme = \"published\" exists at order = 1 only", 0), 0U);
   EXPECT_EQ(message({1, Rational(1, 1000)}).rfind("tolerance: ", 0), 0U);
+}
+
+// (d) Dense (theory.md §17.10 "Dense closed form"): the closed form with the collisional-transfer
+// averages (18.23)–(18.24), derived by computer algebra, equals the engine's published truncation at
+// φ > 0 (exact engine moments, Eigen solves) for binaries with unequal masses and sizes and the ternary
+// with a restitution matrix (I_ℓij by the lens-centroid closure) and a quaternary, d = 2, 3, φ from 0.02
+// to 0.45 — every coefficient, p*, P_j, κ and ζ_U, to 1e-12 (observed ≤ 7e-15). The ternaries and
+// quaternaries pivot in the second column of the mass-flux solve at some of these φ, which the closed
+// form's LU once got wrong (it swapped the earlier multipliers and replayed the swaps one by one).
+TEST(PublishedFirstSonine, DenseClosedFormEqualsEngine) {
+  for (int d : {2, 3})
+    for (double phi : {0.02, 0.2, 0.45}) {
+      std::vector<std::pair<std::string, gkt::Mixture>> cases;
+      cases.emplace_back("binary", binary(d, 3.0, 1.7, 0.3, 0.7, phi));
+      cases.emplace_back("light", binary(d, 0.2, 0.6, 0.6, 0.9, phi));
+      cases.emplace_back("equal sizes", binary(d, 5.0, 1.0, 0.5, 0.5, phi));
+      cases.emplace_back("ternary", ternary(d, phi));
+      gkt::Mixture four = gkt::make_mixture(
+          d, {{1.0, 1.0, 0.4, "1"}, {2.0, 1.4, 0.3, "2"}, {0.5, 0.7, 0.2, "3"}, {3.0, 1.2, 0.1, "4"}}, 0.8, phi);
+      if (phi == 0.45) cases.emplace_back("quaternary", four);  // the engine's s = 4 solve is the slow part
+      for (const auto& [name, m] : cases) {
+        const gkt::MixtureNavierStokes engine(m, 1);
+        const auto e = engine.coefficients(1, gkt::MixtureTruncation::published);
+        const auto c = gkt::published_first_sonine(gkt::mixture_cell(m));
+        const std::string what = name + " d=" + std::to_string(d) + " phi=" + std::to_string(phi);
+        expect_equal(c, e, engine.cooling_state(), m.size(), 1e-12, what);
+        EXPECT_LT(relative(c.bulk_viscosity, e.bulk_viscosity), 1e-12) << what;
+        EXPECT_LT(relative(c.cooling_rate_first_order, e.cooling_rate_first_order), 1e-12) << what;
+        EXPECT_LT(relative(c.pressure, e.pressure), 1e-12) << what;
+        for (std::size_t j = 0; j < m.size(); ++j) {
+          EXPECT_LT(relative(c.pressure_derivative[j], e.pressure_derivative[j]), 1e-12) << what;
+          EXPECT_LT(relative(c.dufour[j], e.dufour[j]), 1e-12) << what << " D''_" << j;
+        }
+        EXPECT_GT(c.bulk_viscosity, 0) << what;
+      }
+    }
+}
+
+// At φ → 0 the dense closed form is the dilute one: φ = 0 gives the dilute gas's numbers with κ = ζ_U = 0,
+// p* = P_j = 1, and φ = 1e-9 differs from them by O(φ) (checked at 1e-7).
+TEST(PublishedFirstSonine, DenseReducesToDiluteAtZeroPackingFraction) {
+  for (int d : {2, 3}) {
+    const auto dilute = gkt::published_first_sonine(gkt::mixture_cell(ternary(d)));
+    const auto near = gkt::published_first_sonine(gkt::mixture_cell(ternary(d, 1e-9)));
+    EXPECT_EQ(dilute.bulk_viscosity, 0.0);
+    EXPECT_EQ(dilute.pressure, 1.0);
+    EXPECT_EQ(dilute.pressure_derivative[2], 1.0);
+    EXPECT_LT(relative(near.thermal_conductivity, dilute.thermal_conductivity), 1e-7);
+    EXPECT_LT(relative(near.shear_viscosity, dilute.shear_viscosity), 1e-7);
+    EXPECT_LT(std::abs(near.bulk_viscosity) + std::abs(near.cooling_rate_first_order), 1e-7);
+    for (std::size_t k = 0; k < 16; ++k) {
+      EXPECT_LT(relative(near.mutual_diffusion[k], dilute.mutual_diffusion[k]), 1e-7) << k;
+      EXPECT_LT(relative(near.heat_mobility_species[k], dilute.heat_mobility_species[k]), 1e-7) << k;
+    }
+    for (std::size_t k = 0; k < 4; ++k) {
+      EXPECT_LT(relative(near.dufour[k], dilute.dufour[k]), 1e-7) << k;
+      EXPECT_LT(relative(near.pressure_derivative[k], dilute.pressure_derivative[k]), 1e-7) << k;
+    }
+  }
+}
+
+// The fixed-size closures (dense_cell_closures.hpp) equal the library's χ_ij, n ∂χ_ij/∂n_ℓ and I_ℓij
+// (Mixture::contact_values, contact_value_derivatives, revised_enskog_functionals) — binary (18.20) and
+// ternary/quaternary (lens-centroid closure), d = 2, 3.
+TEST(PublishedFirstSonine, DenseCellClosuresEqualTheLibrary) {
+  for (int d : {2, 3})
+    for (double phi : {0.1, 0.4}) {
+      std::vector<gkt::Mixture> cases{
+          binary(d, 3.0, 1.7, 0.3, 0.7, phi), ternary(d, phi),
+          gkt::make_mixture(d, {{1.0, 1.0, 0.4, "1"}, {2.0, 1.4, 0.3, "2"}, {0.5, 0.7, 0.2, "3"}, {3.0, 2.2, 0.1, "4"}},
+                            0.8, phi)};
+      for (const gkt::Mixture& m : cases) {
+        const std::size_t s = m.size();
+        gkt::detail::DenseCellGeometry g;
+        g.d = d;
+        g.s = static_cast<int>(s);
+        g.packing_fraction = phi;
+        for (std::size_t i = 0; i < s; ++i) {
+          g.sigma[i] = m.species[i].diameter / m.mean_diameter();
+          g.fraction[i] = m.species[i].fraction;
+        }
+        const auto c = gkt::detail::dense_cell_closures(g);
+        const auto chi = m.contact_values(), dchi = m.contact_value_derivatives();
+        const auto functionals = gkt::revised_enskog_functionals(m);
+        double largest = 0;
+        for (std::size_t i = 0; i < s; ++i)
+          for (std::size_t j = 0; j < s; ++j) {
+            EXPECT_LT(relative(c.chi[i * 4 + j], chi[i * s + j]), 1e-14);
+            for (std::size_t l = 0; l < s; ++l) {
+              EXPECT_LT(relative(c.log_chi_derivative[(i * 4 + j) * 4 + l] * chi[i * s + j], dchi[(i * s + j) * s + l]),
+                        1e-13);
+              const double f = functionals[(i * s + j) * s + l];
+              EXPECT_LT(relative(c.functionals[(i * 4 + j) * 4 + l], f), 1e-12) << d << " " << s << " " << i << j << l;
+              largest = std::max(largest, std::abs(f));
+            }
+          }
+        EXPECT_GT(largest, 1e-3);  // the comparison is not between zeros
+      }
+    }
 }

@@ -142,6 +142,69 @@ TEST(TernaryTransportTable, RefusesAPole) {
   }
 }
 
+// Dense (theory.md §18.10, "Dense ternary table"): φ is a third Chebyshev axis. At random interior
+// states (x_1, x_2, φ) — off every node — the table equals direct dense ternary solves within its
+// tolerance for every reduced value including p*, κ/η0 and ζ_U; evaluate(x_1, x_2, n, T) carries φ from n
+// and returns nan above φ_max, evaluate_reduced refuses φ outside [0, φ_max]. Species close to each other
+// (m = 1, 1.2, 1.4, σ = 1, 1.1, 0.95) and a loose tolerance keep the build to 134 dense solves (4 pieces of
+// 3 × 3 × 3 nodes, about 5 s CPU): each dense ternary solve costs ~40 ms.
+TEST(TernaryTransportTable, DenseEqualsDirectSolves) {
+  const double phi_max = 0.2, tolerance = 5e-2, mass[3] = {1.0, 1.2, 1.4}, diameter[3] = {1.0, 1.1, 0.95};
+  auto ternary = [&](double x1, double x2) {
+    gkt::Mixture m = gkt::make_mixture(
+        3, {{mass[0], diameter[0], x1, "1"}, {mass[1], diameter[1], x2, "2"}, {mass[2], diameter[2], 1 - x1 - x2, "3"}},
+        1.0);
+    m.alpha = {0.9, 0.85, 0.8, 0.85, 0.8, 0.8, 0.8, 0.8, 0.85};
+    return m;
+  };
+  const gkt::TernaryTransportTable t(ternary(0.3, 0.3), 1, 3, tolerance, 3, phi_max, 3);
+  EXPECT_LE(t.interpolation_error(), tolerance);
+  EXPECT_GE(t.packing_nodes(), 3);
+  EXPECT_EQ(t.max_packing_fraction(), phi_max);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  double worst = 0;
+  for (int k = 0; k < 6; ++k) {
+    double x1 = uniform(random), x2 = uniform(random);
+    if (x1 + x2 > 1) x1 = 1 - x1, x2 = 1 - x2;
+    const double phi = phi_max * uniform(random);
+    gkt::Mixture m = ternary(x1, x2);
+    m.packing_fraction = phi;
+    const gkt::MixtureNavierStokes ns(m, 1);
+    const auto v = ns.coefficients(1);
+    std::vector<double> exact{ns.cooling_state().cooling_rate, v.shear_viscosity, v.thermal_conductivity};
+    exact.insert(exact.end(), ns.cooling_state().temperature_ratio.begin(), ns.cooling_state().temperature_ratio.end());
+    exact.insert(exact.end(), v.mutual_diffusion.begin(), v.mutual_diffusion.end());
+    exact.insert(exact.end(), v.thermal_diffusion.begin(), v.thermal_diffusion.end());
+    exact.insert(exact.end(), v.pressure_diffusion.begin(), v.pressure_diffusion.end());
+    exact.insert(exact.end(), v.dufour.begin(), v.dufour.end());
+    exact.insert(exact.end(), {v.pressure, v.bulk_viscosity, v.cooling_rate_first_order});
+    const auto reduced = t.evaluate_reduced(x1, x2, phi);
+    std::vector<double> interpolated = flat(reduced);
+    interpolated.insert(interpolated.end(),
+                        {reduced.pressure, reduced.bulk_viscosity, reduced.cooling_rate_first_order});
+    ASSERT_EQ(exact.size(), interpolated.size());
+    for (std::size_t c = 0; c < exact.size(); ++c)
+      worst = std::max(worst, std::abs(interpolated[c] - exact[c]) / std::max(1.0, std::abs(exact[c])));
+    // Physical: n from φ = n v_d Σ x_i σ_i^d.
+    const double x3 = 1 - x1 - x2, temperature = 0.8;
+    double volume = 0;
+    for (int i = 0; i < 3; ++i) volume += (i == 0 ? x1 : i == 1 ? x2 : x3) * std::pow(diameter[i], 3);
+    const double n = phi / (gkt::unit_sphere_volume(3) * volume);
+    const double mbar = x1 * mass[0] + x2 * mass[1] + x3 * mass[2];
+    const double sbar = x1 * diameter[0] + x2 * diameter[1] + x3 * diameter[2];
+    const gkt::ReferenceGas ref = gkt::reference_gas(3, mbar, sbar, n, temperature);
+    const auto physical = t.evaluate(x1, x2, n, temperature);
+    EXPECT_NEAR(physical.pressure, reduced.pressure * n * temperature, 1e-9 * n * temperature);
+    EXPECT_NEAR(physical.bulk_viscosity, reduced.bulk_viscosity * ref.viscosity, 1e-9 * ref.viscosity);
+    EXPECT_TRUE(std::isnan(t.evaluate(x1, x2, 1.2 * phi_max / phi * n, temperature).shear_viscosity));
+  }
+  EXPECT_LE(worst, tolerance);
+  EXPECT_GT(worst, 0);
+  EXPECT_THROW((void)t.evaluate_reduced(0.3, 0.3, 0.31), std::invalid_argument);
+  EXPECT_THROW((void)t.evaluate_reduced(0.3, 0.3, -0.01), std::invalid_argument);
+}
+
 TEST(TernaryTransportTable, RefusesBadInput) {
   const gkt::Mixture m = ternary(0.3, 0.3);
   EXPECT_THROW(gkt::TernaryTransportTable(m, 1, 2), std::invalid_argument);
@@ -149,13 +212,16 @@ TEST(TernaryTransportTable, RefusesBadInput) {
   EXPECT_THROW(gkt::TernaryTransportTable(m, 1, 9, 1e-3, 8), std::invalid_argument);
   EXPECT_THROW(gkt::TernaryTransportTable(m, 0, 9), std::invalid_argument);
   EXPECT_THROW(gkt::TernaryTransportTable(m, 1, 9, 0.0), std::invalid_argument);
+  EXPECT_THROW(gkt::TernaryTransportTable(m, 1, 5, 1e-2, 5, 0.6), std::invalid_argument);     // φ_max ≥ φ limit
+  EXPECT_THROW(gkt::TernaryTransportTable(m, 1, 5, 1e-2, 5, -0.1), std::invalid_argument);    // φ_max < 0
+  EXPECT_THROW(gkt::TernaryTransportTable(m, 1, 5, 1e-2, 5, 0.2, 2), std::invalid_argument);  // packing_nodes
   gkt::Mixture dense = m;
   dense.packing_fraction = 0.1;
   try {
     const gkt::TernaryTransportTable t(dense, 1, 5);
     ADD_FAILURE() << "a dense ternary accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "packing_fraction: the ternary table is dilute (0), got 0.1");
+    EXPECT_STREQ(e.what(), "packing_fraction: a dilute ternary table (max_packing_fraction = 0) needs 0, got 0.1");
   }
   const gkt::TernaryTransportTable t(m, 1, 3, 1.0);  // any table: the checks come before interpolation
   try {

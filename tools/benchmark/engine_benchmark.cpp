@@ -179,14 +179,16 @@ void MixtureNavierStokesSet(benchmark::State& state) {
 }
 BENCHMARK(MixtureNavierStokesSet)->ArgsProduct({{1, 2, 4, 8}, {0, 1}})->Unit(benchmark::kMillisecond);
 
-/// GDH's published first Sonine in closed form (theory.md §17.10), one dilute state per call with
-/// its HCS solved: arg 0 = species (2: the benchmark binary; 3: a ternary with a restitution matrix),
-/// arg 1 = 1 varies x_1 and α from call to call (a new state each time), 0 repeats one state.
+/// GDH's published first Sonine in closed form (theory.md §17.10), one state per call with its HCS
+/// solved: arg 0 = species (2: the benchmark binary; 3: a ternary with a restitution matrix),
+/// arg 1 = 1 varies x_1 and α from call to call (a new state each time), 0 repeats one state; arg 2 = 1
+/// the dense gas at φ = 0.25 (χ_ij, their derivatives, I_ℓij and the collisional transfer), 0 dilute.
 void PublishedFirstSonineState(benchmark::State& state) {
   const int s = static_cast<int>(state.range(0));
   gkt::MixtureCell cell;
   cell.dimension = 3;
   cell.species = s;
+  cell.packing_fraction = state.range(2) == 1 ? 0.25 : 0.0;
   cell.mass = {1.0, 2.5, 0.4, 0};
   cell.diameter = {1.0, 1.5, 0.8, 0};
   cell.fraction = s == 2 ? std::array<double, 4>{0.4, 0.6, 0, 0} : std::array<double, 4>{0.4, 0.35, 0.25, 0};
@@ -204,7 +206,53 @@ void PublishedFirstSonineState(benchmark::State& state) {
     benchmark::DoNotOptimize(gkt::published_first_sonine(cell));
   }
 }
-BENCHMARK(PublishedFirstSonineState)->ArgsProduct({{2, 3}, {0, 1}})->Unit(benchmark::kNanosecond);
+BENCHMARK(PublishedFirstSonineState)->ArgsProduct({{2, 3}, {0, 1}, {0, 1}})->Unit(benchmark::kNanosecond);
+
+/// The engine's published truncation for the states of PublishedFirstSonineState (arg 0 = species,
+/// arg 1 = 1 dense at φ = 0.25): the cold call (HCS, operator and transfer averages at order 1, then
+/// coefficients(1, published)), the cost the closed form replaces.
+void MixtureNavierStokesPublished(benchmark::State& state) {
+  const int s = static_cast<int>(state.range(0));
+  const double phi = state.range(1) == 1 ? 0.25 : 0.0;
+  std::vector<gkt::Species> species{{1.0, 1.0, 0.4, ""}, {2.5, 1.5, 0.6, ""}};
+  if (s == 3) {
+    species[1].fraction = 0.35;
+    species.push_back({0.4, 0.8, 0.25, ""});
+  }
+  gkt::Mixture mixture = gkt::make_mixture(3, species, 0.7, phi);
+  for (int i = 0; i < s; ++i) mixture.alpha[static_cast<std::size_t>(i * s + i)] = 0.8;
+  for (auto _ : state) {
+    const gkt::MixtureNavierStokes ns(mixture, 1);
+    benchmark::DoNotOptimize(ns.coefficients(1, gkt::MixtureTruncation::published));
+  }
+}
+BENCHMARK(MixtureNavierStokesPublished)->ArgsProduct({{2, 3}, {0, 1}})->Unit(benchmark::kMillisecond);
+
+/// The dense ternary table (theory.md §18.10, "Dense ternary table"): the species of its test (m = 1,
+/// 1.2, 1.4, σ = 1, 1.1, 0.95, a restitution matrix), order 1, φ ∈ [0, 0.2], 3 × 3 × 3 nodes, tolerance
+/// 5e-2 (4 pieces); each call evaluates the physical set at a new (x_1, x_2, n, T) with φ from n.
+void TernaryTransportTableEvaluateDense(benchmark::State& state) {
+  static const auto built = [] {
+    auto mixture = gkt::make_mixture(3, {{1.0, 1.0, 0.3, ""}, {1.2, 1.1, 0.3, ""}, {1.4, 0.95, 0.4, ""}}, 0.8);
+    mixture.alpha = {0.9, 0.85, 0.8, 0.85, 0.8, 0.8, 0.8, 0.8, 0.85};
+    const auto start = std::chrono::steady_clock::now();
+    gkt::TernaryTransportTable table(mixture, 1, 3, 5e-2, 3, 0.2, 3);
+    return std::make_pair(std::move(table),
+                          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }();
+  const auto& [table, build] = built;
+  double x = 0.1, y = 0.05;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(table.evaluate(x, y, 0.05 + 0.3 * x, 2.0 - y));  // φ ≈ 0.03 … 0.13
+    x = x < 0.6 ? x + 1.3e-3 : 0.1;
+    y = y < 0.35 ? y + 0.7e-3 : 0.05;
+  }
+  state.counters["build_s"] = build;
+  state.counters["solves"] = table.build_solves();
+  state.counters["pieces"] = table.pieces();
+  state.counters["interpolation_error"] = table.interpolation_error();
+}
+BENCHMARK(TernaryTransportTableEvaluateDense)->Unit(benchmark::kNanosecond);
 
 /// The per-state binary table (theory.md §17.8): arg 0 = Sonine order of the table; the timed loop
 /// evaluates the full physical set at a new (x_1, n, T) each call (the build is outside the loop;

@@ -1,13 +1,17 @@
-// GDH's published first Sonine approximation of a dilute mixture in closed form (docs/theory.md
-// §17.10). Units of theory.md (16.11): n = m̄ = σ̄ = 1, velocities in √(2T/m̄) (T = 1/2), θ_k = m_k/γ_k.
+// GDH's published first Sonine approximation of a dilute or dense (Enskog) mixture in closed form
+// (docs/theory.md §17.10). Units of theory.md (16.11): n = m̄ = σ̄ = 1, velocities in √(2T/m̄) (T = 1/2),
+// θ_k = m_k/γ_k; dense, lengths along a gradient in mean free paths (theory.md (18.3)).
 #include "gkt/transport/mixture/published_first_sonine.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
+#include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
+#include "transport/mixture/dense_cell_closures.hpp"
 
 namespace gkt {
 
@@ -53,8 +57,11 @@ class Lu {
       for (int r = c + 1; r < S; ++r)
         if (std::abs(lu_[r * kMax + c]) > std::abs(lu_[pivot * kMax + c])) pivot = r;
       pivot_[c] = pivot;
+      // Columns ≥ c only: the multipliers of earlier columns stay with the rows they were computed
+      // for, so solve() can replay swap and elimination column by column (swapping them too would
+      // need every swap applied to b first).
       if (pivot != c)
-        for (int k = 0; k < S; ++k) std::swap(lu_[c * kMax + k], lu_[pivot * kMax + k]);
+        for (int k = c; k < S; ++k) std::swap(lu_[c * kMax + k], lu_[pivot * kMax + k]);
       for (int r = c + 1; r < S; ++r) {
         const double f = lu_[r * kMax + c] /= lu_[c * kMax + c];
         for (int k = c + 1; k < S; ++k) lu_[r * kMax + k] -= f * lu_[c * kMax + k];
@@ -85,10 +92,14 @@ class Lu {
 struct Reduced {
   int d = 3, s = 2, major = 0;  // major: the first most abundant species (its S_0 row carries momentum, (17.7))
   Vec m{}, x{}, gamma{}, theta{}, root_theta{}, inverse_m{};
-  Mat area{}, alpha{}, mu_a{};  // (σ_ij/σ̄)^{d−1}, α_ij and μ_ji(1 + α_ij)
+  Mat area{}, alpha{}, mu_a{};  // (σ_ij/σ̄)^{d−1} χ_ij (χ = 1 dilute), α_ij and μ_ji(1 + α_ij)
   Mat jacobian{};               // ∂ζ_i/∂γ_k at the HCS
   double c_d = 0, zeta = 0;
   ReferenceGas ref{};
+  // Dense gas (theory.md §18): σ_ij/σ̄, the transfer length L_ij = nσ̄^d σ_ij/σ̄ (18.3), χ_ij and the closures.
+  bool dense = false;
+  Mat sigma{}, length{};
+  detail::DenseCellClosures closures{};
 };
 
 /// Pair energy change (16.3) E_il = −2μ_li(1+α)[1 − ½μ_li(1+α)(1 + θ_i/θ_l)] with w_il = √(1/θ_i + 1/θ_l)
@@ -213,11 +224,20 @@ Sensitivity cooling_sensitivity(const Reduced& r) {
     for (int k = 0; k < S; ++k) m[i * kMax + k] = i < last ? jac[i * kMax + k] - jac[last * kMax + k] : r.x[k];
   Sensitivity out;
   const double f = -2 * r.c_d / r.d;
+  Mat rate{};  // w_il E_il
+  for (int i = 0; i < S; ++i)
+    for (int l = 0; l < S; ++l) {
+      const PairCooling p = pair_cooling(r, r.gamma, i, l);
+      rate[i * kMax + l] = p.w * p.e;
+    }
   for (int j = 0; j < S; ++j) {
     Vec explicit_part{}, rhs{};  // ∂ζ_i/∂n_j at fixed γ
     for (int i = 0; i < S; ++i) {
-      const PairCooling p = pair_cooling(r, r.gamma, i, j);
-      explicit_part[i] = f * r.area[i * kMax + j] * p.w * p.e;
+      explicit_part[i] = f * r.area[i * kMax + j] * rate[i * kMax + j];
+      if (r.dense)  // χ_il moves with n_j (18.1)
+        for (int l = 0; l < S; ++l)
+          explicit_part[i] += f * r.x[l] * r.area[i * kMax + l] *
+                              r.closures.log_chi_derivative[(i * kMax + l) * kMax + j] * rate[i * kMax + l];
     }
     for (int i = 0; i < last; ++i) rhs[i] = -(explicit_part[i] - explicit_part[last]);
     rhs[last] = 1 - r.gamma[j];
@@ -338,6 +358,40 @@ class VectorMode {
   Lu<S> mass_, heat_;
 };
 
+/// The order-1 collisional-transfer averages of the pair (i, j) about Maxwellians at θ_i, θ_j, in the
+/// notation of PairTransferMoments (mixture_collisional_transfer.hpp): Gaussian integrals in the
+/// centre-of-mass and relative velocities with σ̂ along the first axis, done once by computer algebra
+/// (theory.md (17.26)–(17.27)). They depend on the pair through θ_i, θ_j, m_i and k = μ_ji(1 + α_ij) only.
+struct PairTransfer {
+  double density0, density1, temperature0, temperature1;  // source_density[p], source_temperature[p]
+  double shear_source, shear_partner, shear_self;         // source_shear[0], shear_flux_partner[0], _self[0]
+  double heat_partner0, heat_partner1, heat_self0, heat_self1;
+  double energy, energy_self, energy_partner, cooling_gradient;  // shear_gradient = −4 for every pair
+};
+PairTransfer pair_transfer(const Reduced& r, int i, int j) {
+  const double d = r.d, ti = r.theta[i], tj = r.theta[j], k = r.mu_a[i * kMax + j], mi = r.m[i];
+  const double sum = ti + tj, root = std::sqrt(sum), rti = r.root_theta[i], rtj = r.root_theta[j];
+  const double sp = std::sqrt(std::numbers::pi), ks = k * sum, over = sp / (rtj * root);  // √π/√(θ_j(θ_i+θ_j))
+  PairTransfer t{};
+  t.density0 = -0.5 * k * sp * root / rtj;                                         // (17.26)
+  t.temperature0 = -0.5 * k * ti * over;                                           // (17.26)
+  t.density1 = 0.75 * k * (ks - 2 * tj) * (ks - tj) * over / tj;                   // (17.26)
+  t.temperature1 = 0.75 * k * k * ti * (2 * ks - 3 * tj) * over / tj;              // (17.26)
+  t.shear_source = -(d - 1) / (4 * d) * k * rti * (3 * ks - 4 * tj) * over / rtj;  // (17.26)
+  t.shear_partner = (d - 1) / (2 * d) * rti * over;                                // (17.27)
+  t.shear_self = (d - 1) / (2 * d) * sp * rtj / (rti * root);                      // (17.27)
+  t.heat_partner0 = -k * mi * (3 * ks - 4 * tj) * over / (8 * rti * rtj);          // (17.27)
+  t.heat_partner1 = 3 * k * k * mi * rti * over / (8 * rtj);                       // (17.27)
+  t.heat_self0 = k * mi * (3 * ks - 2 * ti - 6 * tj) * over / (8 * ti);            // (17.27)
+  t.heat_self1 = -3 * k * mi * tj * (k - 2) * over / (8 * ti);                     // (17.27)
+  const double e = k * mi / (4 * ti * tj * sum), ti2 = ti * ti, tt = ti * tj, tj2 = tj * tj;
+  t.energy = 2 * e * sum * (ks - 2 * tj);  // (17.27)
+  t.energy_self = e * (k * (d * ti2 + (2 * d + 3) * tt + (d + 3) * tj2) - (2 * d + 4) * tt - (2 * d + 6) * tj2);
+  t.energy_partner = e * (k * ((d + 3) * ti2 + (2 * d + 3) * tt + d * tj2) - (2 * d + 2) * tt - 2 * d * tj2);
+  t.cooling_gradient = -1.5 * sp * root / (rti * rtj);  // (17.27)
+  return t;
+}
+
 /// Returns "<base>[i]: <what>" (built by appending: GCC 12 misreports "a" + std::string as overlapping).
 std::string field(const char* base, int i, const char* what) {
   return std::string(base).append("[").append(std::to_string(i)).append("]: ").append(what);
@@ -370,6 +424,24 @@ Reduced reduce(const MixtureCell& cell) {
     total += cell.fraction[i];
   }
   if (std::abs(total - 1) > 1e-12) throw std::invalid_argument("fraction: the mole fractions must sum to 1");
+  static const std::array<double, 2> phi_max{max_packing_fraction(2).to_double(), max_packing_fraction(3).to_double()};
+  const double phi_limit = phi_max[static_cast<std::size_t>(r.d - 2)];
+  if (!(cell.packing_fraction >= 0 && cell.packing_fraction < phi_limit))
+    throw std::invalid_argument(std::string("packing_fraction: must be in [0, ")
+                                    .append(std::to_string(phi_limit))
+                                    .append(") for this dimension"));
+  r.dense = cell.packing_fraction > 0;
+  if (r.dense) {
+    detail::DenseCellGeometry g;
+    g.d = r.d;
+    g.s = r.s;
+    g.packing_fraction = cell.packing_fraction;
+    for (int i = 0; i < r.s; ++i) {
+      g.sigma[i] = cell.diameter[i] / mean_diameter;
+      g.fraction[i] = cell.fraction[i];
+    }
+    r.closures = detail::dense_cell_closures(g);
+  }
   for (int i = 0; i < r.s; ++i) {
     r.m[i] = cell.mass[i] / mean_mass;
     r.inverse_m[i] = mean_mass / cell.mass[i];
@@ -377,7 +449,9 @@ Reduced reduce(const MixtureCell& cell) {
     if (r.x[i] > r.x[r.major]) r.major = i;
     for (int j = 0; j < r.s; ++j) {
       const double sigma = 0.5 * (cell.diameter[i] + cell.diameter[j]) / mean_diameter;
-      r.area[i * kMax + j] = r.d == 3 ? sigma * sigma : sigma;
+      r.area[i * kMax + j] = (r.d == 3 ? sigma * sigma : sigma) * (r.dense ? r.closures.chi[i * kMax + j] : 1.0);
+      r.sigma[i * kMax + j] = sigma;
+      r.length[i * kMax + j] = r.closures.density * sigma;
       r.mu_a[i * kMax + j] = cell.mass[j] / (cell.mass[i] + cell.mass[j]) * (1 + cell.restitution[i * kMax + j]);
       r.alpha[i * kMax + j] = cell.restitution[i * kMax + j];
     }
@@ -399,15 +473,62 @@ PublishedFirstSonine first_sonine(Reduced& r) {
   // Maxwell averages of the order-1 pieces (galerkin_pieces): M(0,0) = d/2, M(1,1) = F_0 = −F_1 =
   // d(d+2)/4; D(0,0) = −d/4, D(1,0) = d(d+2)/4, D(1,1) = −3d(d+2)/8; shear D = −(d−1)(d+2)/8.
   const double m00 = d / 2, m11 = d * (d + 2) / 4, d00 = -d / 4, d10 = m11, d11 = -3 * m11 / 2;
+  const double temperature = 0.5;
   PublishedFirstSonine out;
   out.cooling_rate = z / r.ref.collision_frequency;
-  for (int i = 0; i < S; ++i) out.temperature_ratio[i] = r.gamma[i];
+  for (int i = 0; i < S; ++i) {
+    out.temperature_ratio[i] = r.gamma[i];
+    out.pressure_derivative[i] = 1;
+  }
 
-  // 𝒜 (∇ln T), sources (17.5): −x_i θ_i^{−1/2}[(1 − θ_i) M(p,0) − M(p,1)].
+  // Dense gas: the pair averages (17.26)–(17.27), the rate R_ij = σ_ij^{d−1} χ_ij c_d w_ij, p* and
+  // P_ℓ = ∂p/∂n_ℓ/T (18.2).
+  std::array<PairTransfer, kMax * kMax> transfer{};
+  Mat rate{};
+  if (r.dense) {
+    const double b2 = r.d == 3 ? 2 * std::numbers::pi / 3 : std::numbers::pi / 2;  // π^{(d−1)/2}Γ(3/2)/Γ(d/2+1)
+    for (int i = 0; i < S; ++i)
+      for (int j = 0; j < S; ++j) {
+        const int P = i * kMax + j;
+        transfer[P] = pair_transfer(r, i, j);
+        rate[P] = r.area[P] * r.c_d * std::sqrt(1 / r.theta[i] + 1 / r.theta[j]);
+        const double sd = r.d == 3 ? r.sigma[P] * r.sigma[P] * r.sigma[P] : r.sigma[P] * r.sigma[P];
+        const double w = r.closures.density * b2 * r.mu_a[P] * sd * r.closures.chi[P] * r.gamma[i];
+        out.pressure += w * r.x[i] * r.x[j];
+        for (int l = 0; l < S; ++l)
+          out.pressure_derivative[l] +=
+              w * ((i == l ? r.x[j] : 0.0) + (j == l ? r.x[i] : 0.0) +
+                   r.x[i] * r.x[j] * (r.closures.log_chi_derivative[P * kMax + l] + sens.log_gamma[i * kMax + l]));
+      }
+  }
+  // The collisional heat flux (18.9) of a vector-mode solution, f0 f^(1) part:
+  // −(1/(2d)) Σ_ij L R [x_i ⟨⟨(σ̂·c2)ΔE_1 X_j⟩⟩ + x_j ⟨⟨(σ̂·c1)ΔE_1 X_i⟩⟩].
+  auto collisional_heat = [&](const VectorSolution& v) {
+    double q = 0;
+    for (int i = 0; i < S; ++i)
+      for (int j = 0; j < S; ++j) {
+        const int P = i * kMax + j;
+        const PairTransfer& t = transfer[P];
+        q -= r.length[P] * rate[P] / (2 * d) *
+             (r.x[i] * (t.heat_partner0 * v.s0[j] + t.heat_partner1 * v.s1[j]) +
+              r.x[j] * (t.heat_self0 * v.s0[i] + t.heat_self1 * v.s1[i]));
+      }
+    return q;
+  };
+  auto gradient_heat = [&](int P) { return -r.length[P] * r.length[P] * rate[P] / (4 * d); };
+
+  // 𝒜 (∇ln T), sources (17.5), (18.4): −x_i θ_i^{−1/2}[(1 − θ_i p*) M(p,0) − M(p,1)] + Σ_j L R x_i x_j ⟨⟨…(X2 − d/2)⟩⟩.
   Vec a0{}, a1{};
   for (int i = 0; i < S; ++i) {
-    a0[i] = -r.x[i] / r.root_theta[i] * (1 - r.theta[i]) * m00;
+    a0[i] = -r.x[i] / r.root_theta[i] * (1 - r.theta[i] * out.pressure) * m00;
     a1[i] = r.x[i] / r.root_theta[i] * m11;
+    if (r.dense)
+      for (int j = 0; j < S; ++j) {
+        const int P = i * kMax + j;
+        const double f = r.length[P] * rate[P] * r.x[i] * r.x[j];
+        a0[i] += f * transfer[P].temperature0;
+        a1[i] += f * transfer[P].temperature1;
+      }
   }
   const VectorSolution heat = VectorMode<S>(r, op, z * (d00 - m00 / 2), z * d10, z * (d11 - m11 / 2)).solve(a0, a1);
   const VectorMode<S> density_mode(r, op, z * d00, z * d10, z * d11),
@@ -418,26 +539,63 @@ PublishedFirstSonine first_sonine(Reduced& r) {
   auto heat_flux = [&](const VectorSolution& v, int i) {
     return r.m[i] / (2 * d * r.theta[i] * r.root_theta[i]) * m11 * (v.s0[i] - v.s1[i]);
   };
-  const double temperature = 0.5;
   for (int i = 0; i < S; ++i) {
     out.thermal_diffusion[i] = -r.m[i] * number_flux(heat, i) / r.ref.self_diffusion;
     out.thermal_conductivity_species[i] = -heat_flux(heat, i) / temperature / r.ref.conductivity;
     out.thermal_conductivity += out.thermal_conductivity_species[i];
   }
-  // ℬ^j (∇n_j), sources (17.6): −θ_i^{−1/2}[δ_ij M(p,0) + x_i(∂_j ln γ_i (M(p,0) − M(p,1)) − θ_i M(p,0))] + ∂ζ/∂n_j M
-  // φ̃^𝒜_i.
+  if (r.dense) {  // (18.9): f0 f^(1) and f0 ∂f0 parts
+    double q = collisional_heat(heat);
+    for (int i = 0; i < S; ++i)
+      for (int j = 0; j < S; ++j) {
+        const int P = i * kMax + j;
+        q += gradient_heat(P) * r.x[i] * r.x[j] * (transfer[P].energy_partner - transfer[P].energy_self);
+      }
+    out.thermal_conductivity -= q / temperature / r.ref.conductivity;
+  }
+  // ℬ^j (∇n_j), sources (17.6), (18.4): −θ_i^{−1/2}[δ_ij M(p,0) + x_i(∂_j ln γ_i (M(p,0) − M(p,1)) − θ_i P_j M(p,0))]
+  // + ∂ζ/∂n_j M φ̃^𝒜_i + the transfer of the pairs (i, k) (18.21).
   for (int j = 0; j < S; ++j) {
     Vec b0{}, b1{};
     for (int i = 0; i < S; ++i) {
       const double g = sens.log_gamma[i * kMax + j], root = r.root_theta[i];
-      b0[i] = -m00 / root * ((i == j ? 1.0 : 0.0) + r.x[i] * (g - r.theta[i])) + sens.zeta[j] * m00 * heat.s0[i];
+      b0[i] = -m00 / root * ((i == j ? 1.0 : 0.0) + r.x[i] * (g - r.theta[i] * out.pressure_derivative[j])) +
+              sens.zeta[j] * m00 * heat.s0[i];
       b1[i] = m11 / root * r.x[i] * g + sens.zeta[j] * m11 * heat.s1[i];
+      if (r.dense)
+        for (int k = 0; k < S; ++k) {
+          const int P = i * kMax + k;
+          const PairTransfer& t = transfer[P];
+          const double f = r.length[P] * rate[P] * r.x[i], gk = sens.log_gamma[k * kMax + j];
+          const double density = (k == j ? 1.0 : 0.0) + 0.5 * (r.x[k] * r.closures.log_chi_derivative[P * kMax + j] +
+                                                               r.closures.functionals[P * kMax + j]);
+          b0[i] += f * (density * t.density0 + r.x[k] * gk * t.temperature0);
+          b1[i] += f * (density * t.density1 + r.x[k] * gk * t.temperature1);
+        }
     }
     const VectorSolution density = density_mode.solve(b0, b1);
+    double collisional = 0;
     for (int i = 0; i < S; ++i) {
       out.mutual_diffusion[i * kMax + j] = -number_flux(density, i) / (r.m[j] * r.ref.self_diffusion);
       out.dufour_species[i * kMax + j] = -r.x[j] * heat_flux(density, i) / (temperature * r.ref.conductivity);
       out.dufour[j] += out.dufour_species[i * kMax + j];
+    }
+    if (r.dense) {
+      collisional = collisional_heat(density);
+      for (int i = 0; i < S; ++i)
+        for (int k = 0; k < S; ++k) {
+          const int P = i * kMax + k;
+          const PairTransfer& t = transfer[P];
+          const double gi = sens.log_gamma[i * kMax + j], gk = sens.log_gamma[k * kMax + j];
+          // (18.22) with the off-midpoint contact value I_jik/x_k per ∇n_j
+          const double v =
+              ((k == j ? r.x[i] : 0.0) - (i == j ? r.x[k] : 0.0) + r.x[i] * r.closures.functionals[P * kMax + j]) *
+                  t.energy +
+              r.x[i] * r.x[k] *
+                  (gk * (t.energy_partner - 0.5 * d * t.energy) - gi * (t.energy_self - 0.5 * d * t.energy));
+          collisional += gradient_heat(P) * v;
+        }
+      out.dufour[j] -= r.x[j] * collisional / (temperature * r.ref.conductivity);
     }
     // External force on species j (18.14): source 2√θ_i x_i M(0,0)(δ_ij/m_i − x_j), operator ζ(D + M).
     Vec f0{};
@@ -448,21 +606,47 @@ PublishedFirstSonine first_sonine(Reduced& r) {
       out.heat_mobility_species[i * kMax + j] = -heat_flux(force, i) / r.ref.conductivity;
       out.heat_mobility[j] += out.heat_mobility_species[i * kMax + j];
     }
+    if (r.dense) out.heat_mobility[j] -= collisional_heat(force) / r.ref.conductivity;  // (18.15)
   }
   for (int i = 0; i < S; ++i)
     for (int j = 0; j < S; ++j)
       out.pressure_diffusion[i] += r.m[i] * r.m[j] * r.x[j] * out.mutual_diffusion[i * kMax + j];
-  // Shear (17.11) with Y_2 S_0 alone: (ℒ + ζD) φ̃ = −2x_i((d−1)/d)F_0, η_i = −(m_i/θ_i) F_0 φ̃_i/(d(d+2)).
+  // Shear (17.11) with Y_2 S_0 alone: (ℒ + ζD) φ̃ = −2x_i((d−1)/d)F_0 (+ the transfer (18.5) dense),
+  // η_i = −(m_i/θ_i) F_0 φ̃_i/(d(d+2)).
   Mat shear = op.shear;
   Vec source{};
   for (int i = 0; i < S; ++i) {
     shear[i * kMax + i] -= z * (d - 1) * (d + 2) / 8;
     source[i] = -r.x[i] * (d - 1) * (d + 2) / 2;
+    if (r.dense)
+      for (int j = 0; j < S; ++j) {
+        const int P = i * kMax + j;
+        source[i] += r.length[P] * rate[P] * r.x[i] * r.x[j] * 2 * r.root_theta[j] * transfer[P].shear_source;
+      }
   }
   const Vec c = solve<S>(shear, source);
   for (int i = 0; i < S; ++i) {
     out.shear_viscosity_species[i] = -r.m[i] / r.theta[i] * c[i] / 4 / r.ref.viscosity;
     out.shear_viscosity += out.shear_viscosity_species[i];
+  }
+  if (r.dense) {
+    // (18.8): f0 f^(1) part −(1/(2(d−1)(d+2))) Σ_ij m_i μ_ji (1+α) L R [x_i ⟨⟨…Y(c2)⟩⟩ c_j + x_j ⟨⟨…Y(c1)⟩⟩ c_i];
+    // f0 ∂f0 part with ⟨⟨(σ̂·g)σ̂·(2θ_j v2 − 2θ_i v1)⟩⟩ = −4, whose (d+2)/d multiple is the bulk viscosity; ζ_U of
+    // (17.18).
+    double eta = 0, gradient = 0;
+    for (int i = 0; i < S; ++i)
+      for (int j = 0; j < S; ++j) {
+        const int P = i * kMax + j;
+        const PairTransfer& t = transfer[P];
+        const double w = r.m[i] * r.mu_a[P] * r.length[P] * rate[P];
+        eta -= w / (2 * (d - 1) * (d + 2)) * (r.x[i] * t.shear_partner * c[j] + r.x[j] * t.shear_self * c[i]);
+        gradient += w * r.length[P] * r.x[i] * r.x[j] / (d * (d + 2));
+        const double a = r.alpha[P];
+        out.cooling_rate_first_order += (1 - a * a) * r.m[i] * r.mu_a[P] / (1 + a) * rate[P] * r.length[P] * r.x[i] *
+                                        r.x[j] * t.cooling_gradient / (d * d);
+      }
+    out.shear_viscosity += (eta + gradient) / r.ref.viscosity;
+    out.bulk_viscosity = (d + 2) / d * gradient / r.ref.viscosity;
   }
   return out;
 }
@@ -472,11 +656,10 @@ PublishedFirstSonine first_sonine(Reduced& r) {
 MixtureCell mixture_cell(const Mixture& mixture) {
   mixture.validate();
   if (mixture.size() > kMax) throw std::invalid_argument("species: the closed form takes at most 4 species");
-  if (mixture.packing_fraction > 0)
-    throw std::invalid_argument("packing_fraction: the published first-Sonine closed form is the dilute gas's (0)");
   MixtureCell cell;
   cell.dimension = mixture.dimension;
   cell.species = static_cast<int>(mixture.size());
+  cell.packing_fraction = mixture.packing_fraction;
   for (std::size_t i = 0; i < mixture.size(); ++i) {
     cell.mass[i] = mixture.species[i].mass.value();
     cell.diameter[i] = mixture.species[i].diameter;

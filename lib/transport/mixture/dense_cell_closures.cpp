@@ -1,0 +1,245 @@
+// Fixed-size contact values, their derivatives and the revised-Enskog functionals of one dense state
+// (docs/theory.md §18.1, §18.12). The formulas are those of mixture.cpp and revised_enskog_functionals.cpp,
+// rearranged so that each node of the λ integral (18.17) costs O(s²) instead of O(s⁴).
+#include "transport/mixture/dense_cell_closures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Eigenvalues>
+
+namespace gkt::detail {
+
+namespace {
+
+constexpr int kMax = 4;
+
+/// χ = F(φ, u) = Σ_k c_k u^k (1 − φ)^{−(k+1)} with its derivatives (16.1): 3D [boublik1970],
+/// [mansoori1971] c = (1, 3/2, 1/2); 2D [jenkins1987] c = (1, 9/16).
+struct Contact {
+  double f, f_phi, f_u, f_phiphi, f_phiu, f_uu;
+};
+template <int D>
+[[gnu::always_inline]] inline Contact contact(double inverse_gap, double u) {
+  const double g1 = inverse_gap, g2 = g1 * g1, g3 = g2 * g1, g4 = g3 * g1, g5 = g4 * g1;
+  if constexpr (D == 3)
+    return {g1 + 1.5 * u * g2 + 0.5 * u * u * g3,
+            g2 + 3 * u * g3 + 1.5 * u * u * g4,
+            1.5 * g2 + u * g3,
+            2 * g3 + 9 * u * g4 + 6 * u * u * g5,
+            3 * g3 + 3 * u * g4,
+            g3};
+  else
+    return {g1 + 0.5625 * u * g2, g2 + 1.125 * u * g3, 0.5625 * g2, 2 * g3 + 3.375 * u * g4, 1.125 * g3, 0};
+}
+
+/// Gauss–Legendre nodes and weights on [0, 1] (Golub–Welsch), for 6, 8, 12, 16 and 24 points.
+struct Rule {
+  int size = 0;
+  std::array<double, 24> node{}, weight{};
+};
+Rule make_rule(int n) {
+  Eigen::MatrixXd jacobi = Eigen::MatrixXd::Zero(n, n);
+  for (int k = 1; k < n; ++k) jacobi(k, k - 1) = jacobi(k - 1, k) = k / std::sqrt(4.0 * k * k - 1);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(jacobi);
+  Rule out;
+  out.size = n;
+  for (int q = 0; q < n; ++q) {
+    out.node[static_cast<std::size_t>(q)] = 0.5 * (1 + solver.eigenvalues()(q));
+    out.weight[static_cast<std::size_t>(q)] = solver.eigenvectors()(0, q) * solver.eigenvectors()(0, q);
+  }
+  return out;
+}
+/// The rule for the λ integrals of (18.17) at packing fraction φ: their integrands are rational in λ with
+/// poles (of order ≤ 5) at λ = 1/φ, x = 2/φ − 1 on the interval's [−1, 1], so an n-point rule errs by about
+/// ρ^{−2n}, ρ = x + √(x² − 1); n ≥ 22.5/ln ρ puts that below 10^{−19} (with room for the pole order), capped
+/// at the 24 points of revised_enskog_functionals.cpp.
+const Rule& rule(double phi) {
+  static const std::array<Rule, 5> rules{make_rule(6), make_rule(8), make_rule(12), make_rule(16), make_rule(24)};
+  const double x = 2 / phi - 1, needed = 22.5 / std::log(x + std::sqrt(x * x - 1));
+  for (const Rule& r : rules)
+    if (r.size >= needed) return r;
+  return rules.back();
+}
+
+/// (c − R)·σ̂ of revised_enskog_functionals.cpp: the lens centroid's offset from the pair's midpoint.
+double lens_centroid_offset(int d, double sigma_i, double sigma_j, double sigma_l) {
+  const double distance = 0.5 * (sigma_i + sigma_j), ra = 0.5 * (sigma_i + sigma_l), rb = 0.5 * (sigma_j + sigma_l);
+  const double x0 = (distance * distance + ra * ra - rb * rb) / (2 * distance);
+  auto cap = [d](double r, double a, double& size, double& centroid) {
+    if (d == 3) {
+      const double h = r - a;
+      size = std::numbers::pi * h * h * (3 * r - h) / 3;
+      centroid = 3 * (2 * r - h) * (2 * r - h) / (4 * (3 * r - h));
+      return;
+    }
+    const double half_chord = std::sqrt(r * r - a * a);
+    size = r * r * std::acos(a / r) - a * half_chord;
+    centroid = 2 * half_chord * half_chord * half_chord / (3 * size);
+  };
+  double va = 0, ca = 0, vb = 0, cb = 0;
+  cap(ra, x0, va, ca);
+  cap(rb, distance - x0, vb, cb);
+  return (va * ca + vb * (distance - cb)) / (va + vb) - 0.5 * distance;
+}
+
+/// dense_cell_closures in dimension D (the contact polynomials then inline without a branch).
+template <int D>
+DenseCellClosures closures(const DenseCellGeometry& g) {
+  constexpr int d = D;
+  const int s = g.s;
+  // v_d and B_2 of (18.2) per dimension, computed once (pow and tgamma would dominate a call).
+  static const std::array<double, 2> volume_factor{std::numbers::pi / 4, std::numbers::pi / 6},
+      virial{std::numbers::pi / 2, 2 * std::numbers::pi / 3};
+  const double vd = volume_factor[static_cast<std::size_t>(d - 2)], b2 = virial[static_cast<std::size_t>(d - 2)];
+  DenseCellClosures out;
+  std::array<double, kMax> volume{}, surface{}, n{};  // σ_k^d, σ_k^{d−1}, n_k (σ̄ = 1)
+  double moment = 0;
+  for (int k = 0; k < s; ++k) {
+    surface[k] = d == 3 ? g.sigma[k] * g.sigma[k] : g.sigma[k];
+    volume[k] = surface[k] * g.sigma[k];
+    moment += g.fraction[k] * volume[k];
+  }
+  const double phi = g.packing_fraction, density = phi / (vd * moment);
+  double y = 0;
+  for (int k = 0; k < s; ++k) {
+    n[k] = density * g.fraction[k];
+    y += vd * n[k] * surface[k];
+  }
+  out.density = density;
+  std::array<double, 16> width{}, weight{};  // a_ij = σ_iσ_j/σ_ij, σ_ij^d
+  std::array<Contact, 16> at{};
+  const double inverse_gap = 1 / (1 - phi);
+  for (int i = 0; i < s; ++i)
+    for (int j = 0; j < s; ++j) {
+      const int P = i * kMax + j;
+      const double sij = 0.5 * (g.sigma[i] + g.sigma[j]);
+      width[P] = g.sigma[i] * g.sigma[j] / sij;
+      weight[P] = d == 3 ? sij * sij * sij : sij * sij;
+      at[P] = contact<D>(inverse_gap, width[P] * y);
+      out.chi[P] = at[P].f;
+      // n ∂χ/∂n_ℓ = n v_d (F_φ σ_ℓ^d + a F_u σ_ℓ^{d−1}) (18.1)
+      const double scale = density * vd / at[P].f, a = scale * at[P].f_phi, b = scale * at[P].f_u * width[P];
+      for (int l = 0; l < s; ++l) out.log_chi_derivative[P * kMax + l] = a * volume[l] + b * surface[l];
+    }
+  for (int k = 1; k < s; ++k) out.unequal = out.unequal || g.sigma[k] != g.sigma[0];
+  if (!out.unequal) return out;
+
+  // ∂_i∂_ℓ (μ^ex/T)… : H_iℓ = ∫_0^1 dλ ∂_i∂_ℓ (p^ex/T)(λn), p^ex/T = B_2 Σ_jk n_j n_k σ_jk^d χ_jk (18.17). With
+  // ∂_ℓχ_jk = v_d(F_φ σ_ℓ^d + a F_u σ_ℓ^{d−1}) the Hessian at λn is 2σ_iℓ^d χ_iℓ + 2v_d(T_iφ σ_ℓ^d + T_iu σ_ℓ^{d−1} +
+  // (i ↔ ℓ))
+  // + v_d² (A_φφ σ_i^dσ_ℓ^d + A_φu(σ_i^dσ_ℓ^{d−1} + σ_ℓ^dσ_i^{d−1}) + A_uu σ_i^{d−1}σ_ℓ^{d−1}).
+  // The node-dependent pieces enter H linearly: integrate them over λ first, assemble H once.
+  std::array<double, kMax> t_phi{}, t_u{};
+  std::array<double, 16> f{};
+  double a_pp = 0, a_pu = 0, a_uu = 0;
+  const Rule& r = rule(phi);
+  for (std::size_t q = 0; q < static_cast<std::size_t>(r.size); ++q) {
+    const double lambda = r.node[q], w = r.weight[q] * b2, ig = 1 / (1 - lambda * phi), wl = w * lambda;
+    for (int j = 0; j < s; ++j)
+      for (int k = j; k < s; ++k) {
+        const int P = j * kMax + k;
+        const Contact c = contact<D>(ig, width[P] * lambda * y);
+        f[P] += w * c.f;
+        const double pair = (j == k ? 1.0 : 2.0) * weight[P] * n[j] * n[k] * wl * lambda;  // w λ² n_j n_k
+        a_pp += pair * c.f_phiphi;
+        a_pu += pair * c.f_phiu * width[P];
+        a_uu += pair * c.f_uu * width[P] * width[P];
+        t_phi[j] += wl * weight[P] * n[k] * c.f_phi;
+        t_u[j] += wl * weight[P] * n[k] * c.f_u * width[P];
+        if (k != j) {
+          t_phi[k] += wl * weight[P] * n[j] * c.f_phi;
+          t_u[k] += wl * weight[P] * n[j] * c.f_u * width[P];
+        }
+      }
+  }
+  std::array<double, 16> hessian{};
+  for (int i = 0; i < s; ++i)
+    for (int l = 0; l < s; ++l)
+      hessian[i * kMax + l] =
+          2 * weight[i * kMax + l] * f[std::min(i, l) * kMax + std::max(i, l)] +
+          2 * vd * (t_phi[i] * volume[l] + t_u[i] * surface[l] + t_phi[l] * volume[i] + t_u[l] * surface[i]) +
+          vd * vd *
+              (a_pp * volume[i] * volume[l] + a_pu * (volume[i] * surface[l] + volume[l] * surface[i]) +
+               a_uu * surface[i] * surface[l]);
+  // b_ℓi = H_iℓ/(2B_2) − Σ_k σ_ik^d [χ_ik δ_kℓ + ½ n_k ∂_ℓχ_ik] (18.19)
+  auto dchi = [&](int P, int l) { return vd * (at[P].f_phi * volume[l] + at[P].f_u * width[P] * surface[l]); };
+  std::array<double, 16> remainder{};  // at i·4 + ℓ
+  for (int i = 0; i < s; ++i)
+    for (int l = 0; l < s; ++l) {
+      double rest = hessian[i * kMax + l] / (2 * b2);
+      for (int k = 0; k < s; ++k) {
+        const int P = i * kMax + k;
+        rest -= weight[P] * ((k == l ? at[P].f : 0.0) + 0.5 * n[k] * dchi(P, l));
+      }
+      remainder[i * kMax + l] = rest;
+    }
+  if (s == 2) {  // (18.20)
+    for (int i = 0; i < 2; ++i) {
+      const int j = 1 - i, P = i * kMax + j;
+      for (int l = 0; l < 2; ++l) out.functionals[P * kMax + l] = 2 * remainder[i * kMax + l] / (weight[P] * at[P].f);
+    }
+    return out;
+  }
+  // s ≥ 3, lens-centroid closure (§18.12): K_ℓij = δ_ijℓ ∂_ℓχ_ij/σ_ij + u_ℓi − u_ℓj with Σ_j n_j σ_ij^d K_ℓij = b_ℓi;
+  // the row of the most abundant species is dropped and its u is 0.
+  int major = 0;
+  for (int k = 1; k < s; ++k)
+    if (n[k] > n[major]) major = k;
+  std::array<int, kMax> unknown{};
+  for (int k = 0, c = 0; k < s; ++k) unknown[k] = k == major ? -1 : c++;
+  const int m = s - 1;
+  for (int l = 0; l < s; ++l) {
+    std::array<double, 16> reference{};
+    for (int i = 0; i < s; ++i)
+      for (int j = i + 1; j < s; ++j) {  // the offset is antisymmetric in (i, j), ∂_ℓχ_ij/σ_ij symmetric
+        const int P = i * kMax + j;
+        const double v = lens_centroid_offset(d, g.sigma[i], g.sigma[j], g.sigma[l]) * dchi(P, l) /
+                         (0.5 * (g.sigma[i] + g.sigma[j]));
+        reference[P] = v;
+        reference[j * kMax + i] = -v;
+      }
+    std::array<double, 9> a{};
+    std::array<double, 3> b{};
+    for (int i = 0; i < s; ++i) {
+      if (i == major) continue;
+      const int row = unknown[i];
+      b[row] = remainder[i * kMax + l];
+      for (int j = 0; j < s; ++j) {
+        if (j == i) continue;
+        const double wij = n[j] * weight[i * kMax + j];
+        b[row] -= wij * reference[i * kMax + j];
+        a[row * 3 + row] += wij;
+        if (j != major) a[row * 3 + unknown[j]] -= wij;
+      }
+    }
+    // Gaussian elimination (strictly diagonally dominant rows: no pivoting needed).
+    for (int c = 0; c < m; ++c)
+      for (int rr = c + 1; rr < m; ++rr) {
+        const double f = a[rr * 3 + c] / a[c * 3 + c];
+        for (int k = c; k < m; ++k) a[rr * 3 + k] -= f * a[c * 3 + k];
+        b[rr] -= f * b[c];
+      }
+    std::array<double, 3> u3{};
+    for (int rr = m - 1; rr >= 0; --rr) {
+      double v = b[rr];
+      for (int k = rr + 1; k < m; ++k) v -= a[rr * 3 + k] * u3[k];
+      u3[rr] = v / a[rr * 3 + rr];
+    }
+    auto u = [&](int k) { return k == major ? 0.0 : u3[unknown[k]]; };
+    for (int i = 0; i < s; ++i)
+      for (int j = 0; j < s; ++j) {
+        if (i == j) continue;
+        const int P = i * kMax + j;
+        out.functionals[P * kMax + l] = 2 * n[j] * (reference[P] + u(i) - u(j)) / at[P].f;
+      }
+  }
+  return out;
+}
+
+}  // namespace
+
+DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) { return g.d == 3 ? closures<3>(g) : closures<2>(g); }
+
+}  // namespace gkt::detail
