@@ -236,3 +236,50 @@ TEST(SonineTruncation, PlateauSumOnlyOnAnAlternatingPlateau) {
   EXPECT_LT(std::fabs(summed->value.to_double() - 1), summed->error.to_double());
   EXPECT_LT(summed->error.to_double(), 2.2e-3);  // ≥ half the smallest change (1.07e-3), below the largest
 }
+
+// theory.md (6.3): a sign change of the first two changes is read as an alternation only if the third
+// change flips back; a turn (the third change keeps the sign of the second) is bounded by |Δ1| plus the
+// monotone tail after the turn. Synthetic sequences with known limits: the error must not be smaller than
+// the distance to the limit, and (6.3) must equal (6.1) where (6.1) was right.
+TEST(SonineTruncation, TurningPointIsNotReadAsAnAlternation) {
+  auto r = [](double x) { return Rational::from_double(x); };
+  // Alternating geometric, ratio −1/2, limit 1: confirmed by Δ3, identical to (6.1), an upper bound.
+  auto alternating = [](int n) { return 1 + 1e-3 * std::pow(-0.5, n); };
+  const auto plain = gkt::estimate_truncation(r(alternating(0)), r(alternating(1)), r(alternating(2)));
+  const auto confirmed =
+      gkt::estimate_truncation_confirmed(r(alternating(0)), r(alternating(1)), r(alternating(2)), r(alternating(3)));
+  EXPECT_TRUE(confirmed.converging);
+  EXPECT_EQ(confirmed.error, plain.error);
+  EXPECT_GE(confirmed.error.to_double(), std::fabs(alternating(0) - 1));
+  // Monotone geometric, ratio 1/2: (6.1) unchanged, v_{N+3} not read (absent).
+  auto monotone = [](int n) { return 2 + 1e-3 * std::pow(0.5, n); };
+  const auto mono = gkt::estimate_truncation_confirmed(r(monotone(0)), r(monotone(1)), r(monotone(2)), std::nullopt);
+  EXPECT_TRUE(mono.converging);
+  EXPECT_EQ(mono.error, gkt::estimate_truncation(r(monotone(0)), r(monotone(1)), r(monotone(2))).error);
+  EXPECT_GE(mono.error.to_double(), std::fabs(monotone(0) - 2));
+  // A turn with a converging tail: Δ1 = −1e-3, then a monotone rise of first step 0.9e-3 and ratio 0.9 to
+  // the limit 3 (v_0 = 3 + 1e-3 − 9e-3). (6.1) reads r = −0.9 as an alternation and claims 6.6e-4 against
+  // 8e-3 actual; (6.3) bounds it.
+  const double v0 = 3 - 8e-3;
+  auto turning = [&](int n) {
+    if (n == 0) return v0;
+    return 3 - 9e-3 * std::pow(0.9, n - 1);  // v_1 = v_0 − 1e-3, then rising by 0.9e-3 · 0.9^(n−1)
+  };
+  const auto optimistic = gkt::estimate_truncation(r(turning(0)), r(turning(1)), r(turning(2)));
+  EXPECT_LT(optimistic.error.to_double(), std::fabs(v0 - 3));  // the defect (6.3) cures
+  const auto turn = gkt::estimate_truncation_confirmed(r(turning(0)), r(turning(1)), r(turning(2)), r(turning(3)));
+  EXPECT_TRUE(turn.converging);
+  EXPECT_GE(turn.error.to_double(), std::fabs(v0 - 3));
+  EXPECT_LT(turn.error.to_double(), 2 * (1e-3 + 9e-3));  // (5/4)(|Δ1| + 9e-3): a bound, not a refusal
+  // The case of theory.md §6 (2D α = 0.8 η*, orders 10–13): changes −5.0e-9, +4.6e-9, +7.7e-9. (6.1)
+  // claims 3.3e-9 (the value is 1.6e-8 off); the growing tail after the turn cannot stop a scan.
+  const std::array<double, 4> eta{0, -5.0e-9, -0.4e-9, 7.3e-9};
+  EXPECT_LT(gkt::estimate_truncation(r(eta[0]), r(eta[1]), r(eta[2])).error.to_double(), 4e-9);
+  const auto eta_turn = gkt::estimate_truncation_confirmed(r(eta[0]), r(eta[1]), r(eta[2]), r(eta[3]));
+  EXPECT_FALSE(eta_turn.converging);
+  EXPECT_GE(eta_turn.error.to_double(), 1.6e-8);
+  // Without v_{N+3} an unconfirmed sign change cannot stop a scan.
+  EXPECT_FALSE(gkt::estimate_truncation_confirmed(r(eta[0]), r(eta[1]), r(eta[2]), std::nullopt).converging);
+  EXPECT_TRUE(gkt::changes_sign(r(eta[0]), r(eta[1]), r(eta[2])));
+  EXPECT_FALSE(gkt::changes_sign(r(monotone(0)), r(monotone(1)), r(monotone(2))));
+}

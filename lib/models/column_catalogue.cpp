@@ -255,6 +255,20 @@ ColumnDescription describe_column(const std::string& model, const std::string& c
     } catch (const std::invalid_argument&) {  // e.g. a column truly named …_error: look it up as is
     }
   }
+  constexpr std::string_view order_suffix = "_order";  // tolerance tables: the order each column is reported at
+  if (column.size() > order_suffix.size() && column.ends_with(order_suffix)) {
+    const std::string base = column.substr(0, column.size() - order_suffix.size());
+    try {
+      describe_column(model, base);
+      return {column,
+              {},
+              "order at which " + base + " is reported (tolerance tables: the row's order, or " + base +
+                  "'s own stop where its error at the row's order misses the tolerance)",
+              "—",
+              R::none};
+    } catch (const std::invalid_argument&) {  // e.g. cooling_rate_first_order: look it up as is
+    }
+  }
   // Model-specific entries come first in the catalogue: the first match is the most specific.
   for (const auto& entry : column_catalogue())
     if (!entry.models.empty() && applies_to(entry, model) && column_matches(entry.name, column)) return entry;

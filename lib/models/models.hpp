@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -156,6 +157,21 @@ inline OrderValue estimate_from_doubles(double v_n, double v_n1, double v_n2) {
   if (v.defined)
     v.estimate =
         estimate_truncation(Rational::from_double(v_n), Rational::from_double(v_n1), Rational::from_double(v_n2));
+  return v;
+}
+
+/// Returns estimate_from_doubles(v_n, v_n1, v_n2) with the turning-point check of theory.md (6.3): where the
+/// two changes have opposite signs, `next()` gives v_{N+3} (NaN if there is none) and
+/// estimate_truncation_confirmed decides between an alternation and a turn.
+template <class Next>
+OrderValue estimate_from_doubles_confirmed(double v_n, double v_n1, double v_n2, Next&& next) {
+  OrderValue v = estimate_from_doubles(v_n, v_n1, v_n2);
+  if (!v.defined || v.infinite) return v;
+  const Rational r0 = Rational::from_double(v_n), r1 = Rational::from_double(v_n1), r2 = Rational::from_double(v_n2);
+  if (!changes_sign(r0, r1, r2)) return v;
+  const double v_n3 = next();
+  v.estimate = estimate_truncation_confirmed(
+      r0, r1, r2, std::isfinite(v_n3) ? std::optional<Rational>(Rational::from_double(v_n3)) : std::nullopt);
   return v;
 }
 

@@ -254,14 +254,18 @@ class SmoothInelasticModel final : public TransportModel {
         v.exact = false;
         v.defined = s0.solved && s1.solved && s2.solved;
         if (!v.defined) return v;
-        v.estimate =
-            estimate_truncation(Rational::from_double(pick(s0, k)) * scale, Rational::from_double(pick(s1, k)) * scale,
-                                Rational::from_double(pick(s2, k)) * scale);
-        if (!plateau_summable(sonine, dense) || (k != -1 && k != 2 && k != 3)) return v;
-        return summed_if_plateau(n, v, {pick(s0, k), pick(s1, k), pick(s2, k)}, order, [&] {
+        auto next = [&] {  // v_{N+3}: for the turning-point check (6.3) and the plateau sum (6.2)
           const auto& s3 = nonlinear(*hcs, d, alpha, n + 4);
           return s3.solved ? pick(s3, k) : NAN;
-        });
+        };
+        const Rational r0 = Rational::from_double(pick(s0, k)) * scale, r1 = Rational::from_double(pick(s1, k)) * scale,
+                       r2 = Rational::from_double(pick(s2, k)) * scale;
+        std::optional<Rational> r3;
+        if (changes_sign(r0, r1, r2))
+          if (const double w3 = next(); std::isfinite(w3)) r3 = Rational::from_double(w3) * scale;
+        v.estimate = estimate_truncation_confirmed(r0, r1, r2, r3);
+        if (!plateau_summable(sonine, dense) || (k != -1 && k != 2 && k != 3)) return v;
+        return summed_if_plateau(n, v, {pick(s0, k), pick(s1, k), pick(s2, k)}, order, next);
       }));
     }
     return out;
@@ -394,7 +398,12 @@ class SmoothInelasticModel final : public TransportModel {
         const auto& s1 = seq[static_cast<std::size_t>(n)];
         const auto& s2 = seq[static_cast<std::size_t>(n + 1)];
         if (!s0.solved || !s1.solved || !s2.solved) return OrderValue{{Rational(0), Rational(0), false}, false, false};
-        return estimate_from_doubles(pick(s0), pick(s1), pick(s2));
+        return estimate_from_doubles_confirmed(pick(s0), pick(s1), pick(s2), [&] {
+          // v_{N+3} for the turning-point check (6.3): none past the resolution cap
+          if (n + 3 > kTailGalerkinMaxOrder) return static_cast<double>(NAN);
+          const auto& s3 = tail_sequence(d, alpha, dense, n + 3)[static_cast<std::size_t>(n + 2)];
+          return s3.solved ? pick(s3) : static_cast<double>(NAN);
+        });
       };
       if (!order.tolerance) {
         out.push_back(choose_order(order, highest, value_at));
@@ -566,12 +575,13 @@ class SmoothInelasticModel final : public TransportModel {
         return pick_transport(s, which, d, nonlinear(hcs, d, alpha, m + 1).cooling_rate, dense, alpha);
       };
       const std::array<double, 3> w{at(*s0, n), at(*s1, n + 1), at(*s2, n + 2)};
-      const OrderValue v = estimate_from_doubles(w[0], w[1], w[2]);
-      if (!summable) return v;
-      return summed_if_plateau(n, v, w, order, [&] {
+      auto next = [&] {  // v_{N+3}: for the turning-point check (6.3) and the plateau sum (6.2)
         const auto* s3 = navier_stokes(hcs, d, alpha, n + 3, sonine, dense);
         return s3 == nullptr ? NAN : at(*s3, n + 3);
-      });
+      };
+      const OrderValue v = estimate_from_doubles_confirmed(w[0], w[1], w[2], next);
+      if (!summable) return v;
+      return summed_if_plateau(n, v, w, order, next);
     });
   }
   /// True where the plateau sum of theory.md (6.2) was checked against the tail scheme: the dilute gas in

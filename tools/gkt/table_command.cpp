@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "gkt/algebra/thread_caches.hpp"
+#include "gkt/models/tolerance_row.hpp"
 
 namespace gkt::cli {
 
@@ -59,6 +60,11 @@ std::vector<std::size_t> row_index(const Scene& scene, std::size_t r) {
   return index;
 }
 
+/// True if the scene scans to a tolerance: its tables carry a `<c>_order` column per coefficient.
+bool has_tolerance(const Scene& scene) {
+  return std::any_of(scene.axes.begin(), scene.axes.end(), [](const auto& axis) { return axis.key == "tolerance"; });
+}
+
 /// Returns row `r` of the sweep evaluated with `model`.
 RowResult compute_row(TransportModel& model, const Scene& scene, const TableOptions& options, std::size_t r) {
   const auto index = row_index(scene, r);
@@ -78,34 +84,39 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
       parameters.numbers[axis.key] = v;
     if (axis.swept && axis.key != "order") row.push_back(options.exact ? v.to_string() : format_parameter(v));
   }
-  auto values = model.evaluate(parameters, scene.coefficients, request);
+  std::vector<CoefficientValue> values;
   if (request.tolerance) {
-    // One order per row: the smallest at which every requested coefficient meets the tolerance.
-    int common = 0;
-    for (const auto& v : values) common = std::max(common, v.order);
+    // The library's row (gkt/models/tolerance_row.hpp): each coefficient at the row's order unless its error
+    // there misses the tolerance its own scan met; the `<c>_order` columns say which order each value is at.
     const Rational tolerance = *request.tolerance;
-    request.tolerance.reset();
-    request.order = common;
-    request.row_tolerance = tolerance;
-    auto flags = values;
-    values = model.evaluate(parameters, scene.coefficients, request);
-    for (std::size_t k = 0; k < values.size(); ++k) values[k].converged = flags[k].converged;
-    std::string worst;
+    ToleranceRow scanned = evaluate_tolerance_row(model, parameters, scene.coefficients, tolerance);
+    values = std::move(scanned.values);
+    request.order = scanned.order;
+    std::string worst, others;
     double worst_error = -1;
-    for (std::size_t k = 0; k < values.size(); ++k)
-      if (!values[k].converged && values[k].error.to_double() > worst_error) {
-        worst_error = values[k].error.to_double();
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      if (values[k].converged) continue;
+      const double e = values[k].defined ? values[k].error.to_double() : HUGE_VAL;
+      if (e > worst_error) {
+        if (!worst.empty()) others += (others.empty() ? "" : ", ") + worst;
+        worst_error = e;
         worst = scene.coefficients[k];
+      } else {
+        others += (others.empty() ? "" : ", ") + scene.coefficients[k];
       }
+    }
     if (!worst.empty()) {
       std::string at;
       for (std::size_t a = 0; a < scene.axes.size(); ++a)
         if (scene.axes[a].swept && scene.axes[a].key != "tolerance")
           at += scene.axes[a].key + "=" + format_parameter(scene.axes[a].values[index[a]]) + " ";
       result.tolerance_warning = at + "tolerance " + format_error(tolerance.to_double()) +
-                                 " not reached: row at order " + std::to_string(common) + ", largest estimated error " +
-                                 format_error(worst_error) + " (" + worst + ")";
+                                 " not reached: row at order " + std::to_string(scanned.order) +
+                                 ", largest estimated error " + format_error(worst_error) + " (" + worst + ")" +
+                                 (others.empty() ? "" : "; also above the tolerance: " + others);
     }
+  } else {
+    values = model.evaluate(parameters, scene.coefficients, request);
   }
   // --units physical: each coefficient (and its error) times the SI value of its reduction at
   // this row's dimension (docs/conventions.md "Physical units").
@@ -138,7 +149,9 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
     const auto& v = values[k];
     row.push_back(!v.defined ? "inf" : v.error_estimated ? format_error(v.error.to_double() * scale[k]) : "nan");
   }
-  result.order = values.empty() ? request.order : values.front().order;
+  if (request.tolerance)
+    for (const auto& v : values) row.push_back(std::to_string(v.order));  // the `<c>_order` columns
+  result.order = request.tolerance || values.empty() ? request.order : values.front().order;
   row.push_back(std::to_string(result.order));
   for (const auto& v : values) {
     RowResult::Flag flag;
@@ -263,6 +276,11 @@ Table table_header(const Scene& scene, const TableOptions& options) {
     table.columns.push_back(c + "_error");
     table.numeric.push_back(true);  // an estimate: always a decimal, also under --exact
   }
+  if (has_tolerance(scene))
+    for (const auto& c : scene.coefficients) {
+      table.columns.push_back(c + "_order");
+      table.numeric.push_back(true);
+    }
   table.columns.push_back("order");
   table.numeric.push_back(true);
   table.planned_rows = sweep_size(scene);

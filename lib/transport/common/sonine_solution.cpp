@@ -1,6 +1,7 @@
 #include "gkt/transport/common/sonine_solution.hpp"
 
 #include <array>
+#include <optional>
 #include <stdexcept>
 
 #include <flint/fmpq_mat.h>
@@ -48,6 +49,27 @@ TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1
   // The geometric tail underestimates slowly accelerating-ratio sequences by ~2 % (elastic hard
   // spheres, N = 1..25: actual/estimate = 0.98–1.00); the 5/4 margin makes it an upper bound there.
   return {v_n, Rational(5, 4) * first.abs() / (Rational(1) - ratio), true};
+}
+
+bool changes_sign(const Rational& v_n, const Rational& v_n1, const Rational& v_n2) {
+  return (v_n1 - v_n).sign() * (v_n2 - v_n1).sign() < 0;
+}
+
+TruncationEstimate estimate_truncation_confirmed(const Rational& v_n, const Rational& v_n1, const Rational& v_n2,
+                                                 const std::optional<Rational>& v_n3) {
+  if (!changes_sign(v_n, v_n1, v_n2)) return estimate_truncation(v_n, v_n1, v_n2);
+  const Rational first = (v_n1 - v_n).abs();
+  const Rational second = v_n2 - v_n1;
+  // An alternation read from two changes may be a turning point (theory.md (6.3)): a monotone approach that
+  // overshot at N + 1 and now comes back. Only a third change flipping back confirms the alternation.
+  if (!v_n3) return {v_n, first + second.abs(), false};
+  const Rational third = *v_n3 - v_n2;
+  if (third.sign() * second.sign() < 0) return estimate_truncation(v_n, v_n1, v_n2);
+  // Turned at N + 1: the remainder is Δ1 plus the monotone tail Δ2/(1 − q) after the turn; they have opposite
+  // signs, so their magnitudes' sum bounds it (5/4 as in (6.1)).
+  const Rational q = third / second;
+  if (q >= Rational(1)) return {v_n, first + second.abs() + third.abs(), false};
+  return {v_n, Rational(5, 4) * (first + second.abs() / (Rational(1) - q)), true};
 }
 
 bool alternates_on_plateau(const Rational& v_n, const Rational& v_n1, const Rational& v_n2) {

@@ -29,6 +29,19 @@ struct TruncationEstimate {
 /// (docs/theory.md §6). If |r| ≥ 1 the error is |Δ1| + |Δ2| and `converging` is false.
 TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1, const Rational& v_n2);
 
+/// Returns true if the changes v_{N+1} − v_N and v_{N+2} − v_{N+1} have opposite signs: (6.1) then reads
+/// an alternation, which a turning point mimics, and estimate_truncation_confirmed needs v_{N+3}.
+bool changes_sign(const Rational& v_n, const Rational& v_n1, const Rational& v_n2);
+
+/// Returns v_N with the error (6.3) of docs/theory.md §6: (6.1) from v_N, v_{N+1}, v_{N+2}, except where the
+/// changes Δ1 = v_{N+1} − v_N, Δ2 = v_{N+2} − v_{N+1} have opposite signs. There the alternation must be
+/// confirmed by Δ3 = v_{N+3} − v_{N+2} flipping back (then (6.1)); if Δ3 has the sign of Δ2 the sequence
+/// turned at N + 1 and the error is (5/4)(|Δ1| + |Δ2|/(1 − q)), q = Δ3/Δ2, the monotone tail after the turn
+/// (q ≥ 1: |Δ1| + |Δ2| + |Δ3|, `converging` false). Without v_{N+3} (`v_n3` empty) an unconfirmed
+/// alternation is |Δ1| + |Δ2|, `converging` false. v_n3 is read only where Δ1, Δ2 change sign.
+TruncationEstimate estimate_truncation_confirmed(const Rational& v_n, const Rational& v_n1, const Rational& v_n2,
+                                                 const std::optional<Rational>& v_n3);
+
 /// Returns true if v_N, v_{N+1}, v_{N+2} alternate as on the plateau of an asymptotic series: the
 /// signed ratio (v_{N+2} − v_{N+1})/(v_{N+1} − v_N) lies in [−2, −1/2] (docs/theory.md §6).
 bool alternates_on_plateau(const Rational& v_n, const Rational& v_n1, const Rational& v_n2);
