@@ -36,15 +36,18 @@ Eigen::VectorXd to_vector(const std::vector<double>& v) {
 }
 
 /// Adds the pair (i, j)'s part of −∫ψ_ip · (J_ij[X_i, f_j] + J_ij[f_i, X_j]) (theory.md (17.4)): the
-/// loss and gain moments of the engine with the unknown at v1 (X_i, into `self`) and at v2 (X_j,
-/// into `cross`), times the given weights.
+/// loss and gain moments of the engine with the unknown at v1 (X_i, into `self`, moments of `pair`) and at
+/// v2 (X_j, into `cross`, moments of `cross_pair`: the same pair unless a wide basis, §17.12, gives the
+/// unknown another width than f_j), times the given weights.
 void add_pair(Eigen::MatrixXd& self, Eigen::MatrixXd& cross, const CollisionPair& pair, const Rational& alpha, int rank,
-              int n_max, std::size_t i, std::size_t j, double weight_self, double weight_other) {
+              int n_max, std::size_t i, std::size_t j, double weight_self, double weight_other,
+              const CollisionPair* cross_pair = nullptr) {
   const auto block = static_cast<Eigen::Index>(n_max + 1);
+  const CollisionPair& other = cross_pair ? *cross_pair : pair;
   const auto gain_self = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1_post, rank, n_max);
   const auto loss_self = sonine_collision_moments<Rational>(pair, alpha, Slot::v1, Slot::v1, rank, n_max);
-  const auto gain_other = sonine_collision_moments<Rational>(pair, alpha, Slot::v2, Slot::v1_post, rank, n_max);
-  const auto loss_other = sonine_collision_moments<Rational>(pair, alpha, Slot::v2, Slot::v1, rank, n_max);
+  const auto gain_other = sonine_collision_moments<Rational>(other, alpha, Slot::v2, Slot::v1_post, rank, n_max);
+  const auto loss_other = sonine_collision_moments<Rational>(other, alpha, Slot::v2, Slot::v1, rank, n_max);
   const auto I = static_cast<Eigen::Index>(i) * block, J = static_cast<Eigen::Index>(j) * block;
   for (int p = 0; p <= n_max; ++p)
     for (int q = 0; q <= n_max; ++q) {
@@ -82,6 +85,20 @@ void add_weighted_pair(Eigen::MatrixXd& self, Eigen::MatrixXd& cross, const Coll
       self(I + p, I + q) -= weight_self * s_self;
       cross(I + p, J + q) -= weight_other * s_cross;
     }
+}
+
+/// Returns T with c' S_p(c'²) = Σ_k T(p, k) c S_k(c²), c' = c/√w, S = S^{(d/2)}, p, k = 0 … n_max: the
+/// scaling identity of the Laguerre polynomials, L_p^{(a)}(λx) = Σ_k C(p + a, p − k) λ^k (1 − λ)^{p−k} L_k^{(a)}(x)
+/// (λ = 1/w, a = d/2), times √λ; lower triangular, so its leading n × n block maps the leading n rows.
+Eigen::MatrixXd basis_rescaling(int d, int n_max, double w) {
+  const double lambda = 1 / w, a = d / 2.0;
+  Eigen::MatrixXd t = Eigen::MatrixXd::Zero(n_max + 1, n_max + 1);
+  for (int p = 0; p <= n_max; ++p)
+    for (int k = 0; k <= p; ++k)
+      t(p, k) = std::sqrt(lambda) *
+                std::exp(std::lgamma(p + a + 1) - std::lgamma(k + a + 1) - std::lgamma(p - k + 1.0)) *
+                std::pow(lambda, k) * std::pow(1 - lambda, p - k);
+  return t;
 }
 
 }  // namespace
@@ -149,6 +166,18 @@ struct MixtureNavierStokes::Impl {
   double nu0_ = 0;         // ν0 = nT/η0 = 4√2 c_d/(d+2) in the units n = σ̄ = m̄ = √(2T/m̄) = 1
   double zeta_ = 0;        // ζ = ζ* ν0 in those units
   std::vector<double> theta_, mass_, fraction_;  // θ_k = m_k/γ_k, m_k/m̄, x_k
+  // The vector trial functions' θ_k/w_k (θ_k unless a wide basis, theory.md §17.12) and, per species with
+  // w_k ≠ 1, the map of its test rows from the scaling θ_k to θ_k/w_k (basis_rescaling; empty when w_k = 1).
+  std::vector<double> basis_theta_;
+  std::vector<Eigen::MatrixXd> row_rescaling_;
+  /// Rows of species i of a vector source in the tests of its basis (a wide basis, §17.12): T_i v_i.
+  void rescale_rows(Eigen::VectorXd& v, int n) const {
+    for (std::size_t i = 0; i < row_rescaling_.size(); ++i)
+      if (row_rescaling_[i].size() > 0) {
+        const auto I = static_cast<Eigen::Index>(i) * n;
+        v.segment(I, n) = (row_rescaling_[i].topLeftCorner(n, n) * v.segment(I, n)).eval();
+      }
+  }
   // Rows (i, p), columns (k, q), index i·n + p. The vector operator is kept in two parts: the
   // species-diagonal one (X_i against f_j, weight x_j) and the cross one (f_i against X_j) without its
   // weight, x_i per particle of the unknown's species or x_j per particle of the row's (17.4), (17.13).
@@ -177,6 +206,18 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
     : dimension_(mixture.dimension), max_order_(max_order), s_(mixture.size()) {
   mixture.validate();
   if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
+  const std::vector<double>& width = reference.basis_width;
+  if (!width.empty()) {
+    if (width.size() != s_)
+      throw std::invalid_argument("basis_width: needs one value per species (" + std::to_string(s_) + "), got " +
+                                  std::to_string(width.size()));
+    for (double w : width)
+      if (!(w >= 0.6 && w <= 16)) throw std::invalid_argument("basis_width: every w_i must be in [0.6, 16]");
+    if (reference.scheme != MixtureHcsScheme::maxwellian)
+      throw std::invalid_argument("basis_width: needs the Maxwellian reference (reference_state = \"maxwellian\")");
+    if (mixture.packing_fraction > 0)
+      throw std::invalid_argument("basis_width: dilute gas only (packing_fraction = 0)");
+  }
   const bool with_cumulants = reference.scheme != MixtureHcsScheme::maxwellian;
   state_ = mixture_cooling_state(mixture, reference.scheme, reference.hcs_order);
   if (with_cumulants) {
@@ -200,6 +241,9 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
     theta_.push_back(mass_[k] / state_.temperature_ratio[k]);
     fraction_.push_back(mixture.species[k].fraction);
     diameter_moment += fraction_[k] * std::pow(mixture.species[k].diameter / mixture.mean_diameter(), d);
+    const double w = width.empty() ? 1.0 : width[k];
+    basis_theta_.push_back(theta_[k] / w);
+    row_rescaling_.push_back(w == 1 ? Eigen::MatrixXd() : basis_rescaling(d, max_order + 1 - 1, w));
   }
   nu0_ = unit_reference_gas(d).collision_frequency;
   zeta_ = state_.cooling_rate * nu0_;
@@ -234,6 +278,24 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
                           cumulants_[i], cumulants_[j]);
         add_weighted_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
                           rate * fraction_[i], cumulants_[i], cumulants_[j]);
+      } else if (!width.empty()) {
+        // Wide basis (theory.md §17.12): the unknown X_i (self part) at θ_i/w_i against f_j at θ_j, tests in
+        // the unknown's scaling; f_i at θ_i against the unknown X_j at θ_j/w_j (cross part), tests in θ_i's
+        // scaling, mapped to θ_i/w_i's below. Each part carries its pair's relative thermal speed.
+        auto pair_of = [&](double theta_1, double theta_2) {
+          const Rational q = detail::nearby_rational(std::sqrt(theta_1 / theta_2), 1L << 26);
+          return CollisionPair{d, mass_ratio, Rational(1), q * q, Rational(1)};
+        };
+        const CollisionPair self_pair = pair_of(basis_theta_[i], theta_[j]);
+        const CollisionPair cross_pair = pair_of(theta_[i], basis_theta_[j]);
+        const double unit = std::pow(sigma, d - 1) * c_d * chi[pair_index(i, j)];
+        Eigen::MatrixXd unused = Eigen::MatrixXd::Zero(vector_self_.rows(), vector_self_.cols());
+        add_pair(vector_self_, unused, self_pair, alpha, 1, nv - 1, i, j,
+                 unit * std::sqrt(1 / basis_theta_[i] + 1 / theta_[j]) * fraction_[j], 0.0);
+        add_pair(unused, vector_cross_, cross_pair, alpha, 1, nv - 1, i, j, 0.0,
+                 unit * std::sqrt(1 / theta_[i] + 1 / basis_theta_[j]));
+        add_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
+                 rate * fraction_[i]);
       } else {
         add_pair(vector_self_, vector_cross_, pair, alpha, 1, nv - 1, i, j, rate * fraction_[j], rate);
         add_pair(tensor_operator_, tensor_operator_, pair, alpha, 2, nt - 1, i, j, rate * fraction_[j],
@@ -251,6 +313,10 @@ MixtureNavierStokes::Impl::Impl(const Mixture& mixture, int max_order, const Mix
         transfer_.push_back(pair_transfer_moments(d, mass_ratio, r, alpha, ns - 1, mass_[i], theta_[j]));
       }
     }
+  for (std::size_t i = 0; i < s_; ++i)  // the cross rows of a wide species into its basis's tests
+    if (row_rescaling_[i].size() > 0)
+      vector_cross_.middleRows(static_cast<Eigen::Index>(i) * nv, nv) =
+          (row_rescaling_[i] * vector_cross_.middleRows(static_cast<Eigen::Index>(i) * nv, nv)).eval();
   const auto vp = detail::rounded(detail::vector_pieces(d, nv - 1, 0));
   const auto tp = detail::rounded(detail::tensor_pieces(d, nt - 1, 0));
   vector_d_ = to_matrix(vp.d);
@@ -316,7 +382,7 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
     k->row(major * n).setZero();
     for (Eigen::Index j = 0; j < S; ++j) {
       const auto J = static_cast<std::size_t>(j);
-      (*k)(major * n, j * n) = (per_particle ? fraction_[J] : 1.0) * mass_[J] / std::sqrt(theta_[J]);
+      (*k)(major * n, j * n) = (per_particle ? fraction_[J] : 1.0) * mass_[J] / std::sqrt(basis_theta_[J]);
     }
   }
   VectorModes out;
@@ -339,6 +405,7 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
                                                     (cumulant_term(cs.temperature, cumulants_[i], p) +
                                                      theta_[i] * pressure_ * cumulant_term(cs.drift, cumulants_[i], p));
   if (dense_) sa += transfer.heat;
+  rescale_rows(sa, n);
   sa(major * n) = 0;
   out.heat = ka.partialPivLu().solve(sa);
   const auto lu = kb.partialPivLu();
@@ -351,10 +418,11 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
     for (std::size_t i = 0; i < s_; ++i) {
       const auto I = static_cast<Eigen::Index>(i) * n;
       const double g = sensitivity_.temperature_ratio[i * s_ + j], x = per_particle ? fraction_[j] : fraction_[i];
-      sb.segment(I, n) =
+      Eigen::VectorXd source =
           -1 / std::sqrt(theta_[i]) *
-              ((i == j ? 1.0 : 0.0) * mv.col(0) + x * (g * (mv.col(0) - mv.col(1)) - theta_[i] * dp * mv.col(0))) +
-          dzeta * (mv * out.heat.segment(I, n));
+          ((i == j ? 1.0 : 0.0) * mv.col(0) + x * (g * (mv.col(0) - mv.col(1)) - theta_[i] * dp * mv.col(0)));
+      if (row_rescaling_[i].size() > 0) source = (row_rescaling_[i].topLeftCorner(n, n) * source).eval();
+      sb.segment(I, n) = source + dzeta * (mv * out.heat.segment(I, n));
       if (!cumulants_.empty())
         for (int p = 0; p < n; ++p) {
           const std::vector<double>& a = cumulants_[i];
@@ -386,6 +454,7 @@ MixtureNavierStokes::Impl::VectorModes MixtureNavierStokes::Impl::vector_modes(i
           sf(static_cast<Eigen::Index>(i) * n + p) -= 2 * std::sqrt(theta_[i]) * fraction_[i] *
                                                       ((i == j ? 1 / mass_[i] : 0.0) - fraction_[j]) *
                                                       cumulant_term(cs.drift, cumulants_[i], p);
+    rescale_rows(sf, n);
     sf(major * n) = 0;
     out.force.push_back(lf.solve(sf));
   }
@@ -568,6 +637,9 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
   if (order < 1 || order > max_order_)
     throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(max_order_) + "]");
   const bool published = truncation == MixtureTruncation::published;
+  if (published &&
+      std::any_of(row_rescaling_.begin(), row_rescaling_.end(), [](const auto& t) { return t.size() > 0; }))
+    throw std::invalid_argument("basis_width: the published (GDH) truncation is defined in the standard basis only");
   if (published && order != 1)
     throw std::invalid_argument("order: the published (GDH) first Sonine truncation exists at order = 1 only, got " +
                                 std::to_string(order));
@@ -598,14 +670,14 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
   out.dufour.assign(s, 0.0);
   // Number flux of species i of a vector-mode solution: ∫V·X_i/d = θ_i^{−1/2} M(0,0) φ̃_i0/d (17.9).
   auto number_flux = [&](const Eigen::VectorXd& v, std::size_t i) {
-    return vector_m_(0, 0) / (d * std::sqrt(theta_[i])) * v(static_cast<Eigen::Index>(i) * n);
+    return vector_m_(0, 0) / (d * std::sqrt(basis_theta_[i])) * v(static_cast<Eigen::Index>(i) * n);
   };
   const Eigen::VectorXd fv = vector_flux_.head(n);
   double lambda = 0;
   for (std::size_t i = 0; i < s; ++i) {
     const auto I = static_cast<Eigen::Index>(i) * n;
     out.thermal_diffusion[i] = -mass_[i] * number_flux(a, i) / d0;  // (17.9)
-    lambda -= mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(a.segment(I, n)) / (2 * d * temperature);
+    lambda -= mass_[i] * std::pow(basis_theta_[i], -1.5) * fv.dot(a.segment(I, n)) / (2 * d * temperature);
   }
   // Collisional heat flux (18.9): −(1/(2d)) Σ_ij L R [x_i ⟨⟨(σ̂·c2)ΔE_1 X_j⟩⟩ + x_j ⟨⟨(σ̂·c1)ΔE_1 X_i⟩⟩] from
   // f0 f^(1), and −(1/(4d)) Σ_ij L² R x_i x_j ⟨⟨ΔE_1 (∂ ln f_j − ∂ ln f_i)⟩⟩ from f0 ∂f0.
@@ -644,7 +716,7 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
     for (std::size_t i = 0; i < s; ++i) {
       const auto I = static_cast<Eigen::Index>(i) * n;
       out.mutual_diffusion[i * s + j] = -number_flux(b, i) / (mass_[j] * d0);  // (17.9)
-      heat += 0.5 * mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(b.segment(I, n)) / d;
+      heat += 0.5 * mass_[i] * std::pow(basis_theta_[i], -1.5) * fv.dot(b.segment(I, n)) / d;
     }
     if (dense_) {
       heat += collisional_heat(b);
@@ -678,7 +750,8 @@ MixtureTransportValues MixtureNavierStokes::Impl::coefficients(int order, Mixtur
     const Eigen::VectorXd& e = modes.force[j];
     double heat = 0;
     for (std::size_t i = 0; i < s; ++i)
-      heat += 0.5 * mass_[i] * std::pow(theta_[i], -1.5) * fv.dot(e.segment(static_cast<Eigen::Index>(i) * n, n)) / d;
+      heat +=
+          0.5 * mass_[i] * std::pow(basis_theta_[i], -1.5) * fv.dot(e.segment(static_cast<Eigen::Index>(i) * n, n)) / d;
     if (dense_) heat += collisional_heat(e);
     out.heat_mobility[j] = -heat / kappa0;
   }
@@ -761,8 +834,8 @@ void MixtureNavierStokes::Impl::species_drift(int order, const Eigen::MatrixXd& 
   std::vector<std::vector<double>> density(s_, std::vector<double>(s_));
   for (std::size_t i = 0; i < s_; ++i) {
     const auto I = static_cast<Eigen::Index>(i) * n;
-    heat[i] = modes.heat(I) / std::sqrt(theta_[i]);
-    for (std::size_t j = 0; j < s_; ++j) density[i][j] = modes.density[j](I) / std::sqrt(theta_[i]);
+    heat[i] = modes.heat(I) / std::sqrt(basis_theta_[i]);
+    for (std::size_t j = 0; j < s_; ++j) density[i][j] = modes.density[j](I) / std::sqrt(basis_theta_[i]);
   }
   // w_i = (1/d) M(0,0) × the specific fluxes, in units of D0.
   const double to_drift = vector_m_(0, 0) / d / unit_reference_gas(d).self_diffusion;

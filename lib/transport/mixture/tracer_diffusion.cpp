@@ -43,6 +43,8 @@ TracerDiffusion::TracerDiffusion(const Tracer& tracer, int max_order, MixtureRef
     : max_order_(max_order) {
   tracer.validate();
   if (max_order < 1) throw std::invalid_argument("order: must be >= 1");
+  if (!reference.basis_width.empty())
+    throw std::invalid_argument("basis_width: MixtureNavierStokes only (the tracer's basis is the standard one)");
   const MixtureCoolingState hcs = mixture_cooling_state(as_mixture(tracer), reference.scheme, reference.hcs_order);
   const bool with_cumulants = reference.scheme != MixtureHcsScheme::maxwellian;
   if (with_cumulants && !hcs.solved)

@@ -40,6 +40,11 @@ struct MixtureReference {
   MixtureHcsScheme scheme = MixtureHcsScheme::maxwellian;
   /// K: the cumulants a_2 … a_K (an integer in [2, 6]); ignored by the Maxwellian reference.
   int hcs_order = 2;
+  /// Per species w_i = T_basis,i/T_i ∈ [0.6, 16]: the vector trial functions of species i are
+  /// c' S_q(c'²) over the Maxwellian at w_i T_i, c' = c_i/√w_i (theory.md §17.12, "wide basis"); empty
+  /// (the default) or all 1 is the standard basis. MixtureNavierStokes only, dilute gas with the
+  /// Maxwellian reference only (anything else is refused).
+  std::vector<double> basis_width = {};
 };
 
 /// The mixture HCS.
