@@ -31,11 +31,11 @@ constexpr int kBadInput = 2;
 constexpr int kMaxJobs = 64;  ///< --jobs cap: far above the cores of a workstation, a guard against typos
 
 /// Returns `message` as one line of bounded length: control characters (a newline in a value)
-/// become spaces and anything beyond 400 characters is cut with "…".
+/// become spaces and anything beyond 1000 characters is cut with "…" (room for the longest list of valid names).
 std::string one_line(std::string message) {
   for (char& c : message)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-  constexpr std::size_t kMaxLength = 400;
+  constexpr std::size_t kMaxLength = 1000;
   if (message.size() > kMaxLength) {
     std::size_t cut = kMaxLength;
     while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
