@@ -617,3 +617,51 @@ TEST(ModelFacade, ToleranceRowReportsEachColumnHonestly) {
   EXPECT_FALSE(tight.values[1].converged);
   EXPECT_FALSE(tight.values[0].converged);  // steady's best, 1/16000, misses 1/20000 too
 }
+
+namespace {
+/// Two scripted coefficients of which "short" takes orders 1 … 2 only (refused beyond, as the rough HCS
+/// columns are beside η*): "long" meets the tolerance at order 4, "short" at order 2.
+class ShortRangeModel final : public gkt::TransportModel {
+ public:
+  [[nodiscard]] std::string name() const override { return "short-range"; }
+  [[nodiscard]] std::string description() const override { return "test"; }
+  [[nodiscard]] std::vector<std::string> coefficient_names() const override { return {"long", "short"}; }
+  [[nodiscard]] std::vector<gkt::ParameterSpec> parameters() const override { return {}; }
+  [[nodiscard]] int max_order() const override { return 4; }
+  std::vector<gkt::CoefficientValue> evaluate(const ParameterPoint&, const std::vector<std::string>& names,
+                                              const gkt::OrderRequest& order) override {
+    std::vector<gkt::CoefficientValue> out;
+    for (const auto& c : names) {
+      const int highest = c == "short" ? 2 : 4;
+      auto at = [&](int n) {
+        return gkt::CoefficientValue{Rational(n), Rational(1, 10 * n * n * n), n, true, true, true};
+      };
+      if (!order.tolerance) {
+        if (order.order > highest) throw std::invalid_argument("order: " + c + " takes orders 1 to 2");
+        out.push_back(at(order.order));
+        continue;
+      }
+      int n = 1;
+      while (n < highest && !(at(n).error < *order.tolerance)) ++n;
+      out.push_back(at(n));
+    }
+    return out;
+  }
+};
+}  // namespace
+
+// A row whose order lies beyond one coefficient's range (the rough HCS columns stop at order 3, η* goes
+// on): that coefficient is reported at its own stop, the others at the row's order — not an error (before,
+// `gkt table` with cooling_rate and shear_viscosity of model rough at a tolerance failed on the second pass).
+TEST(ModelFacade, ToleranceRowKeepsACoefficientWhoseRangeEndsBelowTheRowOrder) {
+  ShortRangeModel model;
+  const Rational tolerance(1, 500);  // long: 1e-1, 1.25e-2, 3.7e-3, 1.6e-3 → 4; short: → 2 (1.25e-2, not met)
+  const gkt::ToleranceRow row = gkt::evaluate_tolerance_row(model, {}, {"long", "short"}, tolerance);
+  EXPECT_EQ(row.order, 4);
+  ASSERT_EQ(row.values.size(), 2U);
+  EXPECT_EQ(row.values[0].order, 4);
+  EXPECT_TRUE(row.values[0].converged);
+  EXPECT_EQ(row.values[1].order, 2);
+  EXPECT_EQ(row.values[1].value, Rational(2));
+  EXPECT_FALSE(row.values[1].converged);  // its best, 1/80, misses the tolerance: flagged
+}

@@ -24,7 +24,8 @@ struct ToleranceRow {
 /// row's order (the largest of their own stops, re-evaluated there with OrderRequest::row_tolerance) if its
 /// estimated error there converges below the tolerance, else at its own stop if that met the tolerance
 /// (e.g. a mode that breaks down between the two orders, or a value at a turning point: theory.md §10.6),
-/// else at the row's order flagged not converged.
+/// else at the row's order flagged not converged. A coefficient whose order range ends below the row's order
+/// (the model refuses it there with std::invalid_argument) is reported at its own stop.
 ToleranceRow evaluate_tolerance_row(TransportModel& model, const ParameterPoint& point,
                                     const std::vector<std::string>& coefficients, const Rational& tolerance);
 
