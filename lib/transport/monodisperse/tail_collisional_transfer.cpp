@@ -2,6 +2,7 @@
 // docs/theory.md §15.8). Every integrand is written through X = g·σ̂ and XY = (g·σ̂)(G·σ̂): with
 // H = (1+α) X σ̂, H·v = (1+α) X (σ̂·v) and X(σ̂·c1) = XY + X²/2, X(σ̂·c2) = XY − X²/2 (c1,2 = G ± g/2).
 #include "transport/monodisperse/tail_collisional_transfer.hpp"
+#include "transport/monodisperse/tail_quadrature.hpp"
 
 #include <algorithm>
 #include <array>
@@ -16,42 +17,6 @@ namespace gkt::detail {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-/// Gauss–Legendre rule on [0, 1] (nodes, weights).
-struct Rule {
-  std::vector<double> x, w;
-};
-
-Rule gauss_legendre(int n) {
-  Rule r;
-  r.x.resize(static_cast<std::size_t>(n));
-  r.w.resize(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    long double z = std::cos(static_cast<long double>(kPi) * (i + 0.75L) / (n + 0.5L)), dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      long double p1 = 1, p2 = 0;
-      for (int j = 0; j < n; ++j) {
-        const long double p3 = p2;
-        p2 = p1;
-        p1 = ((2 * j + 1) * z * p2 - j * p3) / (j + 1);
-      }
-      dp = n * (z * p1 - p2) / (z * z - 1);
-      const long double step = p1 / dp;
-      z -= step;
-      if (std::fabs(step) < 1e-19L) break;
-    }
-    r.x[static_cast<std::size_t>(i)] = static_cast<double>(0.5L * (1 - z));
-    r.w[static_cast<std::size_t>(i)] = static_cast<double>(1.0L / ((1 - z * z) * dp * dp));
-  }
-  return r;
-}
-
-/// S^{(m)}_p(x), p = 0 … p_max (theory.md (1.1)).
-void sonine(int p_max, double m, double x, double* out) {
-  out[0] = 1;
-  if (p_max >= 1) out[1] = 1 + m - x;
-  for (int n = 1; n < p_max; ++n) out[n + 1] = ((2 * n + 1 + m - x) * out[n] - (n + m) * out[n - 1]) / (n + 1);
-}
 
 /// The σ̂ integrals at one node, the points gathered in blocks whose Sonine recurrences run side by side.
 class TransferIntegral {
@@ -81,9 +46,9 @@ class TransferIntegral {
     x1_ = x1;
     x2_ = x2;
     const double m = d_ / 2.0 - 1;
-    sonine(p_max_, m, x1, loss_s_.data());
-    sonine(p_max_, m + 1, x1, loss_v_.data());
-    sonine(p_max_, m + 2, x1, loss_t_.data());
+    sonine_values(p_max_, m, x1, loss_s_.data());
+    sonine_values(p_max_, m + 1, x1, loss_v_.data());
+    sonine_values(p_max_, m + 2, x1, loss_t_.data());
     std::fill(sums_.begin(), sums_.end(), 0.0);
     scalars_.fill(0.0);
     loss_shear_ = loss_heat_ = loss_scalar_ = 0;

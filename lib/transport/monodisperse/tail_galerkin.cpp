@@ -26,6 +26,7 @@
 #include "gkt/operators/collisional_transfer.hpp"
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "transport/monodisperse/tail_collisional_transfer.hpp"
+#include "transport/monodisperse/tail_quadrature.hpp"
 
 namespace gkt {
 
@@ -41,41 +42,9 @@ constexpr int kWeightPasses = 3;     // A of the weight taken from the previous 
 /// (2 p_max + 40 changes nothing above 1e-12 at α = 0.5).
 int theta_nodes(int p_max) { return 2 * p_max + 16; }
 
-/// Gauss–Legendre rule on [0, 1]: nodes and weights.
-struct Rule {
-  std::vector<double> x, w;
-};
-
-Rule gauss_legendre(int n) {
-  Rule r;
-  r.x.resize(static_cast<std::size_t>(n));
-  r.w.resize(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    long double z = std::cos(static_cast<long double>(kPi) * (i + 0.75L) / (n + 0.5L)), dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      long double p1 = 1, p2 = 0;
-      for (int j = 0; j < n; ++j) {
-        const long double p3 = p2;
-        p2 = p1;
-        p1 = ((2 * j + 1) * z * p2 - j * p3) / (j + 1);
-      }
-      dp = n * (z * p1 - p2) / (z * z - 1);
-      const long double step = p1 / dp;
-      z -= step;
-      if (std::fabs(step) < 1e-19L) break;
-    }
-    r.x[static_cast<std::size_t>(i)] = static_cast<double>(0.5L * (1 - z));
-    r.w[static_cast<std::size_t>(i)] = static_cast<double>(1.0L / ((1 - z * z) * dp * dp));
-  }
-  return r;
-}
-
-/// Sonine polynomials S_index^(p)(x), p = 0 … p_max ([chapman1970] §7.5; theory.md (1.1)).
-void sonine_values(int p_max, double index, double x, double* out) {
-  out[0] = 1;
-  if (p_max >= 1) out[1] = 1 + index - x;
-  for (int n = 1; n < p_max; ++n) out[n + 1] = ((2 * n + 1 + index - x) * out[n] - (n + index) * out[n - 1]) / (n + 1);
-}
+using detail::gauss_legendre;
+using detail::Rule;
+using detail::sonine_values;
 
 /// x S_p'(x) = p S_p − (p + index) S_{p−1} (theory.md (1.1)).
 double x_derivative(const std::vector<double>& s, int p, double index) {
