@@ -296,6 +296,18 @@ TEST(RoughSpinFieldStability, CoolingSlopeAgainstTheMaxwellianRates) {
   }
 }
 
+// Disks at α = 0.1, β = 0: the first-Sonine κ* ≤ μ* (theory.md §19.15, "not to be trusted"), det M₄ never vanishes
+// and a real mode grows at every k*: both closures report k∥c* = 0 (no crossing) and the same k⊥c*.
+TEST(RoughSpinFieldStability, NoCrossingWhereConductivityIsBelowTheDensityHeatCoefficient) {
+  const auto in = input({2, Rational(1, 10), Rational(0), Rational(1, 2)});
+  ASSERT_LE(in.thermal_conductivity, in.density_heat_coefficient);
+  const auto three = gkt::rough_hcs_stability(in), four = gkt::rough_hcs_stability_with_spin(in);
+  EXPECT_EQ(three.heat_wavenumber, 0);
+  EXPECT_EQ(four.heat_wavenumber, 0);
+  EXPECT_EQ(four.shear_wavenumber, three.shear_wavenumber);
+  for (double k : {0.5, 5.0, 50.0}) EXPECT_GT(gkt::rough_longitudinal_modes_with_spin(in, k)[0].real(), 0) << k;
+}
+
 TEST(RoughSpinFieldStability, RefusesWhatItCannotUse) {
   auto in = input({3, Rational(9, 10), Rational(1, 2), Rational(2, 5)});
   in.relaxation_rate = 0;

@@ -113,8 +113,10 @@ HcsStability rough_hcs_stability_with_spin(const RoughStabilityInput& in) {
   check_with_spin(in);
   HcsStability out;
   out.shear_wavenumber = shear_critical_wavenumber(in.cooling_rate, in.shear_viscosity);
-  // Without cooling (ζ* ≤ 0: α = β = 1) no mode grows: the scan would only see round-off.
-  if (!(in.cooling_rate > 0)) {
+  // Without cooling (ζ* ≤ 0: α = β = 1) no mode grows: the scan would only see round-off. With κ* ≤ μ* (disks at
+  // α ≤ 0.3, first Sonine; theory.md §19.15) det M₄ = −Γ* det M₃ never vanishes and a real mode grows at every k*:
+  // no crossing, reported as 0 like the three-field value.
+  if (!(in.cooling_rate > 0) || !(in.thermal_conductivity > in.density_heat_coefficient)) {
     out.critical_length = critical_length(out.shear_wavenumber);
     return out;
   }

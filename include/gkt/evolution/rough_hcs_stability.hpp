@@ -57,8 +57,8 @@ std::array<std::complex<double>, 3> rough_longitudinal_modes(const RoughStabilit
 
 /// Returns the critical values with T_r as a fourth field (theory.md §19.15.1): k⊥c* = √(ζ*/η*) as before (the
 /// transverse modes do not couple to the scalar δ), k∥c* the largest k* at which an eigenvalue of the 4×4
-/// matrix (19.36) crosses Re λ = 0 (0 if none above k* = 0), located by a scan and bisection to 1e-12
-/// relative, and L_c* = 2π/max(k⊥c*, k∥c*). Throws as rough_longitudinal_matrix_with_spin.
+/// matrix (19.36) crosses Re λ = 0 (0 if none above k* = 0, and where κ* ≤ μ*: a mode grows at every k*), located by a
+/// scan and bisection to 1e-12 relative, and L_c* = 2π/max(k⊥c*, k∥c*). Throws as rough_longitudinal_matrix_with_spin.
 HcsStability rough_hcs_stability_with_spin(const RoughStabilityInput& in);
 
 /// Returns k⊥c* = √(ζ*/η*), k∥c* of theory.md (19.32) (0 if the heat mode never grows) and
