@@ -1061,6 +1061,39 @@ TEST(CliRoughStability, ColumnsLimitsAndNoRootRegion) {
   EXPECT_GT(std::stod(w[1][2]), 0) << walton.out;
 }
 
+// `rotational_temperature_closure = "field"` (theory.md §19.15.1): T_r as a fourth field gives the three-field
+// critical values (det M4 = −Γ* det M3, (19.38); to 1e-10, the bisection's accuracy) at strong and medium roughness,
+// spheres and disks; a bad value and the field closure beyond the first approximation are refused with one line.
+TEST(CliRoughStability, RotationalTemperatureAsAField) {
+  const std::string base =
+      "stability " + scene_path("rough_stability.toml") + " --set 'alpha=[0.9, 0.7]' --set 'beta=[0.5, -0.5, 0]'";
+  for (const std::string dims : {"", " --set dimension=2 --set moment_of_inertia=0.5"}) {
+    const CliRun slaved = run_gkt(base + dims);
+    const CliRun field = run_gkt(base + dims + " --set 'rotational_temperature_closure=\"field\"'");
+    ASSERT_EQ(slaved.status, 0) << slaved.err;
+    ASSERT_EQ(field.status, 0) << field.err;
+    const auto a = parse_csv(slaved.out), b = parse_csv(field.out);
+    ASSERT_EQ(a.size(), 7u);
+    ASSERT_EQ(a[0], b[0]);
+    for (std::size_t r = 1; r < a.size(); ++r)
+      for (std::size_t c = 2; c < 5; ++c) {
+        const double x = std::stod(a[r][c]), y = std::stod(b[r][c]);
+        EXPECT_GT(x, 0) << r << c;
+        EXPECT_NEAR(y, x, 1e-10 * x) << dims << r << c;
+      }
+  }
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {" --set 'rotational_temperature_closure=\"free\"'", "rotational_temperature_closure: must be one of"},
+           {" --set 'rotational_temperature_closure=\"field\"' --set order=2",
+            "rotational_temperature_closure: \"field\" needs order = 1"}}) {
+    const CliRun bad = run_gkt(base + args);
+    EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_EQ(bad.err.find('\n'), bad.err.size() - 1) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+  }
+}
+
 // The rough-walton model (theory.md §19.10): friction = 1e6 reproduces the rough model with beta = beta0
 // (Maxwellian), and bad input is refused with one line.
 TEST(CliRoughWalton, ConstantBetaLimitAndBadInput) {

@@ -56,7 +56,8 @@ const std::vector<std::string> kRoughTableColumns{"rotational_temperature_ratio"
 /// Returns the HCS stability of the constant-β gas from its first-Sonine coefficients at the Maxwellian
 /// θ, ζ* (the state they are computed about, whatever `hcs`; theory.md §19.15). At β = −1 the spin
 /// decouples: the smooth gas's translational equations with the translational κ*, μ*.
-HcsStability rough_stability(int d, const Rational& alpha, const Rational& beta, const Rational& kappa) {
+HcsStability rough_stability(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                             bool rotational_field = false) {
   const RoughCoolingState m = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
   const RoughThermalConductivity q = rough_thermal_conductivity(d, alpha, beta, kappa);
   const RoughScalarResponse b = rough_bulk_viscosity(d, alpha, beta, kappa);
@@ -72,7 +73,9 @@ HcsStability rough_stability(int d, const Rational& alpha, const Rational& beta,
   in.thermal_conductivity = decoupled ? q.translational : q.total;
   in.density_heat_coefficient = decoupled ? q.density_heat_translational : q.density_heat_total;
   in.cooling_rate_first_order = b.cooling_rate_first_order;
-  return rough_hcs_stability(in);
+  in.relaxation_rate = b.relaxation_rate;  // Γ* of (19.17), NaN at β = −1: not used there
+  // rotational_temperature_closure = "field": T_r as a fourth field (theory.md §19.15.1, (19.36)).
+  return rotational_field ? rough_hcs_stability_with_spin(in) : rough_hcs_stability(in);
 }
 
 /// Returns the HCS stability of the constant-β gas about a reference state with temperature ratio θ and cooling
@@ -230,6 +233,11 @@ class RoughModel final : public TransportModel {
                     "cooling rate and cumulants a_pq, p + q <= hcs_order; the error adds the change from "
                     "hcs_order - 1 (2: from the Maxwellian reference)",
                     {"maxwellian", "hcs"}));
+    specs.push_back(choice_spec("rotational_temperature_closure",
+                                "stability columns: T_rot slaved to T in the normal solution (Navier-Stokes, "
+                                "default), or T_rot a fourth field relaxing at the Maxwellian rate (first "
+                                "approximation only: order = 1, reference_state = maxwellian)",
+                                {"slaved", "field"}));
     specs.push_back({"hcs_order",
                      ParameterSpec::Kind::integer,
                      Rational(2),
@@ -300,6 +308,14 @@ class RoughModel final : public TransportModel {
     const auto is_critical = [&critical](const std::string& c) {
       return std::find(critical.begin(), critical.end(), c) != critical.end();
     };
+    // T_r as a fourth field (theory.md §19.15.1) needs the Maxwellian relaxation rate Γ* of (19.17): the first
+    // approximation about the Maxwellian HCS only.
+    const bool rotational_field = SchemaPoint(specs, point).choice("rotational_temperature_closure") == "field";
+    if (rotational_field && (!first || cumulant_reference) &&
+        std::any_of(coefficients.begin(), coefficients.end(), is_critical))
+      throw std::invalid_argument(
+          "rotational_temperature_closure: \"field\" needs order = 1 without tolerance and reference_state = "
+          "\"maxwellian\" (the relaxation rate of (19.17) is a first approximation)");
     for (const auto& name : coefficients) {
       if (is_orientation_column(name)) {
         if (d != 3)
@@ -442,7 +458,7 @@ class RoughModel final : public TransportModel {
         continue;
       }
       if (is_critical(name)) {
-        if (!stability) stability = rough_stability(d, alpha, beta, kappa);  // theory.md §19.15
+        if (!stability) stability = rough_stability(d, alpha, beta, kappa, rotational_field);  // theory.md §19.15
         out.push_back(rough_stability_value(*stability, name));
         continue;
       }

@@ -26,6 +26,9 @@ struct RoughStabilityInput {
   double thermal_conductivity = 1;      ///< κ/κ0(T_t), q = −κ∇T_t − μ∇n, q the total energy flux
   double density_heat_coefficient = 0;  ///< nμ/(T_tκ0(T_t))
   double cooling_rate_first_order = 0;  ///< ζ_U, ζ = ζ⁽⁰⁾ + ζ_U∇·u (theory.md (19.19))
+  /// Γ* = θ∂(ζ_r* − ζ_t*)/∂θ at fixed T_t (theory.md (19.17)): the relaxation rate of θ; used only by the
+  /// four-field analysis (rough_longitudinal_matrix_with_spin), where it must be > 0 unless θ = +∞.
+  double relaxation_rate = 0;
 };
 
 /// Returns the translational share of the heat capacity, d/(d + d_rθ) = (d/(d + d_r)) T_t/T on the
@@ -35,6 +38,28 @@ double rough_translational_share(int dimension, double temperature_ratio);
 /// Returns the 3×3 matrix M(k*) of the longitudinal modes (ρ, δT/T, w∥) of the rough gas, ∂_τ X = M X
 /// (theory.md (19.31)); the d − 1 transverse modes obey (14.1) unchanged.
 std::array<std::array<std::complex<double>, 3>, 3> rough_longitudinal_matrix(const RoughStabilityInput& in, double k);
+
+/// Returns the 4×4 matrix M(k*) of the longitudinal modes with the temperature split as a fourth field,
+/// X = (ρ, δT/T, w∥, δ), δ = ln(T_r/(θT_t)), ∂_τ X = M X (theory.md (19.36)); T_r is not slaved, so the
+/// bulk viscosity and ζ_U of `in` enter only through the split (ζ_U gives ∂ζ*/∂δ, (19.37)). At θ = +∞ (the
+/// spin decoupled) the fourth field is δT_r/T_r, decoupled, with eigenvalue 0 (theory.md §19.15.1).
+/// Throws std::invalid_argument naming the field as rough_hcs_stability, or if Γ* is not > 0 at finite θ.
+std::array<std::array<std::complex<double>, 4>, 4> rough_longitudinal_matrix_with_spin(const RoughStabilityInput& in,
+                                                                                       double k);
+
+/// Returns the four eigenvalues of rough_longitudinal_matrix_with_spin(in, k) (growth rates in units of
+/// ν0(T_t) of the HCS; Re > 0 grows), ordered by decreasing real part.
+std::array<std::complex<double>, 4> rough_longitudinal_modes_with_spin(const RoughStabilityInput& in, double k);
+
+/// Returns the three eigenvalues of rough_longitudinal_matrix(in, k) (units of ν0(T_t); Re > 0 grows),
+/// ordered by decreasing real part.
+std::array<std::complex<double>, 3> rough_longitudinal_modes(const RoughStabilityInput& in, double k);
+
+/// Returns the critical values with T_r as a fourth field (theory.md §19.15.1): k⊥c* = √(ζ*/η*) as before (the
+/// transverse modes do not couple to the scalar δ), k∥c* the largest k* at which an eigenvalue of the 4×4
+/// matrix (19.36) crosses Re λ = 0 (0 if none above k* = 0, and where κ* ≤ μ*: a mode grows at every k*), located by a
+/// scan and bisection to 1e-12 relative, and L_c* = 2π/max(k⊥c*, k∥c*). Throws as rough_longitudinal_matrix_with_spin.
+HcsStability rough_hcs_stability_with_spin(const RoughStabilityInput& in);
 
 /// Returns k⊥c* = √(ζ*/η*), k∥c* of theory.md (19.32) (0 if the heat mode never grows) and
 /// L_c* = 2π/max(k⊥c*, k∥c*) (+∞ when both are 0). Throws std::invalid_argument naming the field if
