@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gkt/collision/rough_collision_rule.hpp"
+#include "gkt/transport/rough/rough_orientation_correlation.hpp"
 #include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "rough_monte_carlo.hpp"
 #include "transport/rough/rough_aligned_families.hpp"
@@ -134,6 +135,41 @@ TEST(RoughAlignedFamilies, ElementsAgainstMonteCarlo) {
         EXPECT_LT(sigma, 0.05 * std::max(1.0, std::abs(e))) << rank << " " << t << " " << r;
       }
   }
+}
+
+// Exact checks by other routes: (i) the first approximation of the orientation correlation (theory.md (19.14), its
+// own engine tables) has b = −R_0[P]/(R_b[P] + (5/2)z) with R_0[P] = −⟨P, 𝓛1⟩/2 and R_b[P] = −⟨P, 𝓛P⟩, the scalar
+// family's elements here (1e-10); (ii) the momentum row ⟨c, 𝓛ψ⟩ vanishes for every trial ψ, the aligned vector F and
+// the products alike (c1 + c2 is conserved); (iii) at Pidduck's gas the energy row ⟨x + y, 𝓛ψ⟩ vanishes too
+// (x + y = 3 − S_1(x) − L_1(y) at θ = κτ = 1, and ⟨1, 𝓛ψ⟩ = 0), for the scalar family P. (ii) and (iii) hold for any
+// trial, so they check the assembly (slots, signs, the gain and loss terms), not the families' coefficients; (i) and
+// the Monte Carlo check those (a coefficient 1/3 → 1/4 in P or F fails both).
+TEST(RoughAlignedFamilies, OrientationCorrelationAndConservation) {
+  for (const auto& [alpha, beta] : {std::pair{Rational(9, 10), Rational(1, 2)}, std::pair{Rational(1, 2), Rational(0)},
+                                    std::pair{Rational(7, 10), Rational(-1, 2)}}) {
+    const Rational kappa(2, 5);
+    const auto p = rough_parameters_symbolic_temperature(3, alpha, beta, kappa);
+    const detail::RoughAlignedFamilyElements aligned(p, 2);
+    const detail::RoughCollisionElements plain(p, 1);
+    const RoughOrientationCorrelation c = rough_orientation_correlation(alpha, beta, kappa);
+    const double tau = c.temperature_ratio / kappa.to_double();
+    const double z = -plain.element(0, 1, 0, 0, 0, tau) / 3;
+    const double r0 = -aligned.element(0, -1, 1, 0, 0, tau) / 2, rb = -aligned.element(0, -1, 1, -1, 1, tau);
+    EXPECT_LT(std::abs(-r0 / (rb + 2.5 * z) - c.b), 1e-10 * std::max(1e-3, std::abs(c.b))) << alpha.to_double();
+    double momentum = 0, size = 0;
+    for (const auto& [pt, qt] :
+         {std::pair{0, 1}, std::pair{1, 0}, std::pair{0, 2}, std::pair{1, 1}, std::pair{-1, 1}}) {
+      momentum = std::max(momentum, std::abs(aligned.element(1, 0, 0, pt, qt, tau)));
+      size = std::max(size, std::abs(aligned.element(1, 1, 0, pt, qt, tau)));
+    }
+    EXPECT_LT(momentum, 1e-12 * size);
+    EXPECT_GT(size, 0.1);
+  }
+  const detail::RoughAlignedFamilyElements pidduck(
+      rough_parameters_symbolic_temperature(3, Rational(1), Rational(1), Rational(2, 5)), 1);
+  const double energy = pidduck.element(0, 1, 0, -1, 1, 2.5) + pidduck.element(0, 0, 1, -1, 1, 2.5);
+  EXPECT_LT(std::abs(energy), 1e-12);
+  EXPECT_GT(std::abs(pidduck.element(0, 1, 0, -1, 1, 2.5)), 1e-2);  // each part alone does not vanish
 }
 
 // The products' block of the same dot-product route equals RoughCollisionElements (the engine's slot-pair tables,
