@@ -112,8 +112,8 @@ TEST(RoughAlignedFamilies, ElementsAgainstMonteCarlo) {
     if (c.weight <= 0) continue;
     std::size_t k = 0;
     for (int rank = 0; rank < 3; ++rank)
-      for (int t = 0; t < 1 + detail::RoughAlignedFamilyElements::count(rank); ++t)
-        for (int r = 0; r < 1 + detail::RoughAlignedFamilyElements::count(rank); ++r, ++k) {
+      for (int t = 0; t < 1 + exact.count(rank); ++t)
+        for (int r = 0; r < 1 + exact.count(rank); ++r, ++k) {
           const double v = integrand(c, lambda, rank, t, r);
           wv[k] += c.weight * v;
           w2v[k] += c.weight * c.weight * v;
@@ -125,8 +125,8 @@ TEST(RoughAlignedFamilies, ElementsAgainstMonteCarlo) {
   std::size_t k = 0;
   for (int rank = 0; rank < 3; ++rank) {
     const int p0 = rank == 2 ? 0 : 1;
-    for (int t = 0; t < 1 + detail::RoughAlignedFamilyElements::count(rank); ++t)
-      for (int r = 0; r < 1 + detail::RoughAlignedFamilyElements::count(rank); ++r, ++k) {
+    for (int t = 0; t < 1 + exact.count(rank); ++t)
+      for (int r = 0; r < 1 + exact.count(rank); ++r, ++k) {
         const double mean = wv[k] / weight;
         const double sigma = std::sqrt(w2v2[k] - 2 * mean * w2v[k] + mean * mean * weight2) / weight;
         const double e =
@@ -204,7 +204,7 @@ TEST(RoughAlignedFamilies, SymmetricAtPidduckAndVariational) {
     const int top = rank == 2 ? order - 1 : order;
     for (int a = 0; a <= top; ++a)
       for (int b = 0; a + b <= top; ++b) f.push_back({a, b});
-    for (int k = 1; k <= detail::RoughAlignedFamilyElements::count(rank); ++k) f.push_back({-1, k});
+    for (int k = 1; k <= aligned.count(rank); ++k) f.push_back({-1, k});
     double largest = 0;
     for (const auto& x : f)
       for (const auto& y : f) {
@@ -217,12 +217,41 @@ TEST(RoughAlignedFamilies, SymmetricAtPidduckAndVariational) {
   }
   const RoughSonineTransport product(3, Rational(1), Rational(1), Rational(2, 5), 3);
   const RoughSonineTransport with(3, Rational(1), Rational(1), Rational(2, 5), 3, RoughTrialSpace::aligned);
+  const RoughSonineTransport more(3, Rational(1), Rational(1), Rational(2, 5), 3, RoughTrialSpace::aligned, 2);
   for (int n = 1; n <= 3; ++n) {
-    const auto a = product.at(n, 1.0), b = with.at(n, 1.0);
+    const auto a = product.at(n, 1.0), b = with.at(n, 1.0), c = more.at(n, 1.0);
     EXPECT_GT(b.shear_viscosity, a.shear_viscosity + 1e-3) << n;
     EXPECT_GT(b.thermal_conductivity, a.thermal_conductivity + 1e-3) << n;
     EXPECT_GT(b.bulk_viscosity, a.bulk_viscosity) << n;
+    EXPECT_GE(c.shear_viscosity, b.shear_viscosity - 1e-12) << n;  // a larger space again
+    EXPECT_GE(c.thermal_conductivity, b.thermal_conductivity - 1e-12) << n;
+    EXPECT_GE(c.bulk_viscosity, b.bulk_viscosity - 1e-12) << n;
     EXPECT_LT(std::abs(b.density_heat_coefficient), 1e-12) << n;  // μ* = 0 at Pidduck's gas, still
+  }
+}
+
+// The Maxwellian products of the lowest aligned families, summed from the invariants' moments, equal the ones worked
+// by hand in theory.md (19.48) (⟨T1:T1⟩ = 5/2, ⟨T1:T2⟩ = 5/4, ⟨T2:T2⟩ = 85/48, ⟨F·F⟩ = ⟨P²⟩ = 5/4), and G = degree × N
+// (the families are homogeneous of degrees 2, 4; 3; 4); with a second member G and N are symmetric where they must be.
+TEST(RoughAlignedFamilies, MaxwellProducts) {
+  const detail::RoughAlignedFamilyElements a(
+      rough_parameters_symbolic_temperature(3, Rational(9, 10), Rational(1, 2), Rational(2, 5)), 1);
+  const double n[3][2][2] = {{{1.25, 0}, {0, 0}}, {{1.25, 0}, {0, 0}}, {{2.5, 1.25}, {1.25, 85.0 / 48}}};
+  const int degree[3][2] = {{4, 0}, {3, 0}, {2, 4}};
+  for (int rank = 0; rank <= 2; ++rank)
+    for (int i = 1; i <= a.count(rank); ++i)
+      for (int j = 1; j <= a.count(rank); ++j) {
+        EXPECT_LT(std::abs(a.maxwell_product(rank, i, j) - n[rank][i - 1][j - 1]), 1e-14) << rank << i << j;
+        EXPECT_LT(std::abs(a.maxwell_scaling_product(rank, i, j) - degree[rank][i - 1] * n[rank][i - 1][j - 1]), 1e-13)
+            << rank << i << j;
+      }
+  const detail::RoughAlignedFamilyElements b(
+      rough_parameters_symbolic_temperature(3, Rational(9, 10), Rational(1, 2), Rational(2, 5)), 1, 2);
+  for (int rank = 0; rank <= 2; ++rank) {
+    EXPECT_EQ(b.count(rank), 3 * (rank == 2 ? 2 : 1));
+    for (int i = 1; i <= b.count(rank); ++i)
+      for (int j = 1; j <= b.count(rank); ++j)
+        EXPECT_LT(std::abs(b.maxwell_product(rank, i, j) - b.maxwell_product(rank, j, i)), 1e-13);
   }
 }
 

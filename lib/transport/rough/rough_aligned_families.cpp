@@ -113,6 +113,19 @@ std::array<int, 3> on_one_slot(const Exponents& e) {
   return {e[kXa] + e[kXb] + e[kCC], e[kYa] + e[kYb] + e[kWW], e[kPa] + e[kPb] + e[kCW] + e[kWC]};
 }
 
+/// Returns the degree in C_b = (c_b, ŵ_b) of a monomial (the test function's; C·∂_C multiplies by it).
+int test_degree(const Exponents& e) { return 2 * e[kXb] + 2 * e[kYb] + 2 * e[kPb] + e[kCC] + e[kCW] + e[kWC] + e[kWW]; }
+
+/// Returns ⟨X^i Y^j P^k⟩ over the Maxwellians e^{−c²}, e^{−ŵ²} (3D): ⟨x^{i+n}⟩⟨y^{j+n}⟩/(2n + 1) for k = 2n, 0 for odd
+/// k (theory.md (19.48)).
+Rational maxwell_average(const std::array<int, 3>& e) {
+  if (e[2] % 2 != 0) return Rational(0);
+  const int n = e[2] / 2;
+  return Rational::rising_half(3, static_cast<unsigned long>(e[0] + n)) *
+         Rational::rising_half(3, static_cast<unsigned long>(e[1] + n)) *
+         Rational(1, static_cast<unsigned long>(2 * n + 1));
+}
+
 constexpr int kCross = 6;  // P_a, P_b, c_a·c_b, c_a·ŵ_b, ŵ_a·c_b, ŵ_a·ŵ_b
 constexpr std::array<Invariant, kCross> kCrossInvariants{kPa, kPb, kCC, kCW, kWC, kWW};
 using CrossKey = std::array<int, kCross>;
@@ -187,12 +200,13 @@ struct Function {
 }  // namespace
 
 RoughAlignedFamilyElements::RoughAlignedFamilyElements(const RoughCollisionParameters<RationalPolynomial>& parameters,
-                                                       int highest_order)
-    : k_(highest_order) {
+                                                       int highest_order, int aligned_order)
+    : k_(highest_order), members_(aligned_order * (aligned_order + 1) / 2) {
   const int d = parameters.dimension;
   if (d != 3)
     throw std::invalid_argument("dimension: the aligned-spin families need dimension = 3 (c.w = 0 for disks)");
   if (highest_order < 1) throw std::invalid_argument("order: must be an integer >= 1");
+  if (aligned_order < 1) throw std::invalid_argument("aligned_order: must be an integer >= 1");
   // The functions of each rank: products (p, q), p + q ≤ top, in the order of index(), then the aligned families.
   std::array<std::vector<Function>, 3> functions;
   for (int rank = 0; rank <= 2; ++rank) {
@@ -202,7 +216,12 @@ RoughAlignedFamilyElements::RoughAlignedFamilyElements(const RoughCollisionParam
         const RoughTrialFunction f = rough_sonine_function(d, rank, p, q);
         functions[static_cast<std::size_t>(rank)].push_back({0, f.s, f.l});
       }
-    for (int k = 1; k <= count(rank); ++k) functions[static_cast<std::size_t>(rank)].push_back({k, {}, {}});
+    for (int k = 1; k <= (rank == 2 ? 2 : 1); ++k)
+      for (int p = 0; p < aligned_order; ++p)
+        for (int q = 0; p + q < aligned_order; ++q) {
+          const RoughTrialFunction f = rough_sonine_function(d, rank, p, q);
+          functions[static_cast<std::size_t>(rank)].push_back({k, f.s, f.l});
+        }
     size_[static_cast<std::size_t>(rank)] = static_cast<int>(functions[static_cast<std::size_t>(rank)].size());
   }
   // ⟨φ, 𝓛ψ⟩ = ⟨ψ(1)φ(1)⟩ − ⟨ψ(1)φ(1')⟩ + ⟨ψ(2)φ(1)⟩ − ⟨ψ(2)φ(1')⟩ (theory.md (5.2)), each the average of the
@@ -216,8 +235,18 @@ RoughAlignedFamilyElements::RoughAlignedFamilyElements(const RoughCollisionParam
     for (const Function& test : fs)
       for (const Function& trial : fs) {
         DotPolynomial poly = contraction(rank, trial.kind, test.kind);
-        if (trial.kind == 0) poly = poly * multiplier(trial.s, trial.l, true);
-        if (test.kind == 0) poly = poly * multiplier(test.s, test.l, false);
+        poly = poly * multiplier(trial.s, trial.l, true);
+        poly = poly * multiplier(test.s, test.l, false);
+        if (trial.kind > 0 && test.kind > 0) {  // N and G of the aligned block over the Maxwellians, exact
+          Rational n(0), g(0);
+          for (const auto& [e, c] : poly) {
+            const Rational m = maxwell_average(on_one_slot(e));
+            n += c * m;
+            g += c * m * Rational(test_degree(e));
+          }
+          product_[static_cast<std::size_t>(rank)].push_back(n.to_double());
+          scaling_[static_cast<std::size_t>(rank)].push_back(g.to_double());
+        }
         for (const auto& [e, c] : poly) {
           if (c.is_zero()) continue;
           shift_ = std::max(shift_, spin_degree(e));
@@ -278,18 +307,18 @@ double RoughAlignedFamilyElements::element(int rank, int p_test, int q_test, int
   return static_cast<double>(value * std::pow(lambda, -static_cast<long double>(shift_)));
 }
 
-Rational RoughAlignedFamilyElements::maxwell_product(int rank, int k, int k_other) {
-  // ⟨x^i y^j (c·ŵ)^{2n}⟩ = ⟨x^{i+n}⟩⟨y^{j+n}⟩/(2n + 1) with ⟨x⟩ = ⟨y⟩ = 3/2, ⟨x²⟩ = ⟨y²⟩ = 15/4 (theory.md (19.49)).
-  if (rank == 0) return Rational(5, 4);                 // ⟨P²⟩
-  if (rank == 1) return Rational(5, 4);                 // ⟨F·F⟩
-  if (k == 1 && k_other == 1) return Rational(5, 2);    // ⟨T1:T1⟩
-  if (k == 2 && k_other == 2) return Rational(85, 48);  // ⟨T2:T2⟩
-  return Rational(5, 4);                                // ⟨T1:T2⟩
+int RoughAlignedFamilyElements::count(int rank) const { return (rank == 2 ? 2 : 1) * members_; }
+
+double RoughAlignedFamilyElements::maxwell_product(int rank, int i, int j) const {
+  const int n = count(rank);
+  if (i < 1 || j < 1 || i > n || j > n) throw std::out_of_range("RoughAlignedFamilyElements: no such aligned function");
+  return product_[static_cast<std::size_t>(rank)][static_cast<std::size_t>((i - 1) * n + j - 1)];
 }
 
-int RoughAlignedFamilyElements::degree(int rank, int k) {
-  if (rank == 2) return k == 1 ? 2 : 4;
-  return rank == 1 ? 3 : 4;
+double RoughAlignedFamilyElements::maxwell_scaling_product(int rank, int i, int j) const {
+  const int n = count(rank);
+  if (i < 1 || j < 1 || i > n || j > n) throw std::out_of_range("RoughAlignedFamilyElements: no such aligned function");
+  return scaling_[static_cast<std::size_t>(rank)][static_cast<std::size_t>((i - 1) * n + j - 1)];
 }
 
 }  // namespace gkt::detail

@@ -20,27 +20,33 @@ namespace gkt::detail {
 /// The exact collision elements between the aligned-spin families and the products T_r S_p L_q (3D).
 class RoughAlignedFamilyElements {
  public:
-  /// Builds the elements with the products of p + q ≤ K (K − 1 for rank 2), K = highest_order. Throws
-  /// std::invalid_argument naming `dimension` for d ≠ 3 (c·ŵ vanishes for disks) and `order` for K < 1.
-  RoughAlignedFamilyElements(const RoughCollisionParameters<RationalPolynomial>& parameters, int highest_order);
-  /// Returns the number of aligned families of rank r: 2 (tensor), 1 (vector), 1 (scalar).
-  [[nodiscard]] static int count(int rank) { return rank == 2 ? 2 : 1; }
+  /// Builds the elements with the products of p + q ≤ K (K − 1 for rank 2), K = highest_order, for the aligned
+  /// families times S_p(x) L_q(y), p + q ≤ aligned_order − 1 (1: the four families of (19.48) alone). Throws
+  /// std::invalid_argument naming `dimension` for d ≠ 3 (c·ŵ vanishes for disks), `order` for K < 1 and
+  /// `aligned_order` below 1.
+  RoughAlignedFamilyElements(const RoughCollisionParameters<RationalPolynomial>& parameters, int highest_order,
+                             int aligned_order = 1);
+  /// Returns the number of aligned functions of rank r: (2 tensor families, 1 vector, 1 scalar) × the members.
+  [[nodiscard]] int count(int rank) const;
   /// Returns ⟨φ, 𝓛ψ⟩ at τ = θ/κ for test φ and trial ψ of rank r, each a product (p, q) or, when p < 0, the aligned
-  /// family number q (normalisation of theory.md (5.2), as RoughCollisionElements::element).
+  /// function number q (1 … count; normalisation of theory.md (5.2), as RoughCollisionElements::element).
   [[nodiscard]] double element(int rank, int p_test, int q_test, int p_trial, int q_trial, double tau) const;
-  /// Returns the Maxwellian product ⟨φ_k:φ_k'⟩ of two aligned families of rank r (exact; 0 with every product).
-  [[nodiscard]] static Rational maxwell_product(int rank, int k, int k_other);
-  /// Returns the degree of aligned family k of rank r in C = (c, ŵ) (each is homogeneous: C·∂_C φ = degree·φ).
-  [[nodiscard]] static int degree(int rank, int k);
+  /// Returns the Maxwellian product N = ⟨φ_i:φ_j⟩ of aligned functions i, j (1 … count) of rank r (exact; 0 with
+  /// every product).
+  [[nodiscard]] double maxwell_product(int rank, int i, int j) const;
+  /// Returns G = ⟨φ_j C·∂_C φ_i⟩ over the Maxwellians of aligned functions i, j of rank r (the cooling term's G).
+  [[nodiscard]] double maxwell_scaling_product(int rank, int i, int j) const;
   /// Returns K.
   [[nodiscard]] int highest_order() const { return k_; }
 
  private:
   [[nodiscard]] int index(int rank, int p, int q) const;
   int k_;
-  int shift_ = 0;  ///< every stored element is λ^shift × its value
-  /// Per rank, index (test, trial) over [products (p, q), then the aligned families]: coefficients of λ^j.
+  int members_ = 1;  ///< number of (p, q) multipliers of each aligned family
+  int shift_ = 0;    ///< every stored element is λ^shift × its value
+  /// Per rank, index (test, trial) over [products (p, q), then the aligned functions]: coefficients of λ^j.
   std::array<std::vector<std::vector<long double>>, 3> elements_;
+  std::array<std::vector<double>, 3> product_, scaling_;  ///< per rank, (i, j) over the aligned functions
   std::array<int, 3> size_{};
 };
 

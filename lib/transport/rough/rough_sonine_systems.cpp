@@ -79,11 +79,11 @@ std::vector<RoughTrialFunction> sonine_basis(const RoughModeState& state, int ra
   return basis;
 }
 
-/// Appends the aligned-spin families of the basis's rank to s (theory.md (19.50)): their collision rows and columns
-/// with every product and with each other; N and G vanish between a family and a product (orthogonal, and C·∂_C maps
-/// each set into itself), and G = degree × N among the families (each is homogeneous in C).
+/// Appends the aligned-spin functions of the basis's rank to s (theory.md (19.49)): their collision rows and columns
+/// with every product and with each other; N and G vanish between an aligned function and a product (orthogonal, and
+/// C·∂_C maps each set into itself).
 void append_aligned_families(RoughGalerkinSystem& s, const RoughAlignedFamilyElements& aligned, double tau) {
-  const int rank = s.basis.front().rank, m = RoughAlignedFamilyElements::count(rank);
+  const int rank = s.basis.front().rank, m = aligned.count(rank);
   const std::size_t n = s.basis.size(), total = n + static_cast<std::size_t>(m);
   for (RoughMatrix* x : {&s.collision, &s.cooling, &s.product}) {
     for (auto& row : *x) row.resize(total, 0.0);
@@ -98,8 +98,8 @@ void append_aligned_families(RoughGalerkinSystem& s, const RoughAlignedFamilyEle
     for (int j = 1; j <= m; ++j) {
       const std::size_t c = n + static_cast<std::size_t>(j - 1);
       s.collision[r][c] = aligned.element(rank, -1, k, -1, j, tau);
-      s.product[r][c] = RoughAlignedFamilyElements::maxwell_product(rank, k, j).to_double();
-      s.cooling[r][c] = RoughAlignedFamilyElements::degree(rank, k) * s.product[r][c];
+      s.product[r][c] = aligned.maxwell_product(rank, k, j);
+      s.cooling[r][c] = aligned.maxwell_scaling_product(rank, k, j);
     }
   }
 }

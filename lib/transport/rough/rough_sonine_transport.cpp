@@ -33,13 +33,14 @@ RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha,
 }
 
 RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
-                                           const Rational& kappa, int highest_order, RoughTrialSpace space)
+                                           const Rational& kappa, int highest_order, RoughTrialSpace space,
+                                           int aligned_order)
     : RoughSonineTransport(dimension, alpha, beta, kappa, highest_order) {
   if (space == RoughTrialSpace::product) return;
   if (dimension != 3)
     throw std::invalid_argument("trial_space: the aligned-spin families need dimension = 3 (c.w vanishes for disks)");
   tables_->aligned = std::make_unique<detail::RoughAlignedFamilyElements>(
-      rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa), highest_order);
+      rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa), highest_order, aligned_order);
 }
 
 RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,

@@ -50,11 +50,12 @@ class RoughSonineTransport {
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                        int highest_order, int cumulant_degree, bool orientation = false);
   /// As the first constructor, with the trial space `space`: RoughTrialSpace::aligned appends to each mode the
-  /// lowest aligned-spin families (theory.md §19.20, exact elements with the products of every order), about
-  /// Maxwellians only (at, at_maxwellian_state). Throws std::invalid_argument naming `trial_space` for aligned with
-  /// d = 2 (no c·ŵ for disks).
+  /// aligned-spin families (theory.md §19.20) times S_p(x) L_q(y), p + q ≤ aligned_order − 1 (1: the lowest members
+  /// alone), exact elements with the products of every order, about Maxwellians only (at, at_maxwellian_state).
+  /// Throws std::invalid_argument naming `trial_space` for aligned with d = 2 (no c·ŵ for disks) and
+  /// `aligned_order` below 1.
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
-                       int highest_order, RoughTrialSpace space);
+                       int highest_order, RoughTrialSpace space, int aligned_order = 1);
   ~RoughSonineTransport();
   RoughSonineTransport(const RoughSonineTransport&) = delete;
   RoughSonineTransport& operator=(const RoughSonineTransport&) = delete;
