@@ -14,7 +14,7 @@
 #include <functional>
 #include <string>
 #include <vector>
-#include "rough_monte_carlo.hpp"  // tests/
+#include "rough_monte_carlo.hpp"
 using namespace gkt::test;
 using M3 = std::array<std::array<double, 3>, 3>;
 static double dd;
