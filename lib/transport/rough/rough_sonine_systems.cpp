@@ -9,6 +9,7 @@
 
 #include "gkt/algebra/sonine.hpp"
 #include "gkt/collision/rough_collision_moments.hpp"
+#include "transport/rough/rough_aligned_families.hpp"
 #include "transport/rough/rough_weighted_elements.hpp"
 
 namespace gkt::detail {
@@ -78,6 +79,37 @@ std::vector<RoughTrialFunction> sonine_basis(const RoughModeState& state, int ra
   return basis;
 }
 
+/// Appends the aligned-spin functions of the basis's rank to s (theory.md (19.49)): their collision rows and columns
+/// with every product and with each other; N and G vanish between an aligned function and a product (orthogonal, and
+/// C·∂_C maps each set into itself).
+void append_aligned_families(RoughGalerkinSystem& s, const RoughAlignedFamilyElements& aligned, double tau) {
+  const int rank = s.basis.front().rank, m = aligned.count(rank);
+  const std::size_t n = s.basis.size(), total = n + static_cast<std::size_t>(m);
+  for (RoughMatrix* x : {&s.collision, &s.cooling, &s.product}) {
+    for (auto& row : *x) row.resize(total, 0.0);
+    x->resize(total, std::vector<double>(total, 0.0));
+  }
+  for (int k = 1; k <= m; ++k) {
+    const std::size_t r = n + static_cast<std::size_t>(k - 1);
+    for (std::size_t q = 0; q < n; ++q) {
+      s.collision[r][q] = aligned.element(rank, -1, k, s.basis[q].p, s.basis[q].q, tau);
+      s.collision[q][r] = aligned.element(rank, s.basis[q].p, s.basis[q].q, -1, k, tau);
+    }
+    for (int j = 1; j <= m; ++j) {
+      const std::size_t c = n + static_cast<std::size_t>(j - 1);
+      s.collision[r][c] = aligned.element(rank, -1, k, -1, j, tau);
+      s.product[r][c] = aligned.maxwell_product(rank, k, j);
+      s.cooling[r][c] = aligned.maxwell_scaling_product(rank, k, j);
+    }
+  }
+}
+
+/// Returns v padded with zeros to n entries (the aligned families' sources and fluxes).
+std::vector<double> padded(std::vector<double> v, std::size_t n) {
+  v.resize(n, 0.0);
+  return v;
+}
+
 /// Returns the system of `basis`: the collision elements at τ and the exact Maxwellian products.
 RoughGalerkinSystem system_of(const RoughCollisionElements& elements, const RoughModeState& state,
                               std::vector<RoughTrialFunction> basis) {
@@ -105,6 +137,7 @@ RoughGalerkinSystem system_of(const RoughCollisionElements& elements, const Roug
     }
   }
   s.basis = std::move(basis);
+  if (state.aligned && !state.spin_decoupled && !s.basis.empty()) append_aligned_families(s, *state.aligned, state.tau);
   return s;
 }
 
@@ -336,7 +369,9 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
     for (double& x : flux) x /= norm;
     for (const auto& psi : s.basis)
       source.push_back((1 - 1 / dd) / 2 * average(times_x(with_degree(psi.s, rd + 2, Rational(2))), psi.l) / norm);
-    out.shear_viscosity = (dd - 1) * dot(flux, solve_linear(combine(s, -z / 2, z / 2), source));
+    const std::size_t size = s.collision.size();
+    out.shear_viscosity =
+        (dd - 1) * dot(padded(flux, size), solve_linear(combine(s, -z / 2, z / 2), padded(source, size)));
   }
 
   // Heat: (L − (z/2)(G + N)) x = A, (L − (z/2)G) y = z N x + B; fluxes ⟨c(x + θy)·ψ_q⟩ against the smooth elastic
@@ -352,12 +387,15 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
       drive.push_back(a);
       density.push_back(ref ? average(xs, psi.l) - average(half, psi.l) : 0.0);
     }
+    const std::size_t size = s.collision.size();
+    drive = padded(drive, size);
+    density = padded(density, size);
     const auto x = solve_linear(combine(s, -z / 2, -z / 2), drive);
     std::vector<double> coupling(x.size());
     for (std::size_t p = 0; p < x.size(); ++p) coupling[p] = z * dot(s.product[p], x) + density[p];
     const auto y = solve_linear(combine(s, -z / 2, 0), coupling);
-    const auto translational = projections(d, 0, 1, 0, s.basis);
-    const auto rotational = projections(d, 0, 0, 1, s.basis);
+    const auto translational = padded(projections(d, 0, 1, 0, s.basis), size);
+    const auto rotational = padded(projections(d, 0, 0, 1, s.basis), size);
     const double n1 = dd * (dd + 2) / 4, reference = n1 * n1 / (dd - 1);
     out.thermal_conductivity_translational = dot(translational, x) / reference;
     out.density_heat_translational = dot(translational, y) / reference;
@@ -374,21 +412,22 @@ RoughTransportValues solve_rough_navier_stokes(const RoughCollisionElements& ele
     return out;
   }
   const RoughGalerkinSystem s = rough_scalar_system(elements, state, order);
-  const std::size_t n = s.basis.size();
+  const std::size_t n = s.collision.size();
   const double split = 2 / (dd + dr * theta), scale = 4 / (dd + 2);
   RoughMatrix a = combine(s, -z / 2, z / 2);
   std::vector<double> rhs(n + 1, 0.0);
-  for (std::size_t p = 0; p < n; ++p) {
+  for (std::size_t p = 0; p < s.basis.size(); ++p) {
     const auto& psi = s.basis[p];
     const double e = average(with_degree(psi.s, Rational(0), Rational(1)), psi.l);
     const double h = e + average(psi.s, with_degree(psi.l, Rational(0), Rational(1)));
     a[p].push_back(-scale * h);
     rhs[p] = scale * (split * h - (2 / dd) * e);
   }
-  a.push_back(projections(d, 0, 1, theta, s.basis));
+  for (std::size_t p = s.basis.size(); p < n; ++p) a[p].push_back(0.0);  // aligned rows: no energy, no source
+  a.push_back(padded(projections(d, 0, 1, theta, s.basis), n));
   a.back().push_back(0.0);
   const auto solution = solve_linear(a, rhs);
-  const auto pressure = projections(d, 0, 1, 0, s.basis);
+  const auto pressure = padded(projections(d, 0, 1, 0, s.basis), n);
   double trace = 0;
   for (std::size_t q = 0; q < n; ++q) trace += solution[q] * pressure[q];
   out.bulk_viscosity = -(2 / dd) * trace;

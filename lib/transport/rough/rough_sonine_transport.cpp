@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
+#include "transport/rough/rough_aligned_families.hpp"
 #include "transport/rough/rough_sonine_systems.hpp"
 #include "transport/rough/rough_weighted_elements.hpp"
 
@@ -18,6 +19,7 @@ struct RoughSonineTransport::Tables {
   Rational kappa;
   detail::RoughCollisionElements elements;
   std::unique_ptr<detail::RoughWeightedCollisionElements> weighted;  ///< null without cumulant tables
+  std::unique_ptr<detail::RoughAlignedFamilyElements> aligned;       ///< null for the product space
 };
 
 RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
@@ -27,7 +29,18 @@ RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha,
   const RoughCoolingState hcs =
       rough_homogeneous_cooling_state(dimension, alpha, beta, kappa, RoughHcsScheme::maxwellian);
   tables_ = std::unique_ptr<Tables>(new Tables{dimension, hcs.spin_decoupled, hcs.temperature_ratio, kappa,
-                                               detail::RoughCollisionElements(p, highest_order), nullptr});
+                                               detail::RoughCollisionElements(p, highest_order), nullptr, nullptr});
+}
+
+RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
+                                           const Rational& kappa, int highest_order, RoughTrialSpace space,
+                                           int aligned_order)
+    : RoughSonineTransport(dimension, alpha, beta, kappa, highest_order) {
+  if (space == RoughTrialSpace::product) return;
+  if (dimension != 3)
+    throw std::invalid_argument("trial_space: the aligned-spin families need dimension = 3 (c.w vanishes for disks)");
+  tables_->aligned = std::make_unique<detail::RoughAlignedFamilyElements>(
+      rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa), highest_order, aligned_order);
 }
 
 RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
@@ -54,6 +67,8 @@ RoughTransportValues RoughSonineTransport::at_cooling_state(int order, const Rou
   const Tables& t = *tables_;
   if (order < 1 || order > highest_order())
     throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(highest_order()) + "]");
+  if (t.aligned)
+    throw std::invalid_argument("trial_space: the aligned-spin families are built about Maxwellians only (use at)");
   if (!hcs.solved) throw std::invalid_argument("hcs: the Sonine HCS has no solution at this state");
   if (hcs.spin_decoupled != t.spin_decoupled)
     throw std::invalid_argument("hcs: the Sonine HCS is of another state (spin decoupled or not)");
@@ -92,7 +107,7 @@ RoughTransportValues RoughSonineTransport::at(int order, double temperature_rati
     throw std::invalid_argument("temperature_ratio: must be > 0 and finite (+inf only at beta = -1)");
   // At β = −1 no translational element depends on τ (the spin decouples): any τ will do.
   const detail::RoughModeState state{t.dimension, decoupled ? 1.0 : temperature_ratio / t.kappa.to_double(), decoupled,
-                                     nullptr};
+                                     nullptr, t.aligned.get()};
   return detail::solve_rough_navier_stokes(t.elements, state, order, temperature_ratio);
 }
 

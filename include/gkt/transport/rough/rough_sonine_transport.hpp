@@ -28,6 +28,12 @@ struct RoughTransportValues {
   double cooling_rate_first_order = 0;            ///< ζ_U of ζ = ζ⁽⁰⁾ + ζ_U∇·u (NaN at β = −1)
 };
 
+/// Which trial families the Galerkin spaces hold (theory.md §19.16, §19.20).
+enum class RoughTrialSpace {
+  product,  ///< the translation × spin Sonine products of (19.40) only (the default)
+  aligned,  ///< 3D: the products plus the lowest aligned-spin families (ŵŵ)°, (c·ŵ)(cŵ)°, (ŵŵ)°·c, (c·ŵ)² − c²ŵ²/3
+};
+
 /// The exact collision tables of one (d, α, β, κ) up to a highest Sonine order, with θ symbolic; each call
 /// evaluates them at θ and solves the three Galerkin systems of one order (theory.md §19.16).
 class RoughSonineTransport {
@@ -43,6 +49,13 @@ class RoughSonineTransport {
   /// `orientation` for d = 2.
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                        int highest_order, int cumulant_degree, bool orientation = false);
+  /// As the first constructor, with the trial space `space`: RoughTrialSpace::aligned appends to each mode the
+  /// aligned-spin families (theory.md §19.20) times S_p(x) L_q(y), p + q ≤ aligned_order − 1 (1: the lowest members
+  /// alone), exact elements with the products of every order, about Maxwellians only (at, at_maxwellian_state).
+  /// Throws std::invalid_argument naming `trial_space` for aligned with d = 2 (no c·ŵ for disks) and
+  /// `aligned_order` below 1.
+  RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                       int highest_order, RoughTrialSpace space, int aligned_order = 1);
   ~RoughSonineTransport();
   RoughSonineTransport(const RoughSonineTransport&) = delete;
   RoughSonineTransport& operator=(const RoughSonineTransport&) = delete;
@@ -59,7 +72,8 @@ class RoughSonineTransport {
   [[nodiscard]] RoughTransportValues at_maxwellian_state(int order) const;
   /// Returns the coefficients at Sonine order `order` about the Sonine HCS `hcs` of the same (d, α, β, κ):
   /// f0 = f_M(c) f_M(ŵ)[1 + Σ a_pq S_p(c²) S_q(ŵ²)] at its θ, with its ζ* (theory.md §19.16, (19.44)). Throws
-  /// std::invalid_argument naming `hcs` when it is not solved, carries cumulants above the weighted tables' degree
+  /// std::invalid_argument naming `trial_space` for tables built with RoughTrialSpace::aligned (no weighted elements
+  /// for those families), `hcs` when it is not solved, carries cumulants above the weighted tables' degree
   /// or orientation terms b_pq without the orientation tables, and `order` outside [1, highest_order]. With them
   /// the oriented HCS (its b_pq) is carried too.
   [[nodiscard]] RoughTransportValues at_cooling_state(int order, const RoughSonineCoolingState& hcs) const;
