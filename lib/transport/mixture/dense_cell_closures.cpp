@@ -139,8 +139,9 @@ DenseCellClosures closures(const DenseCellGeometry& g) {
     y += vd * n[k] * surface[k];
   }
   out.density = density;
-  std::array<double, 16> width{}, weight{};  // a_ij = σ_iσ_j/σ_ij, σ_ij^d
-  std::array<Contact, 16> at{};
+  // a_ij = σ_iσ_j/σ_ij, σ_ij^d, 1/χ_ij and ∂χ_ij/∂n_ℓ at (i·4 + j)·4 + ℓ; only the s × s pairs are written and read.
+  std::array<double, 16> width, weight, inverse_chi;
+  std::array<double, 64> dchi;
   const GapPowers gap = gap_powers(1 / (1 - phi));
   for (int i = 0; i < s; ++i)
     for (int j = 0; j < s; ++j) {
@@ -148,11 +149,15 @@ DenseCellClosures closures(const DenseCellGeometry& g) {
       const double sij = 0.5 * (g.sigma[i] + g.sigma[j]);
       width[P] = g.sigma[i] * g.sigma[j] / sij;
       weight[P] = d == 3 ? sij * sij * sij : sij * sij;
-      at[P] = contact<D>(gap, width[P] * y);
-      out.chi[P] = at[P].f;
-      // n ∂χ/∂n_ℓ = n v_d (F_φ σ_ℓ^d + a F_u σ_ℓ^{d−1}) (18.1)
-      const double scale = density * vd / at[P].f, a = scale * at[P].f_phi, b = scale * at[P].f_u * width[P];
-      for (int l = 0; l < s; ++l) out.log_chi_derivative[P * kMax + l] = a * volume[l] + b * surface[l];
+      const Contact c = contact<D>(gap, width[P] * y);
+      out.chi[P] = c.f;
+      inverse_chi[P] = 1 / c.f;
+      // ∂χ/∂n_ℓ = v_d (F_φ σ_ℓ^d + a F_u σ_ℓ^{d−1}), n ∂ln χ/∂n_ℓ = n ∂χ/∂n_ℓ /χ (18.1)
+      const double a = vd * c.f_phi, b = vd * c.f_u * width[P], scale = density * inverse_chi[P];
+      for (int l = 0; l < s; ++l) {
+        dchi[P * kMax + l] = a * volume[l] + b * surface[l];
+        out.log_chi_derivative[P * kMax + l] = scale * dchi[P * kMax + l];
+      }
     }
   for (int k = 1; k < s; ++k) out.unequal = out.unequal || g.sigma[k] != g.sigma[0];
   if (!out.unequal) return out;
@@ -193,21 +198,21 @@ DenseCellClosures closures(const DenseCellGeometry& g) {
               (a_pp * volume[i] * volume[l] + a_pu * (volume[i] * surface[l] + volume[l] * surface[i]) +
                a_uu * surface[i] * surface[l]);
   // b_ℓi = H_iℓ/(2B_2) − Σ_k σ_ik^d [χ_ik δ_kℓ + ½ n_k ∂_ℓχ_ik] (18.19)
-  auto dchi = [&](int P, int l) { return vd * (at[P].f_phi * volume[l] + at[P].f_u * width[P] * surface[l]); };
   std::array<double, 16> remainder{};  // at i·4 + ℓ
   for (int i = 0; i < s; ++i)
     for (int l = 0; l < s; ++l) {
       double rest = hessian[i * kMax + l] / (2 * b2);
       for (int k = 0; k < s; ++k) {
         const int P = i * kMax + k;
-        rest -= weight[P] * ((k == l ? at[P].f : 0.0) + 0.5 * n[k] * dchi(P, l));
+        rest -= weight[P] * ((k == l ? out.chi[P] : 0.0) + 0.5 * n[k] * dchi[P * kMax + l]);
       }
       remainder[i * kMax + l] = rest;
     }
   if (s == 2) {  // (18.20)
     for (int i = 0; i < 2; ++i) {
       const int j = 1 - i, P = i * kMax + j;
-      for (int l = 0; l < 2; ++l) out.functionals[P * kMax + l] = 2 * remainder[i * kMax + l] / (weight[P] * at[P].f);
+      for (int l = 0; l < 2; ++l)
+        out.functionals[P * kMax + l] = 2 * remainder[i * kMax + l] * inverse_chi[P] / weight[P];
     }
     return out;
   }
@@ -224,7 +229,7 @@ DenseCellClosures closures(const DenseCellGeometry& g) {
     for (int i = 0; i < s; ++i)
       for (int j = i + 1; j < s; ++j) {  // the offset is antisymmetric in (i, j), ∂_ℓχ_ij/σ_ij symmetric
         const int P = i * kMax + j;
-        const double v = lens_centroid_offset(d, g.sigma[i], g.sigma[j], g.sigma[l]) * dchi(P, l) /
+        const double v = lens_centroid_offset(d, g.sigma[i], g.sigma[j], g.sigma[l]) * dchi[P * kMax + l] /
                          (0.5 * (g.sigma[i] + g.sigma[j]));
         reference[P] = v;
         reference[j * kMax + i] = -v;
@@ -261,7 +266,7 @@ DenseCellClosures closures(const DenseCellGeometry& g) {
       for (int j = 0; j < s; ++j) {
         if (i == j) continue;
         const int P = i * kMax + j;
-        out.functionals[P * kMax + l] = 2 * n[j] * (reference[P] + u(i) - u(j)) / at[P].f;
+        out.functionals[P * kMax + l] = 2 * n[j] * (reference[P] + u(i) - u(j)) * inverse_chi[P];
       }
   }
   return out;
