@@ -117,14 +117,13 @@ double lens_centroid_offset(int d, double sigma_i, double sigma_j, double sigma_
 
 /// dense_cell_closures in dimension D (the contact polynomials then inline without a branch).
 template <int D>
-DenseCellClosures closures(const DenseCellGeometry& g) {
+void closures(const DenseCellGeometry& g, DenseCellClosures& out) {
   constexpr int d = D;
   const int s = g.s;
   // v_d and B_2 of (18.2) per dimension, computed once (pow and tgamma would dominate a call).
   static const std::array<double, 2> volume_factor{std::numbers::pi / 4, std::numbers::pi / 6},
       virial{std::numbers::pi / 2, 2 * std::numbers::pi / 3};
   const double vd = volume_factor[static_cast<std::size_t>(d - 2)], b2 = virial[static_cast<std::size_t>(d - 2)];
-  DenseCellClosures out;
   std::array<double, kMax> volume{}, surface{}, n{};  // σ_k^d, σ_k^{d−1}, n_k (σ̄ = 1)
   double moment = 0;
   for (int k = 0; k < s; ++k) {
@@ -160,7 +159,7 @@ DenseCellClosures closures(const DenseCellGeometry& g) {
       }
     }
   for (int k = 1; k < s; ++k) out.unequal = out.unequal || g.sigma[k] != g.sigma[0];
-  if (!out.unequal) return out;
+  if (!out.unequal) return;
 
   // ∂_i∂_ℓ (μ^ex/T)… : H_iℓ = ∫_0^1 dλ ∂_i∂_ℓ (p^ex/T)(λn), p^ex/T = B_2 Σ_jk n_j n_k σ_jk^d χ_jk (18.17). With
   // ∂_ℓχ_jk = v_d(F_φ σ_ℓ^d + a F_u σ_ℓ^{d−1}) the Hessian at λn is 2σ_iℓ^d χ_iℓ + 2v_d(T_iφ σ_ℓ^d + T_iu σ_ℓ^{d−1} +
@@ -214,7 +213,7 @@ DenseCellClosures closures(const DenseCellGeometry& g) {
       for (int l = 0; l < 2; ++l)
         out.functionals[P * kMax + l] = 2 * remainder[i * kMax + l] * inverse_chi[P] / weight[P];
     }
-    return out;
+    return;
   }
   // s ≥ 3, lens-centroid closure (§18.12): K_ℓij = δ_ijℓ ∂_ℓχ_ij/σ_ij + u_ℓi − u_ℓj with Σ_j n_j σ_ij^d K_ℓij = b_ℓi;
   // the row of the most abundant species is dropped and its u is 0.
@@ -269,11 +268,21 @@ DenseCellClosures closures(const DenseCellGeometry& g) {
         out.functionals[P * kMax + l] = 2 * n[j] * (reference[P] + u(i) - u(j)) * inverse_chi[P];
       }
   }
-  return out;
 }
 
 }  // namespace
 
-DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) { return g.d == 3 ? closures<3>(g) : closures<2>(g); }
+void dense_cell_closures(const DenseCellGeometry& g, DenseCellClosures& out) {
+  if (g.d == 3)
+    closures<3>(g, out);
+  else
+    closures<2>(g, out);
+}
+
+DenseCellClosures dense_cell_closures(const DenseCellGeometry& g) {
+  DenseCellClosures out;
+  dense_cell_closures(g, out);
+  return out;
+}
 
 }  // namespace gkt::detail

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -88,35 +89,28 @@ class Lu {
   std::array<int, kMax> pivot_{};
 };
 
-/// The state in the units of (16.11) and its Maxwellian HCS.
+/// The state in the units of (16.11) and its Maxwellian HCS. The arrays are not zeroed (a call writes
+/// the entries of its s species and pairs before reading them; zeroing them all cost 5 % of a binary call).
 struct Reduced {
   int d = 3, s = 2, major = 0;  // major: the first most abundant species (its S_0 row carries momentum, (17.7))
-  Vec m{}, x{}, gamma{}, theta{}, root_theta{}, inverse_m{};
+  Vec m, x, gamma, theta, root_theta, inverse_m;
   // After the HCS, shared by every pair function: 1/θ_k, 1/√θ_k; per pair √(θ_i + θ_j), its inverse and
   // w_ij = √(1/θ_i + 1/θ_j) = √(θ_i + θ_j)/(√θ_i √θ_j) (one square root and one division per unordered pair).
-  Vec inverse_theta{}, inverse_root_theta{};
-  Mat root_sum{}, inverse_root_sum{}, speed{};
-  Mat area{}, alpha{}, mu_a{};  // (σ_ij/σ̄)^{d−1} χ_ij (χ = 1 dilute), α_ij and μ_ji(1 + α_ij)
-  Mat jacobian{};               // ∂ζ_i/∂γ_k at the HCS
+  Vec inverse_theta, inverse_root_theta;
+  Mat root_sum, inverse_root_sum, speed;
+  Mat area, alpha, mu_a;  // (σ_ij/σ̄)^{d−1} χ_ij (χ = 1 dilute), α_ij and μ_ji(1 + α_ij)
+  Mat jacobian;           // ∂ζ_i/∂γ_k at the HCS
   double c_d = 0, zeta = 0;
   ReferenceGas ref{};
-  // Dense gas (theory.md §18): σ_ij/σ̄, the transfer length L_ij = nσ̄^d σ_ij/σ̄ (18.3), χ_ij and the closures.
+  // Dense gas (theory.md §18): σ_ij/σ̄, the transfer length L_ij = nσ̄^d σ_ij/σ̄ (18.3), χ_ij and the closures
+  // (filled in place, only when dense).
   bool dense = false;
-  Mat sigma{}, length{};
-  detail::DenseCellClosures closures{};
+  Mat sigma, length;
+  std::optional<detail::DenseCellClosures> closures;
 };
 
-/// Pair energy change (16.3) E_il = −2μ_li(1+α)[1 − ½μ_li(1+α)(1 + θ_i/θ_l)] with w_il = √(1/θ_i + 1/θ_l)
-/// at the temperature ratios γ (1/θ_k = γ_k/m_k).
-struct PairCooling {
-  double w, e;
-};
-PairCooling pair_cooling(const Reduced& r, const Vec& gamma, int i, int l) {
-  const double ma = r.mu_a[i * kMax + l], wi = gamma[i] * r.inverse_m[i], wl = gamma[l] * r.inverse_m[l];
-  return {std::sqrt(wi + wl), -2 * ma * (1 - 0.5 * ma * (1 + wl / wi))};
-}
-
-/// ζ_i = −(2c_d/d) Σ_l x_l σ_il^{d−1} w_il E_il (16.11) and its Jacobian ∂ζ_i/∂γ_k at i·4 + k.
+/// ζ_i = −(2c_d/d) Σ_l x_l σ_il^{d−1} w_il E_il (16.11) and its Jacobian ∂ζ_i/∂γ_k at i·4 + k, with the pair
+/// energy change (16.3) E_il = −2μ_li(1+α)[1 − ½μ_li(1+α)(1 + θ_i/θ_l)], w_il = √(1/θ_i + 1/θ_l), 1/θ_k = γ_k/m_k.
 template <int S>
 void partial_cooling(const Reduced& r, const Vec& gamma, Vec& zeta, Mat& jacobian) {
   const double f = -2 * r.c_d / r.d;
@@ -132,8 +126,10 @@ void partial_cooling(const Reduced& r, const Vec& gamma, Vec& zeta, Mat& jacobia
       w[i * kMax + l] = w[l * kMax + i] = std::sqrt(over[i] + over[l]);
       inverse_w[i * kMax + l] = inverse_w[l * kMax + i] = 1 / w[i * kMax + l];
     }
-  zeta = {};
-  jacobian = {};
+  for (int i = 0; i < S; ++i) {  // only the s × s block is used
+    zeta[i] = 0;
+    for (int k = 0; k < S; ++k) jacobian[i * kMax + k] = 0;
+  }
   for (int i = 0; i < S; ++i)
     for (int l = 0; l < S; ++l) {
       const double ma = r.mu_a[i * kMax + l], ratio = over[l] * theta[i];  // θ_i/θ_l
@@ -158,36 +154,35 @@ void cooling_state(Reduced& r) {
   // (2c_d/d) Σ_l x_l σ_il^{d−1} w_il 2μ_li(1+α_il) (> 0 also where ζ = 0, α = 1), held fixed.
   const int last = S - 1;
   for (int i = 0; i < S; ++i)
-    for (int l = 0; l < S; ++l)
-      scale[i] +=
-          4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * pair_cooling(r, gamma, i, l).w * r.mu_a[i * kMax + l];
-  for (int i = 0; i < last; ++i) scale[i] += scale[last];
+    for (int l = 0; l < S; ++l)  // w_il = √(1/m_i + 1/m_l) at γ = 1
+      scale[i] += 4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * std::sqrt(r.inverse_m[i] + r.inverse_m[l]) *
+                  r.mu_a[i * kMax + l];
+  for (int i = 0; i < last; ++i) scale[i] = 1 / (scale[i] + scale[last]);  // held as its reciprocal
   auto residual = [&](const Vec& g, Vec& res, Mat& j) {
     partial_cooling<S>(r, g, zeta, j);
     double norm = 0, sum = 0;
-    for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) / scale[i];
+    for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) * scale[i];
     for (int i = 0; i < S; ++i) sum += r.x[i] * g[i];
     res[last] = sum - 1;
     for (int i = 0; i < S; ++i) norm += res[i] * res[i];
     return norm;
   };
-  Vec res{};
+  Vec res{}, trial_res{};
+  Mat m{}, trial_jac{};  // Newton matrix and the trial point's Jacobian, reused by every iteration
   double norm = residual(gamma, res, jac);
   // Quadratic convergence: once |res| < 1e-11 the next full step reaches round-off; no search beyond it.
   for (int iteration = 0; iteration < 200 && norm > 1e-30; ++iteration) {
     const bool last_step = norm < 1e-22;
     // Newton in ln γ keeps every γ > 0: Σ_k J_ik γ_k du_k = −res_i.
-    Mat m{};
     for (int i = 0; i < S; ++i)
       for (int k = 0; k < S; ++k)
-        m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) / scale[i] : r.x[k]);
+        m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) * scale[i] : r.x[k]);
     Vec rhs{};
     for (int i = 0; i < S; ++i) rhs[i] = -res[i];
     const Vec du = solve<S>(m, rhs);
     double step = 1;
     for (int halving = 0; halving < (last_step ? 1 : 40); ++halving, step /= 2) {
-      Vec trial = gamma, trial_res{};
-      Mat trial_jac{};
+      Vec trial = gamma;
       // γ_k e^{δ}; near the root 1 + δ + δ²/2 suffices (the map u → γ only has to be right to first order).
       for (int k = 0; k < S; ++k) {
         const double delta = std::clamp(step * du[k], -5.0, 5.0);
@@ -238,7 +233,8 @@ Sensitivity cooling_sensitivity(const Reduced& r) {
   const Lu<S> lu(m);  // one factorisation for the s right-hand sides
   Sensitivity out;
   const double f = -2 * r.c_d / r.d;
-  Mat rate{};  // w_il E_il (16.3) at the HCS
+  // w_il E_il at the HCS, the pair energy change (16.3) E_il = −2μ_li(1+α)[1 − ½μ_li(1+α)(1 + θ_i/θ_l)]
+  Mat rate{};
   for (int i = 0; i < S; ++i)
     for (int l = 0; l < S; ++l) {
       const double ma = r.mu_a[i * kMax + l];
@@ -251,7 +247,7 @@ Sensitivity cooling_sensitivity(const Reduced& r) {
       if (r.dense)  // χ_il moves with n_j (18.1)
         for (int l = 0; l < S; ++l)
           explicit_part[i] += f * r.x[l] * r.area[i * kMax + l] *
-                              r.closures.log_chi_derivative[(i * kMax + l) * kMax + j] * rate[i * kMax + l];
+                              r.closures->log_chi_derivative[(i * kMax + l) * kMax + j] * rate[i * kMax + l];
     }
     for (int i = 0; i < last; ++i) rhs[i] = -(explicit_part[i] - explicit_part[last]);
     rhs[last] = 1 - r.gamma[j];
@@ -461,7 +457,7 @@ Reduced reduce(const MixtureCell& cell) {
       g.sigma[i] = cell.diameter[i] / mean_diameter;
       g.fraction[i] = cell.fraction[i];
     }
-    r.closures = detail::dense_cell_closures(g);
+    detail::dense_cell_closures(g, r.closures.emplace());
   }
   for (int i = 0; i < r.s; ++i) {
     r.m[i] = cell.mass[i] / mean_mass;
@@ -470,9 +466,9 @@ Reduced reduce(const MixtureCell& cell) {
     if (r.x[i] > r.x[r.major]) r.major = i;
     for (int j = 0; j < r.s; ++j) {
       const double sigma = 0.5 * (cell.diameter[i] + cell.diameter[j]) / mean_diameter;
-      r.area[i * kMax + j] = (r.d == 3 ? sigma * sigma : sigma) * (r.dense ? r.closures.chi[i * kMax + j] : 1.0);
+      r.area[i * kMax + j] = (r.d == 3 ? sigma * sigma : sigma) * (r.dense ? r.closures->chi[i * kMax + j] : 1.0);
       r.sigma[i * kMax + j] = sigma;
-      r.length[i * kMax + j] = r.closures.density * sigma;
+      r.length[i * kMax + j] = r.dense ? r.closures->density * sigma : 0.0;
       r.mu_a[i * kMax + j] = cell.mass[j] / (cell.mass[i] + cell.mass[j]) * (1 + cell.restitution[i * kMax + j]);
       r.alpha[i * kMax + j] = cell.restitution[i * kMax + j];
     }
@@ -517,12 +513,12 @@ PublishedFirstSonine first_sonine(Reduced& r) {
         transfer[P] = pair_transfer(r, i, j);
         rate[P] = r.area[P] * r.c_d * r.speed[P];
         const double sd = r.d == 3 ? r.sigma[P] * r.sigma[P] * r.sigma[P] : r.sigma[P] * r.sigma[P];
-        const double w = r.closures.density * b2 * r.mu_a[P] * sd * r.closures.chi[P] * r.gamma[i];
+        const double w = r.closures->density * b2 * r.mu_a[P] * sd * r.closures->chi[P] * r.gamma[i];
         out.pressure += w * r.x[i] * r.x[j];
         for (int l = 0; l < S; ++l)
           out.pressure_derivative[l] +=
               w * ((i == l ? r.x[j] : 0.0) + (j == l ? r.x[i] : 0.0) +
-                   r.x[i] * r.x[j] * (r.closures.log_chi_derivative[P * kMax + l] + sens.log_gamma[i * kMax + l]));
+                   r.x[i] * r.x[j] * (r.closures->log_chi_derivative[P * kMax + l] + sens.log_gamma[i * kMax + l]));
       }
   }
   // The collisional heat flux (18.9) of a vector-mode solution, f0 f^(1) part:
@@ -592,8 +588,8 @@ PublishedFirstSonine first_sonine(Reduced& r) {
           const int P = i * kMax + k;
           const PairTransfer& t = transfer[P];
           const double f = r.length[P] * rate[P] * r.x[i], gk = sens.log_gamma[k * kMax + j];
-          const double density = (k == j ? 1.0 : 0.0) + 0.5 * (r.x[k] * r.closures.log_chi_derivative[P * kMax + j] +
-                                                               r.closures.functionals[P * kMax + j]);
+          const double density = (k == j ? 1.0 : 0.0) + 0.5 * (r.x[k] * r.closures->log_chi_derivative[P * kMax + j] +
+                                                               r.closures->functionals[P * kMax + j]);
           b0[i] += f * (density * t.density0 + r.x[k] * gk * t.temperature0);
           b1[i] += f * (density * t.density1 + r.x[k] * gk * t.temperature1);
         }
@@ -614,7 +610,7 @@ PublishedFirstSonine first_sonine(Reduced& r) {
           const double gi = sens.log_gamma[i * kMax + j], gk = sens.log_gamma[k * kMax + j];
           // (18.22) with the off-midpoint contact value I_jik/x_k per ∇n_j
           const double v =
-              ((k == j ? r.x[i] : 0.0) - (i == j ? r.x[k] : 0.0) + r.x[i] * r.closures.functionals[P * kMax + j]) *
+              ((k == j ? r.x[i] : 0.0) - (i == j ? r.x[k] : 0.0) + r.x[i] * r.closures->functionals[P * kMax + j]) *
                   t.energy +
               r.x[i] * r.x[k] *
                   (gk * (t.energy_partner - 0.5 * d * t.energy) - gi * (t.energy_self - 0.5 * d * t.energy));
