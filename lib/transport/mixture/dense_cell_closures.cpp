@@ -88,8 +88,12 @@ GapPowers lambda_moments(double phi, double b2) {
   GapPowers m{};
   for (std::size_t q = 0; q < static_cast<std::size_t>(r.size); ++q) {
     const double g = 1 / (1 - r.node[q] * phi), h = r.node[q] * g;  // λ^{q−1} g^q = g h^{q−1}
-    double term = b2 * r.weight[q] * g;
-    for (std::size_t p = 1; p < m.size(); ++p, term *= h) m[p] += term;
+    const double w1 = b2 * r.weight[q] * g, w2 = w1 * h, w3 = w2 * h, w4 = w3 * h;
+    m[1] += w1;
+    m[2] += w2;
+    m[3] += w3;
+    m[4] += w4;
+    m[5] += w4 * h;
   }
   return m;
 }

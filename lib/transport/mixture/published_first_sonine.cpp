@@ -523,16 +523,22 @@ PublishedFirstSonine first_sonine(Reduced& r) {
   }
   // The collisional heat flux (18.9) of a vector-mode solution, f0 f^(1) part:
   // −(1/(2d)) Σ_ij L R [x_i ⟨⟨(σ̂·c2)ΔE_1 X_j⟩⟩ + x_j ⟨⟨(σ̂·c1)ΔE_1 X_i⟩⟩].
-  auto collisional_heat = [&](const VectorSolution& v) {
-    double q = 0;
+  // It is linear in the solution: Σ_k (h0_k φ̃_k0 + h1_k φ̃_k1) with the weights gathered once from the pairs.
+  Vec h0{}, h1{};
+  if (r.dense)
     for (int i = 0; i < S; ++i)
       for (int j = 0; j < S; ++j) {
         const int P = i * kMax + j;
         const PairTransfer& t = transfer[P];
-        q -= r.length[P] * rate[P] * 0.5 * per_d *
-             (r.x[i] * (t.heat_partner0 * v.s0[j] + t.heat_partner1 * v.s1[j]) +
-              r.x[j] * (t.heat_self0 * v.s0[i] + t.heat_self1 * v.s1[i]));
+        const double c = -r.length[P] * rate[P] * 0.5 * per_d;
+        h0[j] += c * r.x[i] * t.heat_partner0;
+        h1[j] += c * r.x[i] * t.heat_partner1;
+        h0[i] += c * r.x[j] * t.heat_self0;
+        h1[i] += c * r.x[j] * t.heat_self1;
       }
+  auto collisional_heat = [&](const VectorSolution& v) {
+    double q = 0;
+    for (int k = 0; k < S; ++k) q += h0[k] * v.s0[k] + h1[k] * v.s1[k];
     return q;
   };
   auto gradient_heat = [&](int P) { return -r.length[P] * r.length[P] * rate[P] * 0.25 * per_d; };
