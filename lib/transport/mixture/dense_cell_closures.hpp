@@ -29,5 +29,7 @@ struct DenseCellClosures {
 /// or, for s ≥ 3, the lens-centroid closure of §18.12 — equal to revised_enskog_functionals to rounding
 /// (the λ integral of (18.17) by Gauss–Legendre rules of 6 to 24 points chosen by φ, the library's 24 at most).
 DenseCellClosures dense_cell_closures(const DenseCellGeometry& g);
+/// The same written into `out`, which must be value-initialised (zero I_ℓij stay zero): no copy of the arrays.
+void dense_cell_closures(const DenseCellGeometry& g, DenseCellClosures& out);
 
 }  // namespace gkt::detail

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -88,31 +89,28 @@ class Lu {
   std::array<int, kMax> pivot_{};
 };
 
-/// The state in the units of (16.11) and its Maxwellian HCS.
+/// The state in the units of (16.11) and its Maxwellian HCS. The arrays are not zeroed (a call writes
+/// the entries of its s species and pairs before reading them; zeroing them all cost 5 % of a binary call).
 struct Reduced {
   int d = 3, s = 2, major = 0;  // major: the first most abundant species (its S_0 row carries momentum, (17.7))
-  Vec m{}, x{}, gamma{}, theta{}, root_theta{}, inverse_m{};
-  Mat area{}, alpha{}, mu_a{};  // (σ_ij/σ̄)^{d−1} χ_ij (χ = 1 dilute), α_ij and μ_ji(1 + α_ij)
-  Mat jacobian{};               // ∂ζ_i/∂γ_k at the HCS
+  Vec m, x, gamma, theta, root_theta, inverse_m;
+  // After the HCS, shared by every pair function: 1/θ_k, 1/√θ_k; per pair √(θ_i + θ_j), its inverse and
+  // w_ij = √(1/θ_i + 1/θ_j) = √(θ_i + θ_j)/(√θ_i √θ_j) (one square root and one division per unordered pair).
+  Vec inverse_theta, inverse_root_theta;
+  Mat root_sum, inverse_root_sum, speed;
+  Mat area, alpha, mu_a;  // (σ_ij/σ̄)^{d−1} χ_ij (χ = 1 dilute), α_ij and μ_ji(1 + α_ij)
+  Mat jacobian;           // ∂ζ_i/∂γ_k at the HCS
   double c_d = 0, zeta = 0;
   ReferenceGas ref{};
-  // Dense gas (theory.md §18): σ_ij/σ̄, the transfer length L_ij = nσ̄^d σ_ij/σ̄ (18.3), χ_ij and the closures.
+  // Dense gas (theory.md §18): σ_ij/σ̄, the transfer length L_ij = nσ̄^d σ_ij/σ̄ (18.3), χ_ij and the closures
+  // (filled in place, only when dense).
   bool dense = false;
-  Mat sigma{}, length{};
-  detail::DenseCellClosures closures{};
+  Mat sigma, length;
+  std::optional<detail::DenseCellClosures> closures;
 };
 
-/// Pair energy change (16.3) E_il = −2μ_li(1+α)[1 − ½μ_li(1+α)(1 + θ_i/θ_l)] with w_il = √(1/θ_i + 1/θ_l)
-/// at the temperature ratios γ (1/θ_k = γ_k/m_k).
-struct PairCooling {
-  double w, e;
-};
-PairCooling pair_cooling(const Reduced& r, const Vec& gamma, int i, int l) {
-  const double ma = r.mu_a[i * kMax + l], wi = gamma[i] * r.inverse_m[i], wl = gamma[l] * r.inverse_m[l];
-  return {std::sqrt(wi + wl), -2 * ma * (1 - 0.5 * ma * (1 + wl / wi))};
-}
-
-/// ζ_i = −(2c_d/d) Σ_l x_l σ_il^{d−1} w_il E_il (16.11) and its Jacobian ∂ζ_i/∂γ_k at i·4 + k.
+/// ζ_i = −(2c_d/d) Σ_l x_l σ_il^{d−1} w_il E_il (16.11) and its Jacobian ∂ζ_i/∂γ_k at i·4 + k, with the pair
+/// energy change (16.3) E_il = −2μ_li(1+α)[1 − ½μ_li(1+α)(1 + θ_i/θ_l)], w_il = √(1/θ_i + 1/θ_l), 1/θ_k = γ_k/m_k.
 template <int S>
 void partial_cooling(const Reduced& r, const Vec& gamma, Vec& zeta, Mat& jacobian) {
   const double f = -2 * r.c_d / r.d;
@@ -128,8 +126,10 @@ void partial_cooling(const Reduced& r, const Vec& gamma, Vec& zeta, Mat& jacobia
       w[i * kMax + l] = w[l * kMax + i] = std::sqrt(over[i] + over[l]);
       inverse_w[i * kMax + l] = inverse_w[l * kMax + i] = 1 / w[i * kMax + l];
     }
-  zeta = {};
-  jacobian = {};
+  for (int i = 0; i < S; ++i) {  // only the s × s block is used
+    zeta[i] = 0;
+    for (int k = 0; k < S; ++k) jacobian[i * kMax + k] = 0;
+  }
   for (int i = 0; i < S; ++i)
     for (int l = 0; l < S; ++l) {
       const double ma = r.mu_a[i * kMax + l], ratio = over[l] * theta[i];  // θ_i/θ_l
@@ -154,36 +154,35 @@ void cooling_state(Reduced& r) {
   // (2c_d/d) Σ_l x_l σ_il^{d−1} w_il 2μ_li(1+α_il) (> 0 also where ζ = 0, α = 1), held fixed.
   const int last = S - 1;
   for (int i = 0; i < S; ++i)
-    for (int l = 0; l < S; ++l)
-      scale[i] +=
-          4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * pair_cooling(r, gamma, i, l).w * r.mu_a[i * kMax + l];
-  for (int i = 0; i < last; ++i) scale[i] += scale[last];
+    for (int l = 0; l < S; ++l)  // w_il = √(1/m_i + 1/m_l) at γ = 1
+      scale[i] += 4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * std::sqrt(r.inverse_m[i] + r.inverse_m[l]) *
+                  r.mu_a[i * kMax + l];
+  for (int i = 0; i < last; ++i) scale[i] = 1 / (scale[i] + scale[last]);  // held as its reciprocal
   auto residual = [&](const Vec& g, Vec& res, Mat& j) {
     partial_cooling<S>(r, g, zeta, j);
     double norm = 0, sum = 0;
-    for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) / scale[i];
+    for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) * scale[i];
     for (int i = 0; i < S; ++i) sum += r.x[i] * g[i];
     res[last] = sum - 1;
     for (int i = 0; i < S; ++i) norm += res[i] * res[i];
     return norm;
   };
-  Vec res{};
+  Vec res{}, trial_res{};
+  Mat m{}, trial_jac{};  // Newton matrix and the trial point's Jacobian, reused by every iteration
   double norm = residual(gamma, res, jac);
   // Quadratic convergence: once |res| < 1e-11 the next full step reaches round-off; no search beyond it.
   for (int iteration = 0; iteration < 200 && norm > 1e-30; ++iteration) {
     const bool last_step = norm < 1e-22;
     // Newton in ln γ keeps every γ > 0: Σ_k J_ik γ_k du_k = −res_i.
-    Mat m{};
     for (int i = 0; i < S; ++i)
       for (int k = 0; k < S; ++k)
-        m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) / scale[i] : r.x[k]);
+        m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) * scale[i] : r.x[k]);
     Vec rhs{};
     for (int i = 0; i < S; ++i) rhs[i] = -res[i];
     const Vec du = solve<S>(m, rhs);
     double step = 1;
     for (int halving = 0; halving < (last_step ? 1 : 40); ++halving, step /= 2) {
-      Vec trial = gamma, trial_res{};
-      Mat trial_jac{};
+      Vec trial = gamma;
       // γ_k e^{δ}; near the root 1 + δ + δ²/2 suffices (the map u → γ only has to be right to first order).
       for (int k = 0; k < S; ++k) {
         const double delta = std::clamp(step * du[k], -5.0, 5.0);
@@ -206,7 +205,16 @@ void cooling_state(Reduced& r) {
   for (int k = 0; k < S; ++k) {
     r.theta[k] = r.m[k] / gamma[k];
     r.root_theta[k] = std::sqrt(r.theta[k]);
+    r.inverse_root_theta[k] = 1 / r.root_theta[k];
+    r.inverse_theta[k] = gamma[k] * r.inverse_m[k];
   }
+  for (int i = 0; i < S; ++i)
+    for (int j = i; j < S; ++j) {
+      const double root = std::sqrt(r.theta[i] + r.theta[j]), inverse = 1 / root;
+      r.root_sum[i * kMax + j] = r.root_sum[j * kMax + i] = root;
+      r.inverse_root_sum[i * kMax + j] = r.inverse_root_sum[j * kMax + i] = inverse;
+      r.speed[i * kMax + j] = r.speed[j * kMax + i] = root * r.inverse_root_theta[i] * r.inverse_root_theta[j];
+    }
   r.zeta = zeta[last];
 }
 
@@ -222,13 +230,15 @@ Sensitivity cooling_sensitivity(const Reduced& r) {
   Mat m{};
   for (int i = 0; i < S; ++i)
     for (int k = 0; k < S; ++k) m[i * kMax + k] = i < last ? jac[i * kMax + k] - jac[last * kMax + k] : r.x[k];
+  const Lu<S> lu(m);  // one factorisation for the s right-hand sides
   Sensitivity out;
   const double f = -2 * r.c_d / r.d;
-  Mat rate{};  // w_il E_il
+  // w_il E_il at the HCS, the pair energy change (16.3) E_il = −2μ_li(1+α)[1 − ½μ_li(1+α)(1 + θ_i/θ_l)]
+  Mat rate{};
   for (int i = 0; i < S; ++i)
     for (int l = 0; l < S; ++l) {
-      const PairCooling p = pair_cooling(r, r.gamma, i, l);
-      rate[i * kMax + l] = p.w * p.e;
+      const double ma = r.mu_a[i * kMax + l];
+      rate[i * kMax + l] = r.speed[i * kMax + l] * -2 * ma * (1 - 0.5 * ma * (1 + r.theta[i] * r.inverse_theta[l]));
     }
   for (int j = 0; j < S; ++j) {
     Vec explicit_part{}, rhs{};  // ∂ζ_i/∂n_j at fixed γ
@@ -237,11 +247,11 @@ Sensitivity cooling_sensitivity(const Reduced& r) {
       if (r.dense)  // χ_il moves with n_j (18.1)
         for (int l = 0; l < S; ++l)
           explicit_part[i] += f * r.x[l] * r.area[i * kMax + l] *
-                              r.closures.log_chi_derivative[(i * kMax + l) * kMax + j] * rate[i * kMax + l];
+                              r.closures->log_chi_derivative[(i * kMax + l) * kMax + j] * rate[i * kMax + l];
     }
     for (int i = 0; i < last; ++i) rhs[i] = -(explicit_part[i] - explicit_part[last]);
     rhs[last] = 1 - r.gamma[j];
-    const Vec dgamma = solve<S>(m, rhs);
+    const Vec dgamma = lu.solve(rhs);
     double dz = explicit_part[last];
     for (int k = 0; k < S; ++k) {
       out.log_gamma[k * kMax + j] = dgamma[k] / r.gamma[k];
@@ -262,10 +272,13 @@ struct PairIntegrals {
 };
 PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
   // t = θ_i/θ_j, k = μ_ji(1 + α_ij)(1 + t); with u = 1 + t the integrals are polynomials in k and t over u, u².
-  const double d = r.d, t = r.theta[i] / r.theta[j], ma = r.mu_a[i * kMax + j];
-  const double u = 1 + t, v = 1 / u, k = ma * u, st = r.root_theta[i] / r.root_theta[j];
+  // 1/u = θ_j/(θ_i + θ_j): no division per pair.
+  const int P = i * kMax + j;
+  const double d = r.d, t = r.theta[i] * r.inverse_theta[j], ma = r.mu_a[P];
+  const double u = 1 + t, v = r.theta[j] * r.inverse_root_sum[P] * r.inverse_root_sum[P], k = ma * u,
+               st = r.root_theta[i] * r.inverse_root_theta[j];
   PairIntegrals p{};
-  p.rate = r.c_d * std::sqrt(1 / r.theta[i] + 1 / r.theta[j]) * ma;
+  p.rate = r.c_d * r.speed[P] * ma;
   p.self00 = -1;                                                                                  // (17.16)
   p.other00 = st;                                                                                 // (17.16)
   p.self10 = (2 * k * k - 0.5 * k * ((d + 2) * t + d + 11) + (d + 2) * t + (2 * d + 7) / 2) * v;  // (17.16)
@@ -344,7 +357,7 @@ class VectorMode {
     Mat m = op.l00;
     for (int i = 0; i < S; ++i) m[i * kMax + i] += shift0;
     // Σ_k m_k ∫V X_k = 0 replaces the most abundant species' row (17.7).
-    for (int k = 0; k < S; ++k) m[r.major * kMax + k] = r.m[k] / r.root_theta[k];
+    for (int k = 0; k < S; ++k) m[r.major * kMax + k] = r.m[k] * r.inverse_root_theta[k];
     return m;
   }
   static Mat heat_matrix(const Operator& op, double shift11) {
@@ -369,26 +382,30 @@ struct PairTransfer {
   double energy, energy_self, energy_partner, cooling_gradient;  // shear_gradient = −4 for every pair
 };
 PairTransfer pair_transfer(const Reduced& r, int i, int j) {
-  const double d = r.d, ti = r.theta[i], tj = r.theta[j], k = r.mu_a[i * kMax + j], mi = r.m[i];
-  const double sum = ti + tj, root = std::sqrt(sum), rti = r.root_theta[i], rtj = r.root_theta[j];
-  const double sp = std::sqrt(std::numbers::pi), ks = k * sum, over = sp / (rtj * root);  // √π/√(θ_j(θ_i+θ_j))
+  // Every division of the printed forms is by √θ_i, √θ_j, θ_i, θ_j or √(θ_i+θ_j), shared from Reduced.
+  const int P = i * kMax + j;
+  const double d = r.d, ti = r.theta[i], tj = r.theta[j], k = r.mu_a[P], mi = r.m[i];
+  const double sum = ti + tj, root = r.root_sum[P], rti = r.root_theta[i], rtj = r.root_theta[j];
+  const double iti = r.inverse_theta[i], itj = r.inverse_theta[j], irti = r.inverse_root_theta[i],
+               irtj = r.inverse_root_theta[j], irs = r.inverse_root_sum[P];
+  const double sp = std::sqrt(std::numbers::pi), ks = k * sum, over = sp * irtj * irs;  // √π/√(θ_j(θ_i+θ_j))
   PairTransfer t{};
-  t.density0 = -0.5 * k * sp * root / rtj;                                         // (17.26)
-  t.temperature0 = -0.5 * k * ti * over;                                           // (17.26)
-  t.density1 = 0.75 * k * (ks - 2 * tj) * (ks - tj) * over / tj;                   // (17.26)
-  t.temperature1 = 0.75 * k * k * ti * (2 * ks - 3 * tj) * over / tj;              // (17.26)
-  t.shear_source = -(d - 1) / (4 * d) * k * rti * (3 * ks - 4 * tj) * over / rtj;  // (17.26)
-  t.shear_partner = (d - 1) / (2 * d) * rti * over;                                // (17.27)
-  t.shear_self = (d - 1) / (2 * d) * sp * rtj / (rti * root);                      // (17.27)
-  t.heat_partner0 = -k * mi * (3 * ks - 4 * tj) * over / (8 * rti * rtj);          // (17.27)
-  t.heat_partner1 = 3 * k * k * mi * rti * over / (8 * rtj);                       // (17.27)
-  t.heat_self0 = k * mi * (3 * ks - 2 * ti - 6 * tj) * over / (8 * ti);            // (17.27)
-  t.heat_self1 = -3 * k * mi * tj * (k - 2) * over / (8 * ti);                     // (17.27)
-  const double e = k * mi / (4 * ti * tj * sum), ti2 = ti * ti, tt = ti * tj, tj2 = tj * tj;
+  t.density0 = -0.5 * k * sp * root * irtj;                                         // (17.26)
+  t.temperature0 = -0.5 * k * ti * over;                                            // (17.26)
+  t.density1 = 0.75 * k * (ks - 2 * tj) * (ks - tj) * over * itj;                   // (17.26)
+  t.temperature1 = 0.75 * k * k * ti * (2 * ks - 3 * tj) * over * itj;              // (17.26)
+  t.shear_source = -(d - 1) / (4 * d) * k * rti * (3 * ks - 4 * tj) * over * irtj;  // (17.26)
+  t.shear_partner = (d - 1) / (2 * d) * rti * over;                                 // (17.27)
+  t.shear_self = (d - 1) / (2 * d) * sp * rtj * irti * irs;                         // (17.27)
+  t.heat_partner0 = -k * mi * (3 * ks - 4 * tj) * over * irti * irtj / 8;           // (17.27)
+  t.heat_partner1 = 3 * k * k * mi * rti * over * irtj / 8;                         // (17.27)
+  t.heat_self0 = k * mi * (3 * ks - 2 * ti - 6 * tj) * over * iti / 8;              // (17.27)
+  t.heat_self1 = -3 * k * mi * tj * (k - 2) * over * iti / 8;                       // (17.27)
+  const double e = k * mi * iti * itj * irs * irs / 4, ti2 = ti * ti, tt = ti * tj, tj2 = tj * tj;
   t.energy = 2 * e * sum * (ks - 2 * tj);  // (17.27)
   t.energy_self = e * (k * (d * ti2 + (2 * d + 3) * tt + (d + 3) * tj2) - (2 * d + 4) * tt - (2 * d + 6) * tj2);
   t.energy_partner = e * (k * ((d + 3) * ti2 + (2 * d + 3) * tt + d * tj2) - (2 * d + 2) * tt - 2 * d * tj2);
-  t.cooling_gradient = -1.5 * sp * root / (rti * rtj);  // (17.27)
+  t.cooling_gradient = -1.5 * sp * root * irti * irtj;  // (17.27)
   return t;
 }
 
@@ -440,7 +457,7 @@ Reduced reduce(const MixtureCell& cell) {
       g.sigma[i] = cell.diameter[i] / mean_diameter;
       g.fraction[i] = cell.fraction[i];
     }
-    r.closures = detail::dense_cell_closures(g);
+    detail::dense_cell_closures(g, r.closures.emplace());
   }
   for (int i = 0; i < r.s; ++i) {
     r.m[i] = cell.mass[i] / mean_mass;
@@ -449,9 +466,9 @@ Reduced reduce(const MixtureCell& cell) {
     if (r.x[i] > r.x[r.major]) r.major = i;
     for (int j = 0; j < r.s; ++j) {
       const double sigma = 0.5 * (cell.diameter[i] + cell.diameter[j]) / mean_diameter;
-      r.area[i * kMax + j] = (r.d == 3 ? sigma * sigma : sigma) * (r.dense ? r.closures.chi[i * kMax + j] : 1.0);
+      r.area[i * kMax + j] = (r.d == 3 ? sigma * sigma : sigma) * (r.dense ? r.closures->chi[i * kMax + j] : 1.0);
       r.sigma[i * kMax + j] = sigma;
-      r.length[i * kMax + j] = r.closures.density * sigma;
+      r.length[i * kMax + j] = r.dense ? r.closures->density * sigma : 0.0;
       r.mu_a[i * kMax + j] = cell.mass[j] / (cell.mass[i] + cell.mass[j]) * (1 + cell.restitution[i * kMax + j]);
       r.alpha[i * kMax + j] = cell.restitution[i * kMax + j];
     }
@@ -474,6 +491,9 @@ PublishedFirstSonine first_sonine(Reduced& r) {
   // d(d+2)/4; D(0,0) = −d/4, D(1,0) = d(d+2)/4, D(1,1) = −3d(d+2)/8; shear D = −(d−1)(d+2)/8.
   const double m00 = d / 2, m11 = d * (d + 2) / 4, d00 = -d / 4, d10 = m11, d11 = -3 * m11 / 2;
   const double temperature = 0.5;
+  // Reciprocals of the reductions and of the d-dependent denominators, taken once per call.
+  const double per_diffusion = 1 / r.ref.self_diffusion, per_conductivity = 1 / r.ref.conductivity,
+               per_viscosity = 1 / r.ref.viscosity, per_d = 1 / d, per_d2 = 1 / (d + 2);
   PublishedFirstSonine out;
   out.cooling_rate = z / r.ref.collision_frequency;
   for (int i = 0; i < S; ++i) {
@@ -483,7 +503,7 @@ PublishedFirstSonine first_sonine(Reduced& r) {
 
   // Dense gas: the pair averages (17.26)–(17.27), the rate R_ij = σ_ij^{d−1} χ_ij c_d w_ij, p* and
   // P_ℓ = ∂p/∂n_ℓ/T (18.2).
-  std::array<PairTransfer, kMax * kMax> transfer{};
+  std::array<PairTransfer, kMax * kMax> transfer;  // the s² pairs written below before any read
   Mat rate{};
   if (r.dense) {
     const double b2 = r.d == 3 ? 2 * std::numbers::pi / 3 : std::numbers::pi / 2;  // π^{(d−1)/2}Γ(3/2)/Γ(d/2+1)
@@ -491,37 +511,43 @@ PublishedFirstSonine first_sonine(Reduced& r) {
       for (int j = 0; j < S; ++j) {
         const int P = i * kMax + j;
         transfer[P] = pair_transfer(r, i, j);
-        rate[P] = r.area[P] * r.c_d * std::sqrt(1 / r.theta[i] + 1 / r.theta[j]);
+        rate[P] = r.area[P] * r.c_d * r.speed[P];
         const double sd = r.d == 3 ? r.sigma[P] * r.sigma[P] * r.sigma[P] : r.sigma[P] * r.sigma[P];
-        const double w = r.closures.density * b2 * r.mu_a[P] * sd * r.closures.chi[P] * r.gamma[i];
+        const double w = r.closures->density * b2 * r.mu_a[P] * sd * r.closures->chi[P] * r.gamma[i];
         out.pressure += w * r.x[i] * r.x[j];
         for (int l = 0; l < S; ++l)
           out.pressure_derivative[l] +=
               w * ((i == l ? r.x[j] : 0.0) + (j == l ? r.x[i] : 0.0) +
-                   r.x[i] * r.x[j] * (r.closures.log_chi_derivative[P * kMax + l] + sens.log_gamma[i * kMax + l]));
+                   r.x[i] * r.x[j] * (r.closures->log_chi_derivative[P * kMax + l] + sens.log_gamma[i * kMax + l]));
       }
   }
   // The collisional heat flux (18.9) of a vector-mode solution, f0 f^(1) part:
   // −(1/(2d)) Σ_ij L R [x_i ⟨⟨(σ̂·c2)ΔE_1 X_j⟩⟩ + x_j ⟨⟨(σ̂·c1)ΔE_1 X_i⟩⟩].
-  auto collisional_heat = [&](const VectorSolution& v) {
-    double q = 0;
+  // It is linear in the solution: Σ_k (h0_k φ̃_k0 + h1_k φ̃_k1) with the weights gathered once from the pairs.
+  Vec h0{}, h1{};
+  if (r.dense)
     for (int i = 0; i < S; ++i)
       for (int j = 0; j < S; ++j) {
         const int P = i * kMax + j;
         const PairTransfer& t = transfer[P];
-        q -= r.length[P] * rate[P] / (2 * d) *
-             (r.x[i] * (t.heat_partner0 * v.s0[j] + t.heat_partner1 * v.s1[j]) +
-              r.x[j] * (t.heat_self0 * v.s0[i] + t.heat_self1 * v.s1[i]));
+        const double c = -r.length[P] * rate[P] * 0.5 * per_d;
+        h0[j] += c * r.x[i] * t.heat_partner0;
+        h1[j] += c * r.x[i] * t.heat_partner1;
+        h0[i] += c * r.x[j] * t.heat_self0;
+        h1[i] += c * r.x[j] * t.heat_self1;
       }
+  auto collisional_heat = [&](const VectorSolution& v) {
+    double q = 0;
+    for (int k = 0; k < S; ++k) q += h0[k] * v.s0[k] + h1[k] * v.s1[k];
     return q;
   };
-  auto gradient_heat = [&](int P) { return -r.length[P] * r.length[P] * rate[P] / (4 * d); };
+  auto gradient_heat = [&](int P) { return -r.length[P] * r.length[P] * rate[P] * 0.25 * per_d; };
 
   // 𝒜 (∇ln T), sources (17.5), (18.4): −x_i θ_i^{−1/2}[(1 − θ_i p*) M(p,0) − M(p,1)] + Σ_j L R x_i x_j ⟨⟨…(X2 − d/2)⟩⟩.
   Vec a0{}, a1{};
   for (int i = 0; i < S; ++i) {
-    a0[i] = -r.x[i] / r.root_theta[i] * (1 - r.theta[i] * out.pressure) * m00;
-    a1[i] = r.x[i] / r.root_theta[i] * m11;
+    a0[i] = -r.x[i] * r.inverse_root_theta[i] * (1 - r.theta[i] * out.pressure) * m00;
+    a1[i] = r.x[i] * r.inverse_root_theta[i] * m11;
     if (r.dense)
       for (int j = 0; j < S; ++j) {
         const int P = i * kMax + j;
@@ -535,13 +561,14 @@ PublishedFirstSonine first_sonine(Reduced& r) {
       force_mode(r, op, z * (d00 + m00), z * d10, z * (d11 + m11));
   // Number flux ∫V·X_i/d = φ̃_i0/(2√θ_i); kinetic heat flux ∫½m_iV²V·X_i/d = (m_i/(2d))θ_i^{−3/2}(F_0φ̃_i0 + F_1φ̃_i1)
   // (17.9)–(17.10).
-  auto number_flux = [&](const VectorSolution& v, int i) { return v.s0[i] / (2 * r.root_theta[i]); };
-  auto heat_flux = [&](const VectorSolution& v, int i) {
-    return r.m[i] / (2 * d * r.theta[i] * r.root_theta[i]) * m11 * (v.s0[i] - v.s1[i]);
-  };
+  Vec heat_weight{};  // (m_i/(2d)) θ_i^{−3/2} F_0
+  for (int i = 0; i < S; ++i)
+    heat_weight[i] = r.m[i] * 0.5 * per_d * r.inverse_theta[i] * r.inverse_root_theta[i] * m11;
+  auto number_flux = [&](const VectorSolution& v, int i) { return v.s0[i] * 0.5 * r.inverse_root_theta[i]; };
+  auto heat_flux = [&](const VectorSolution& v, int i) { return heat_weight[i] * (v.s0[i] - v.s1[i]); };
   for (int i = 0; i < S; ++i) {
-    out.thermal_diffusion[i] = -r.m[i] * number_flux(heat, i) / r.ref.self_diffusion;
-    out.thermal_conductivity_species[i] = -heat_flux(heat, i) / temperature / r.ref.conductivity;
+    out.thermal_diffusion[i] = -r.m[i] * number_flux(heat, i) * per_diffusion;
+    out.thermal_conductivity_species[i] = -heat_flux(heat, i) / temperature * per_conductivity;
     out.thermal_conductivity += out.thermal_conductivity_species[i];
   }
   if (r.dense) {  // (18.9): f0 f^(1) and f0 ∂f0 parts
@@ -551,24 +578,24 @@ PublishedFirstSonine first_sonine(Reduced& r) {
         const int P = i * kMax + j;
         q += gradient_heat(P) * r.x[i] * r.x[j] * (transfer[P].energy_partner - transfer[P].energy_self);
       }
-    out.thermal_conductivity -= q / temperature / r.ref.conductivity;
+    out.thermal_conductivity -= q / temperature * per_conductivity;
   }
   // ℬ^j (∇n_j), sources (17.6), (18.4): −θ_i^{−1/2}[δ_ij M(p,0) + x_i(∂_j ln γ_i (M(p,0) − M(p,1)) − θ_i P_j M(p,0))]
   // + ∂ζ/∂n_j M φ̃^𝒜_i + the transfer of the pairs (i, k) (18.21).
   for (int j = 0; j < S; ++j) {
     Vec b0{}, b1{};
     for (int i = 0; i < S; ++i) {
-      const double g = sens.log_gamma[i * kMax + j], root = r.root_theta[i];
-      b0[i] = -m00 / root * ((i == j ? 1.0 : 0.0) + r.x[i] * (g - r.theta[i] * out.pressure_derivative[j])) +
+      const double g = sens.log_gamma[i * kMax + j], per_root = r.inverse_root_theta[i];
+      b0[i] = -m00 * per_root * ((i == j ? 1.0 : 0.0) + r.x[i] * (g - r.theta[i] * out.pressure_derivative[j])) +
               sens.zeta[j] * m00 * heat.s0[i];
-      b1[i] = m11 / root * r.x[i] * g + sens.zeta[j] * m11 * heat.s1[i];
+      b1[i] = m11 * per_root * r.x[i] * g + sens.zeta[j] * m11 * heat.s1[i];
       if (r.dense)
         for (int k = 0; k < S; ++k) {
           const int P = i * kMax + k;
           const PairTransfer& t = transfer[P];
           const double f = r.length[P] * rate[P] * r.x[i], gk = sens.log_gamma[k * kMax + j];
-          const double density = (k == j ? 1.0 : 0.0) + 0.5 * (r.x[k] * r.closures.log_chi_derivative[P * kMax + j] +
-                                                               r.closures.functionals[P * kMax + j]);
+          const double density = (k == j ? 1.0 : 0.0) + 0.5 * (r.x[k] * r.closures->log_chi_derivative[P * kMax + j] +
+                                                               r.closures->functionals[P * kMax + j]);
           b0[i] += f * (density * t.density0 + r.x[k] * gk * t.temperature0);
           b1[i] += f * (density * t.density1 + r.x[k] * gk * t.temperature1);
         }
@@ -576,8 +603,8 @@ PublishedFirstSonine first_sonine(Reduced& r) {
     const VectorSolution density = density_mode.solve(b0, b1);
     double collisional = 0;
     for (int i = 0; i < S; ++i) {
-      out.mutual_diffusion[i * kMax + j] = -number_flux(density, i) / (r.m[j] * r.ref.self_diffusion);
-      out.dufour_species[i * kMax + j] = -r.x[j] * heat_flux(density, i) / (temperature * r.ref.conductivity);
+      out.mutual_diffusion[i * kMax + j] = -number_flux(density, i) * r.inverse_m[j] * per_diffusion;
+      out.dufour_species[i * kMax + j] = -r.x[j] * heat_flux(density, i) / temperature * per_conductivity;
       out.dufour[j] += out.dufour_species[i * kMax + j];
     }
     if (r.dense) {
@@ -589,24 +616,24 @@ PublishedFirstSonine first_sonine(Reduced& r) {
           const double gi = sens.log_gamma[i * kMax + j], gk = sens.log_gamma[k * kMax + j];
           // (18.22) with the off-midpoint contact value I_jik/x_k per ∇n_j
           const double v =
-              ((k == j ? r.x[i] : 0.0) - (i == j ? r.x[k] : 0.0) + r.x[i] * r.closures.functionals[P * kMax + j]) *
+              ((k == j ? r.x[i] : 0.0) - (i == j ? r.x[k] : 0.0) + r.x[i] * r.closures->functionals[P * kMax + j]) *
                   t.energy +
               r.x[i] * r.x[k] *
                   (gk * (t.energy_partner - 0.5 * d * t.energy) - gi * (t.energy_self - 0.5 * d * t.energy));
           collisional += gradient_heat(P) * v;
         }
-      out.dufour[j] -= r.x[j] * collisional / (temperature * r.ref.conductivity);
+      out.dufour[j] -= r.x[j] * collisional / temperature * per_conductivity;
     }
     // External force on species j (18.14): source 2√θ_i x_i M(0,0)(δ_ij/m_i − x_j), operator ζ(D + M).
     Vec f0{};
-    for (int i = 0; i < S; ++i) f0[i] = 2 * r.root_theta[i] * r.x[i] * ((i == j ? 1 / r.m[i] : 0.0) - r.x[j]) * m00;
+    for (int i = 0; i < S; ++i) f0[i] = 2 * r.root_theta[i] * r.x[i] * ((i == j ? r.inverse_m[i] : 0.0) - r.x[j]) * m00;
     const VectorSolution force = force_mode.solve(f0, Vec{});
     for (int i = 0; i < S; ++i) {
-      out.mobility[i * kMax + j] = -r.m[i] * number_flux(force, i) * temperature / r.ref.self_diffusion;
-      out.heat_mobility_species[i * kMax + j] = -heat_flux(force, i) / r.ref.conductivity;
+      out.mobility[i * kMax + j] = -r.m[i] * number_flux(force, i) * temperature * per_diffusion;
+      out.heat_mobility_species[i * kMax + j] = -heat_flux(force, i) * per_conductivity;
       out.heat_mobility[j] += out.heat_mobility_species[i * kMax + j];
     }
-    if (r.dense) out.heat_mobility[j] -= collisional_heat(force) / r.ref.conductivity;  // (18.15)
+    if (r.dense) out.heat_mobility[j] -= collisional_heat(force) * per_conductivity;  // (18.15)
   }
   for (int i = 0; i < S; ++i)
     for (int j = 0; j < S; ++j)
@@ -626,7 +653,7 @@ PublishedFirstSonine first_sonine(Reduced& r) {
   }
   const Vec c = solve<S>(shear, source);
   for (int i = 0; i < S; ++i) {
-    out.shear_viscosity_species[i] = -r.m[i] / r.theta[i] * c[i] / 4 / r.ref.viscosity;
+    out.shear_viscosity_species[i] = -r.m[i] * r.inverse_theta[i] * c[i] * 0.25 * per_viscosity;
     out.shear_viscosity += out.shear_viscosity_species[i];
   }
   if (r.dense) {
@@ -634,19 +661,21 @@ PublishedFirstSonine first_sonine(Reduced& r) {
     // f0 ∂f0 part with ⟨⟨(σ̂·g)σ̂·(2θ_j v2 − 2θ_i v1)⟩⟩ = −4, whose (d+2)/d multiple is the bulk viscosity; ζ_U of
     // (17.18).
     double eta = 0, gradient = 0;
+    const double per_shear = 0.5 / (d - 1) * per_d2;  // 1/(2(d−1)(d+2))
     for (int i = 0; i < S; ++i)
       for (int j = 0; j < S; ++j) {
         const int P = i * kMax + j;
         const PairTransfer& t = transfer[P];
         const double w = r.m[i] * r.mu_a[P] * r.length[P] * rate[P];
-        eta -= w / (2 * (d - 1) * (d + 2)) * (r.x[i] * t.shear_partner * c[j] + r.x[j] * t.shear_self * c[i]);
-        gradient += w * r.length[P] * r.x[i] * r.x[j] / (d * (d + 2));
+        eta -= w * per_shear * (r.x[i] * t.shear_partner * c[j] + r.x[j] * t.shear_self * c[i]);
+        gradient += w * r.length[P] * r.x[i] * r.x[j] * per_d * per_d2;
         const double a = r.alpha[P];
-        out.cooling_rate_first_order += (1 - a * a) * r.m[i] * r.mu_a[P] / (1 + a) * rate[P] * r.length[P] * r.x[i] *
-                                        r.x[j] * t.cooling_gradient / (d * d);
+        // (1 − α²)/(1 + α) = 1 − α
+        out.cooling_rate_first_order +=
+            (1 - a) * r.m[i] * r.mu_a[P] * rate[P] * r.length[P] * r.x[i] * r.x[j] * t.cooling_gradient * per_d * per_d;
       }
-    out.shear_viscosity += (eta + gradient) / r.ref.viscosity;
-    out.bulk_viscosity = (d + 2) / d * gradient / r.ref.viscosity;
+    out.shear_viscosity += (eta + gradient) * per_viscosity;
+    out.bulk_viscosity = (d + 2) * per_d * gradient * per_viscosity;
   }
   return out;
 }
