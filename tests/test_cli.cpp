@@ -283,6 +283,32 @@ TEST(CliValues, MixtureTransport) {
   EXPECT_NE(same.out.find(",1.70666666666666"), std::string::npos) << same.out;
 }
 
+// basis_width = "auto" (theory.md (17.30)): where the rule keeps width 1 (α = 0.9, m2/m1 = 2: A*²/4 ≫ 12)
+// the table is the standard one byte for byte; it widens at α = 0.5 and changes the values; it is refused,
+// naming the key, with exit 2 and no output, for a dense gas, the cumulant reference or an unknown choice.
+TEST(CliValues, MixtureAutomaticBasisWidth) {
+  const std::string base = "table " + scene_path("mixture_transport.toml") +
+                           " --set mass_2=2 --set diameter_2=1 --set order=6 --set dimension=3" +
+                           " --set 'coefficients=[\"mutual_diffusion_1_2\", \"thermal_conductivity\"]'";
+  const CliRun standard = run_gkt(base + " --set alpha=0.9"),
+               automatic = run_gkt(base + " --set alpha=0.9 --set 'basis_width=\"auto\"'");
+  ASSERT_EQ(standard.status, 0) << standard.err;
+  ASSERT_EQ(automatic.status, 0) << automatic.err;
+  EXPECT_EQ(standard.out, automatic.out);
+  const CliRun wide = run_gkt(base + " --set alpha=0.5 --set 'basis_width=\"auto\"'"),
+               narrow = run_gkt(base + " --set alpha=0.5");
+  ASSERT_EQ(wide.status, 0) << wide.err;
+  EXPECT_NE(wide.out, narrow.out);
+  for (const char* bad :
+       {" --set packing_fraction=0.1 --set 'basis_width=\"auto\"'",
+        " --set 'reference_state=\"hcs\"' --set 'basis_width=\"auto\"'", " --set 'basis_width=\"wide\"'"}) {
+    const CliRun r = run_gkt(base + " --set alpha=0.5" + bad);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_EQ(r.err.rfind("gkt: error: basis_width: ", 0), 0U) << r.err;
+    EXPECT_TRUE(r.out.empty()) << bad;
+  }
+}
+
 TEST(CliValues, NavierStokesFirstSonineExact) {
   const CliRun r = run_gkt("table " + scene_path("navier_stokes_first_sonine.toml") + " --exact");
   ASSERT_EQ(r.status, 0) << r.err;

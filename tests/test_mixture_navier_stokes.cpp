@@ -12,6 +12,7 @@
 
 #include "gkt/evolution/hcs_stability.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_basis_width.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 #include "gkt/transport/mixture/mixture_tail_exponents.hpp"
@@ -388,6 +389,71 @@ TEST(MixtureTailExponents, OneComponentLimitAndTheTurningOrder) {
   const auto a = gkt::mixture_tail_exponents(wide, gkt::mixture_cooling_state(wide));
   EXPECT_NEAR(a[0] * a[0] / 4, 2.68, 0.01);
   EXPECT_LT(a[0], a[1]);
+}
+
+// The automatic width (17.30), w = clamp(4N*/A*², 1, 2). Identical species: A* is the one-component
+// 3√(π/2)/(1 − α²) (the test above), so w = 48(1 − α²)²/(9π/2) at N* = 12: 1.9099 at α = 0.5, the cap
+// 1 ≤ w at α = 0.9 (A*²/4 = 97.9 > 12); 1 at α = 1 (no tail). At (m2/m1, σ2/σ1) = (1000, 10), α = 0.5, the
+// light species' A_1²/4 = 5.9 asks for 2.03, capped at 2 (the hand-chosen width that converges there). A
+// heavy small species among light wide ones (100, 0.1) is dragged by its light partners (share
+// s_2 = 0.05 < 1/2) that are faster than it at α = 0.9 (thermal speed² ratio 0.17): it does not count, the
+// light species' A_1 = 287 keeps the standard basis, which converges there and a wide one does not; at
+// (1000, 0.1), α = 0.5, the heavy species is as fast as the light (ratio 0.91), its drag grows with its
+// speed, s_2 A_2 = 4.3 counts and w = 2 (theory.md §17.13). Bad target order refused.
+TEST(MixtureBasisWidth, AutomaticRuleFromTheTailExponents) {
+  auto widths = [](const gkt::Mixture& m, int target = 12) {
+    return gkt::mixture_basis_width(m, gkt::mixture_cooling_state(m), target);
+  };
+  for (double alpha : {0.5, 0.9}) {
+    const double a = 3 * std::sqrt(std::numbers::pi / 2) / (1 - alpha * alpha);
+    const auto w = widths(binary(3, 1, 1, 0.3, alpha));
+    ASSERT_EQ(w.size(), 2U);
+    for (double v : w) EXPECT_NEAR(v, std::max(1.0, 48 / (a * a)), 1e-9) << alpha;
+  }
+  EXPECT_NEAR(widths(binary(3, 1, 1, 0.5, 0.5))[0], 1.9099, 1e-4);
+  EXPECT_EQ(widths(binary(3, 2, 1.5, 0.5, 1)), std::vector<double>({1.0, 1.0}));
+  EXPECT_EQ(widths(binary(3, 1000, 10, 0.5, 0.5)), std::vector<double>({2.0, 2.0}));
+  EXPECT_EQ(widths(binary(3, 100, 0.1, 0.5, 0.9)), std::vector<double>({1.0, 1.0}));
+  EXPECT_EQ(widths(binary(3, 0.01, 10, 0.5, 0.9)), std::vector<double>({1.0, 1.0}));  // the mirror state
+  EXPECT_EQ(widths(binary(3, 1000, 0.1, 0.5, 0.5)), std::vector<double>({2.0, 2.0}));
+  EXPECT_EQ(widths(binary(3, 1000, 0.1, 0.5, 0.9)), std::vector<double>({1.0, 1.0}));
+  try {
+    (void)widths(binary(3, 2, 1, 0.5, 0.5), 0);
+    ADD_FAILURE() << "target_order 0 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("target_order"), std::string::npos) << e.what();
+  }
+}
+
+// A moderate ratio (m2/m1 = 2, equal sizes, α = 0.6; automatic width 1.39): the standard and the automatic
+// basis are two representations of the same solution, so their order-10 values agree within the sum of
+// their error estimates (the larger of the last two steps, orders 8–10). Measured: the standard errors are
+// 0.1–1 % (D_11* 2.0113 ± 0.0082, λ* 1.4702 ± 0.0171), the automatic ones ten times smaller (2.0164 ±
+// 0.0007, 1.4794 ± 0.0018), the differences 0.4–0.6 of the standard error; η* (tensor basis, not
+// widened) is the same number. At α = 0.5 the standard basis is not converged at order 10 (errors 16–160 %).
+TEST(MixtureBasisWidth, AutomaticAgreesWithTheStandardAtAModerateRatio) {
+  const gkt::Mixture m = binary(3, 2, 1, 0.5, 0.6);
+  const auto w = gkt::mixture_basis_width(m, gkt::mixture_cooling_state(m));
+  ASSERT_GT(w[0], 1.3);  // a width the rule really changes
+  const gkt::MixtureNavierStokes standard(m, 10), automatic(m, 10, {.basis_width = w});
+  const std::vector<double (*)(const gkt::MixtureTransportValues&)> get = {
+      [](const gkt::MixtureTransportValues& x) { return x.mutual_diffusion[0]; },
+      [](const gkt::MixtureTransportValues& x) { return x.mutual_diffusion[1]; },
+      [](const gkt::MixtureTransportValues& x) { return x.pressure_diffusion[0]; },
+      [](const gkt::MixtureTransportValues& x) { return x.thermal_diffusion[0]; },
+      [](const gkt::MixtureTransportValues& x) { return x.thermal_conductivity; },
+      [](const gkt::MixtureTransportValues& x) { return x.dufour[0]; },
+      [](const gkt::MixtureTransportValues& x) { return x.dufour[1]; },
+      [](const gkt::MixtureTransportValues& x) { return x.shear_viscosity; }};
+  std::vector<gkt::MixtureTransportValues> s, a;
+  for (int n = 8; n <= 10; ++n) s.push_back(standard.coefficients(n)), a.push_back(automatic.coefficients(n));
+  auto error = [](const std::vector<gkt::MixtureTransportValues>& v, auto f) {
+    return std::max(std::abs(f(v[2]) - f(v[1])), std::abs(f(v[1]) - f(v[0])));
+  };
+  for (std::size_t k = 0; k < get.size(); ++k) {
+    const double es = error(s, get[k]), ea = error(a, get[k]);
+    EXPECT_LE(std::abs(get[k](s[2]) - get[k](a[2])), es + ea) << k;
+  }
 }
 
 // Dense mixtures are refused with a one-line error naming the field.

@@ -15,6 +15,7 @@
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/common/sonine_solution.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_basis_width.hpp"
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 #include "gkt/transport/mixture/tracer_diffusion.hpp"
@@ -96,6 +97,11 @@ class MixtureModel final : public TransportModel {
                             "species distributions f0 of the Navier-Stokes coefficients: Maxwellian at T_i (GDH) or "
                             "the HCS of `hcs` with its cumulants a_2 ... a_K (K = hcs_order)",
                             {"maxwellian", "hcs"}),
+        detail::choice_spec("basis_width",
+                            "Gaussian width of each species' vector Sonine basis (dilute, Maxwellian reference): its "
+                            "own temperature T_i, or the automatic width of theory.md (17.30) from the species' tail "
+                            "exponents (wider at strong dissipation, where the standard series turns)",
+                            {"standard", "auto"}),
         {"hcs_order",
          ParameterSpec::Kind::integer,
          Rational(2),
@@ -137,7 +143,8 @@ class MixtureModel final : public TransportModel {
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     std::vector<ParameterSpec> specs;
     for (const auto& spec : parameters())
-      if (spec.name != "reduced_gravity" && spec.name != "reference_state") specs.push_back(spec);
+      if (spec.name != "reduced_gravity" && spec.name != "reference_state" && spec.name != "basis_width")
+        specs.push_back(spec);
     const ParameterSpec a2 = detail::evolution_a2_spec(2);  // the union of both dimensions' ranges; evolve() checks d's
     for (int i = 1; i <= kMaxSpecies; ++i) {
       specs.push_back(real(index_name("temperature_ratio", i), Rational(0), false, Rational(1000000L), true,
@@ -262,6 +269,22 @@ class MixtureModel final : public TransportModel {
       }
       transport.reference = {scheme, k};
     }
+    // basis_width = "auto": one width for every species' vector basis (theory.md (17.30)); all 1 is the
+    // standard basis, kept as such (the wide build costs ≈ 2.3 times the standard one).
+    if (p.choice("basis_width") == "auto") {
+      if (transport.published)
+        throw std::invalid_argument(
+            "basis_width: \"auto\" cannot be combined with scheme = \"published\" (GDH's first Sonine is defined "
+            "in the standard basis); use basis_width = \"standard\"");
+      if (p.choice("reference_state") == "hcs")
+        throw std::invalid_argument(
+            "basis_width: \"auto\" needs reference_state = \"maxwellian\" (the cumulant reference keeps the "
+            "standard basis)");
+      if (mixture.packing_fraction > 0)
+        throw std::invalid_argument("basis_width: \"auto\" is for the dilute gas only (packing_fraction = 0)");
+      const std::vector<double> w = mixture_basis_width(mixture, mixture_cooling_state(mixture));
+      if (std::any_of(w.begin(), w.end(), [](double v) { return v != 1.0; })) transport.reference.basis_width = w;
+    }
     for (const auto& c : coefficients) {
       const Parsed parsed = parse(c);
       const Kind kind = parsed.kind;
@@ -276,7 +299,9 @@ class MixtureModel final : public TransportModel {
       }
       const auto k = static_cast<std::size_t>(i > 0 ? i - 1 : 0);
       if (kind == Kind::tracer_diffusion) {
-        out.push_back(tracer_diffusion(mixture, k, order, transport.reference));
+        MixtureReference tracer = transport.reference;
+        tracer.basis_width.clear();  // D* of a tracer keeps the standard basis (its own Sonine series)
+        out.push_back(tracer_diffusion(mixture, k, order, tracer));
         continue;
       }
       // The HCS carries a_2 … a_K (K = hcs_order) whatever the transport order. The errors of ζ* and
