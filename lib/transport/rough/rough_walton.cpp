@@ -340,22 +340,12 @@ RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, d
   return {-g * 2.0 / d * dv, -g * 2.0 / (dr * tau) * dw};
 }
 
-RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha, const Rational& beta0,
-                                            const Rational& kappa, const Rational& friction) {
-  const double a = alpha.to_double(), b = beta0.to_double(), k = kappa.to_double(), mu = friction.to_double();
-  check(dimension, a, b, k, mu);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  RoughWaltonState out;
-  const auto decoupled = [&]() {
-    out.temperature_ratio = std::numeric_limits<double>::infinity();
-    out.cooling_rate = out.bulk_viscosity = out.cooling_rate_first_order = out.shear_viscosity = nan;
-    out.thermal_conductivity = out.density_heat_coefficient = nan;
-    out.spin_decoupled = true;
-    return out;
-  };
-  if (mu == 0 || b == -1) return decoupled();
+double rough_walton_temperature_ratio(int dimension, double alpha, double beta0, double kappa, double friction) {
+  check(dimension, alpha, beta0, kappa, friction);
+  const double none = std::numeric_limits<double>::infinity();
+  if (friction == 0 || beta0 == -1) return none;
   const auto residual = [&](double log_theta) {
-    const RoughWaltonRates r = rough_walton_rates(dimension, a, b, k, mu, std::exp(log_theta));
+    const RoughWaltonRates r = rough_walton_rates(dimension, alpha, beta0, kappa, friction, std::exp(log_theta));
     return r.translational - r.rotational;
   };
   // ζ_t − ζ_r > 0 as θ → 0 (the cold spin is heated); take the first sign change upwards in log θ.
@@ -371,7 +361,7 @@ RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha
     lo = x;
     f_lo = f;
   }
-  if (!found) return decoupled();
+  if (!found) return none;
   while (hi - lo > 1e-13) {
     const double mid = (lo + hi) / 2, f = residual(mid);
     if ((f > 0) == (f_lo > 0)) {
@@ -381,7 +371,24 @@ RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha
       hi = mid;
     }
   }
-  const double theta = std::exp((lo + hi) / 2);
+  return std::exp((lo + hi) / 2);
+}
+
+RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha, const Rational& beta0,
+                                            const Rational& kappa, const Rational& friction) {
+  const double a = alpha.to_double(), b = beta0.to_double(), k = kappa.to_double(), mu = friction.to_double();
+  check(dimension, a, b, k, mu);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  RoughWaltonState out;
+  const auto decoupled = [&]() {
+    out.temperature_ratio = std::numeric_limits<double>::infinity();
+    out.cooling_rate = out.bulk_viscosity = out.cooling_rate_first_order = out.shear_viscosity = nan;
+    out.thermal_conductivity = out.density_heat_coefficient = nan;
+    out.spin_decoupled = true;
+    return out;
+  };
+  const double theta = rough_walton_temperature_ratio(dimension, a, b, k, mu);
+  if (std::isinf(theta)) return decoupled();
   const RoughWaltonRates r = rough_walton_rates(dimension, a, b, k, mu, theta);
   out.temperature_ratio = theta;
   out.cooling_rate = r.translational;

@@ -80,6 +80,22 @@ inline ConditionedGaussian condition(int d, double tau) {
   return g;
 }
 
+/// Visits the nodes of the composite 8-point Gauss–Legendre rule on [lo, hi] with `panels` panels: f(node, weight),
+/// weight = w_i h/2 (h the panel width), per panel the four nodes left of its midpoint, then the four right of it.
+template <class F>
+void for_each_gauss_legendre_node(double lo, double hi, int panels, const F& f) {
+  static constexpr std::array<double, 4> x{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                           0.9602898564975363};
+  static constexpr std::array<double, 4> w{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                           0.1012285362903763};
+  if (!(hi > lo)) return;
+  const double h = (hi - lo) / panels;
+  for (int p = 0; p < panels; ++p) {
+    const double mid = lo + (p + 0.5) * h;
+    for (std::size_t i = 0; i < 8; ++i) f(mid + (i < 4 ? -1 : 1) * x[i % 4] * h / 2, w[i % 4] * h / 2);
+  }
+}
+
 /// Composite 8-point Gauss–Legendre rule on [lo, hi] with `panels` panels, for f returning N values.
 template <std::size_t N, class F>
 std::array<double, N> gauss_legendre(double lo, double hi, int panels, const F& f) {
