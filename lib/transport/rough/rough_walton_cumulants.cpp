@@ -21,14 +21,6 @@ namespace gkt {
 
 namespace {
 
-void check(int d, double alpha, double beta0, double kappa, double friction) {
-  if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(d));
-  if (!(alpha > 0 && alpha <= 1)) throw std::invalid_argument("alpha: must be a number in (0, 1]");
-  if (!(beta0 >= -1 && beta0 <= 1)) throw std::invalid_argument("beta0: must be a number in [-1, 1]");
-  if (!(kappa > 0 && kappa <= 1)) throw std::invalid_argument("moment_of_inertia: must be a number in (0, 1]");
-  if (!(friction >= 0)) throw std::invalid_argument("friction: must be a number >= 0");
-}
-
 /// The six quadratic forms of the linear scheme: x1 = c1², y1 = ŵ1², x2, y2, x1' = c1'², y1' = ŵ1'².
 enum Form { kX1, kY1, kX2, kY2, kX1p, kY1p, kForms };
 
@@ -189,7 +181,7 @@ using Polynomial = std::vector<Term>;
 
 RoughWaltonProductions rough_walton_productions(int dimension, double alpha, double beta0, double kappa,
                                                 double friction, double tau, int panels) {
-  check(dimension, alpha, beta0, kappa, friction);
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   if (!(tau > 0) || !std::isfinite(tau)) throw std::invalid_argument("temperature_ratio: must be > 0");
   if (panels < 1) throw std::invalid_argument("panels: must be >= 1");
   const int d = dimension;
@@ -273,7 +265,7 @@ RoughWaltonProductions rough_walton_productions(int dimension, double alpha, dou
 
 RoughWaltonCumulantState rough_walton_linear_cooling_state(int dimension, double alpha, double beta0, double kappa,
                                                            double friction, int panels) {
-  check(dimension, alpha, beta0, kappa, friction);
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   RoughWaltonCumulantState out;
   const auto decoupled = [&]() {
