@@ -101,12 +101,16 @@ class RoughCollisionSampler {
     const double norm = std::sqrt(dot3(n, n));
     for (auto& x : n) x /= norm;
     apply_rough_rule(c, n, alpha_, walton_beta(c, n, alpha_, beta_, kappa_, friction_), kappa_);
+    sigma_ = n;
     return c;
   }
+  /// Returns σ̂ of the last draw (to replay the collision with another rule).
+  [[nodiscard]] const Vec3& last_sigma() const { return sigma_; }
 
  private:
   int d_;
   double alpha_, beta_, kappa_, friction_, spin_sd_;
+  Vec3 sigma_{};
   gsl_rng* rng_;
 };
 

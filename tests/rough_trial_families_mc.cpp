@@ -1,5 +1,5 @@
 // Monte Carlo estimate of what the trial families beyond the products T_r S_p L_q do to the first-Sonine
-// Navier–Stokes coefficients of rough spheres and disks about Maxwellians at the Maxwellian θ (docs/theory.md §19.20):
+// Navier–Stokes coefficients of rough spheres and disks about Maxwellians at the Maxwellian θ (docs/theory.md §19.21):
 // every collision element of the lowest product and of the aligned (3D: (ŵŵ)°, (c·ŵ)(cŵ)° − (ŵ²/3)(cc)°, (ŵŵ)°·c,
 // (c·ŵ)² − c²ŵ²/3) and chiral (3D: (c(c×ŵ))_sym, (c·ŵ)(ŵ(c×ŵ))_sym, c×ŵ; 2D: ŵ(c c⊥)_sym, ŵ c⊥) families from
 // collisions drawn by tests/rough_monte_carlo.hpp (vector form, independent of the engine), the Galerkin systems of

@@ -113,8 +113,9 @@ TEST(ModelSchema, OrderOutsideTheModelsRangeIsRefused) {
     EXPECT_EQ(refusal([&] {
                 (void)model->evaluate(p, {coefficient}, {too_high, {}});
               }),
-              (model->max_order() == 1
-                   ? std::string("order: must be exactly 1, got ")
+              (model->max_order() == 1 ? std::string("order: must be exactly 1, got ")
+               : model->max_order() == 2
+                   ? std::string("order: must be 1 or 2, got ")  // ParameterSpec::allowed()
                    : "order: must be an integer in [1, " + std::to_string(model->max_order()) + "], got ") +
                   std::to_string(too_high))
         << name;

@@ -1,4 +1,4 @@
-// The aligned-spin trial families of the rough gas's Navier–Stokes modes (docs/theory.md §19.20): their exact
+// The aligned-spin trial families of the rough gas's Navier–Stokes modes (docs/theory.md §19.21): their exact
 // collision elements against an independent Monte Carlo over collisions, the product block of the same code against
 // RoughCollisionElements, the symmetry of the Galerkin matrix at Pidduck's gas, and the limits.
 #include <gtest/gtest.h>

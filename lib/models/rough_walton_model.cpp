@@ -1,16 +1,22 @@
 // The "rough-walton" model: rough inelastic hard spheres (d = 3) or disks (d = 2) with Coulomb
 // friction in Walton's form, β(γ) = min{β0, −1 + ((1+κ)/κ)(1+α) μ_f cot γ}
 // (rough_walton.hpp; docs/theory.md §19.10): the Maxwellian HCS (θ, ζ*), the first-Sonine η*, κ*, μ*
-// and the scalar Navier–Stokes response (bulk viscosity, first-order cooling rate). μ_f → ∞ is the "rough"
-// model. The linear stability of the HCS from these coefficients (rough_hcs_stability.hpp, §19.15).
+// and the scalar Navier–Stokes response (bulk viscosity, first-order cooling rate); with `order` > 1 or a
+// `tolerance` the five Navier–Stokes columns at higher Sonine orders (rough_walton_sonine.hpp, §19.20). μ_f → ∞ is
+// the "rough" model. The linear stability of the HCS from these coefficients (rough_hcs_stability.hpp, §19.15).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "gkt/evolution/rough_hcs_stability.hpp"
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "gkt/transport/rough/rough_walton_cumulants.hpp"
+#include "gkt/transport/rough/rough_walton_sonine.hpp"
 #include "models/models.hpp"
 #include "models/rough_parameters.hpp"
 
@@ -26,6 +32,27 @@ const std::vector<std::string> kWaltonTableColumns{"rotational_temperature_ratio
                                                    "thermal_conductivity",
                                                    "density_heat_coefficient",
                                                    "cooling_rate_first_order"};
+
+/// Highest Sonine order of the Navier–Stokes columns: the error of order N needs orders N + 1, N + 2, and the Walton
+/// elements stop at order 4 (10–25 s of CPU there; order 5 would take minutes, docs/performance.md).
+constexpr int kMaxWaltonOrder = 2;
+
+/// The Navier–Stokes columns of the higher-order solver (theory.md §19.20).
+constexpr std::array<const char*, 5> kWaltonSonineColumns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
+                                                          "density_heat_coefficient", "cooling_rate_first_order"};
+
+bool is_walton_sonine_column(const std::string& name) {
+  return std::find(kWaltonSonineColumns.begin(), kWaltonSonineColumns.end(), name) != kWaltonSonineColumns.end();
+}
+
+/// Returns the column `name` of one order's values.
+double walton_transport_column(const RoughTransportValues& v, const std::string& name) {
+  if (name == "shear_viscosity") return v.shear_viscosity;
+  if (name == "bulk_viscosity") return v.bulk_viscosity;
+  if (name == "thermal_conductivity") return v.thermal_conductivity;
+  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
+  return v.cooling_rate_first_order;
+}
 
 /// Returns the HCS stability of the Walton gas from its Maxwellian θ, ζ* and first-Sonine coefficients
 /// (theory.md §19.15); NaN everywhere where the spin decouples (no HCS of the spin, §19.10).
@@ -67,8 +94,8 @@ class RoughWaltonModel final : public TransportModel {
     return "rough inelastic hard spheres (d = 3) or disks (d = 2) with Coulomb friction (Walton): "
            "beta = min{beta0, -1 + ((1+kappa)/kappa)(1+alpha) friction cot(impact angle)}; Maxwellian "
            "homogeneous cooling state (temperature ratio, cooling rate); first-Sonine shear and bulk viscosity, "
-           "thermal conductivity, density heat coefficient and first-order cooling rate; linear stability of the "
-           "homogeneous cooling state";
+           "thermal conductivity, density heat coefficient and first-order cooling rate (also at Sonine order 2 or a "
+           "tolerance, with errors); linear stability of the homogeneous cooling state";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto names = kWaltonTableColumns;
@@ -101,7 +128,7 @@ class RoughWaltonModel final : public TransportModel {
                                 {"maxwellian", "linear", "linear-or-maxwellian"}));
     return specs;
   }
-  [[nodiscard]] int max_order() const override { return 1; }
+  [[nodiscard]] int max_order() const override { return kMaxWaltonOrder; }
   [[nodiscard]] bool supports(Capability capability) const override {
     return capability == Capability::table || capability == Capability::evolve || capability == Capability::stability;
   }
@@ -130,7 +157,32 @@ class RoughWaltonModel final : public TransportModel {
                                          const OrderRequest& order) override {
     const auto specs = parameters();
     const auto [d, alpha, beta0, kappa] = read_rough_grain(specs, point, "beta0");
-    require_first_approximation(order, "rough-walton");
+    // Order 1 asked for as such is the first approximation of §19.10 (error not estimated); beyond it, or with a
+    // tolerance, the five Navier–Stokes columns come from the Sonine solver of §19.20 about the Maxwellian HCS with
+    // the error (6.1) from orders N + 1, N + 2; every other column exists at order 1 only.
+    const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
+    if (!first)
+      for (const auto& name : coefficients)
+        if (!is_walton_sonine_column(name))
+          throw std::invalid_argument("coefficients: " + name +
+                                      " of model rough-walton is computed at order 1 only; use order = 1 without "
+                                      "tolerance, or ask for shear_viscosity, bulk_viscosity, thermal_conductivity, "
+                                      "density_heat_coefficient or cooling_rate_first_order");
+    if (!first) {
+      const double friction = SchemaPoint(specs, point).number("friction").to_double();
+      const std::vector<RoughTransportValues>& v =
+          sonine_values(d, alpha.to_double(), beta0.to_double(), kappa.to_double(), friction,
+                        order.tolerance ? kMaxWaltonOrder + 2 : order.order + 2);
+      std::vector<CoefficientValue> out;
+      for (const auto& name : coefficients)
+        out.push_back(choose_order(order, kMaxWaltonOrder, [&](int n) {
+          const auto at = [&](int m) {
+            return v.empty() ? std::nan("") : walton_transport_column(v[static_cast<std::size_t>(m - 1)], name);
+          };
+          return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
+        }));
+      return out;
+    }
     // The HCS columns of `hcs` (theory.md §19.19); the transport and stability columns use the Maxwellian θ, ζ*.
     const std::string scheme = SchemaPoint(specs, point).choice("hcs");
     std::optional<RoughWaltonCumulantState> linear;
@@ -197,6 +249,28 @@ class RoughWaltonModel final : public TransportModel {
     }
     return out;
   }
+
+ private:
+  /// Returns the Navier–Stokes values of orders 1 … highest about the Maxwellian HCS (empty where the spin decouples:
+  /// no Walton HCS, every column NaN as at order 1), cached per state.
+  const std::vector<RoughTransportValues>& sonine_values(int d, double alpha, double beta0, double kappa,
+                                                         double friction, int highest) {
+    if (cache_.size() > 64) cache_.clear();  // bound memory in long sweeps (never mid-evaluation)
+    auto& entry = cache_[{static_cast<double>(d), alpha, beta0, kappa, friction}];
+    if (entry.computed && (entry.values.empty() || static_cast<int>(entry.values.size()) >= highest))
+      return entry.values;
+    entry.computed = true;
+    const double theta = rough_walton_temperature_ratio(d, alpha, beta0, kappa, friction);
+    entry.values = std::isinf(theta) ? std::vector<RoughTransportValues>{}
+                                     : rough_walton_sonine_transport(d, alpha, beta0, kappa, friction, theta, highest);
+    return entry.values;
+  }
+
+  struct CacheEntry {
+    bool computed = false;
+    std::vector<RoughTransportValues> values;
+  };
+  std::map<std::array<double, 5>, CacheEntry> cache_;
 };
 
 }  // namespace

@@ -1,5 +1,5 @@
 // The lowest trial families of the rough gas's Navier–Stokes modes beyond the translation × spin Sonine products
-// (docs/theory.md §19.20): the spin-alignment families built with (ŵŵ)° and c·ŵ (3D; ŵ axial, c·ŵ a pseudoscalar),
+// (docs/theory.md §19.21): the spin-alignment families built with (ŵŵ)° and c·ŵ (3D; ŵ axial, c·ŵ a pseudoscalar),
 //   tensor: T1 = (ŵŵ)°,  T2 = (c·ŵ)(cŵ)°_sym − (ŵ²/3)(cc)°;   vector: F = (ŵŵ)°·c;   scalar: P = (c·ŵ)² − c²ŵ²/3,
 // each orthogonal (Maxwellian weights) to every product T_r S_p(c²) L_q(ŵ²), and their exact collision elements with
 // the products of order N and with each other. Each element is a polynomial in the ten invariants X_a, Y_a, c_a·ŵ_a,

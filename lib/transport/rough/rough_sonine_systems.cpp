@@ -314,7 +314,21 @@ RoughCollisionElements::RoughCollisionElements(const RoughCollisionParameters<Ra
   }
 }
 
+RoughCollisionElements::RoughCollisionElements(int highest_order, double tau,
+                                               const std::array<std::vector<double>, 3>& elements)
+    : k_(highest_order), fixed_tau_(tau) {
+  // Stored as the coefficient of τ^{2K}, so that element() returns value·τ^{2K}·τ^{−2K} (long double).
+  for (std::size_t rank = 0; rank < 3; ++rank)
+    for (const double value : elements[rank]) {
+      std::vector<long double> c(static_cast<std::size_t>(2 * k_ + 1), 0.0L);
+      c.back() = value;
+      contracted_[rank].push_back(std::move(c));
+    }
+}
+
 double RoughCollisionElements::element(int rank, int p_test, int q_test, int p_trial, int q_trial, double tau) const {
+  if (fixed_tau_ > 0 && tau != fixed_tau_)
+    throw std::logic_error("RoughCollisionElements: numeric elements evaluated at another tau");
   const int top = rank == 2 ? k_ - 1 : k_, n = top + 1;
   if (p_test + q_test > top || p_trial + q_trial > top || p_test < 0 || q_test < 0 || p_trial < 0 || q_trial < 0)
     throw std::out_of_range("RoughCollisionElements: Sonine index above the table");

@@ -73,6 +73,9 @@ class RoughCollisionElements {
  public:
   /// Builds the elements up to K = highest_order (the engine tables are dropped after the contraction).
   RoughCollisionElements(const RoughCollisionParameters<RationalPolynomial>& parameters, int highest_order);
+  /// Wraps numeric elements computed at one τ (the Walton gas, rough_walton_sonine.cpp): per rank, index
+  /// ((p_trial n + q_trial) n + p_test) n + q_test, n = K + 1 (K for rank 2); element() refuses any other τ.
+  RoughCollisionElements(int highest_order, double tau, const std::array<std::vector<double>, 3>& elements);
   /// Returns ⟨T_r S_p' L_q', 𝓛 T_r S_p L_q⟩ (test p', q'; trial p, q) at τ = θ/κ: the exact coefficients in τ,
   /// rounded once, summed in long double.
   [[nodiscard]] double element(int rank, int p_test, int q_test, int p_trial, int q_trial, double tau) const;
@@ -81,6 +84,7 @@ class RoughCollisionElements {
 
  private:
   int k_;
+  double fixed_tau_ = 0;  ///< > 0: the numeric elements hold at this τ only
   /// Per rank, index (p, q, p', q'): the coefficients of τ^{j − 2K}, j = 0, 1, … (rounded from the exact ones).
   std::array<std::vector<std::vector<long double>>, 3> contracted_;
 };
@@ -117,7 +121,7 @@ struct RoughModeState {
   double tau = 1;
   bool spin_decoupled = false;
   const RoughCumulantReference* reference = nullptr;
-  /// The aligned-spin families (3D, theory.md §19.20) appended to every mode's basis after the products (null: the
+  /// The aligned-spin families (3D, theory.md §19.21) appended to every mode's basis after the products (null: the
   /// products only). Their rows and columns follow the products' in the matrices; `basis` lists the products only,
   /// and every source, flux and constraint of an aligned family is 0 (each is orthogonal to every product).
   const RoughAlignedFamilyElements* aligned = nullptr;

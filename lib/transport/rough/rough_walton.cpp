@@ -21,14 +21,6 @@ using detail::condition;
 using detail::ConditionedGaussian;
 using detail::gauss_legendre;
 
-void check(int d, double alpha, double beta0, double kappa, double friction) {
-  if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(d));
-  if (!(alpha > 0 && alpha <= 1)) throw std::invalid_argument("alpha: must be a number in (0, 1]");
-  if (!(beta0 >= -1 && beta0 <= 1)) throw std::invalid_argument("beta0: must be a number in [-1, 1]");
-  if (!(kappa > 0 && kappa <= 1)) throw std::invalid_argument("moment_of_inertia: must be a number in (0, 1]");
-  if (!(friction >= 0)) throw std::invalid_argument("friction: must be a number >= 0");
-}
-
 /// A1 = ⟨η_t G²⟩ and A2 = ⟨η_t² G²⟩ over collisions (weight Θ(u)u, velocities in units of √(2T_t/m)),
 /// G = |g_c,t|, η_t = min{η0, M u/G}, M = μ_f(1+α)/2 (theory.md (19.21)). u has density u e^{−u²/2};
 /// each tangential component of g_c has variance s² = 1 + τ, τ = θ/κ.
@@ -203,7 +195,7 @@ double heat_pair(const Particle& x, int a, const Particle& y, int b, int d, doub
 
 RoughHeatOperator rough_walton_heat_operator(int dimension, double alpha, double beta0, double kappa, double friction,
                                              double temperature_ratio, int panels) {
-  check(dimension, alpha, beta0, kappa, friction);
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   if (!(temperature_ratio > 0)) throw std::invalid_argument("temperature_ratio: must be > 0");
   if (panels < 1) throw std::invalid_argument("panels: must be >= 1");
   const int d = dimension, dr = d == 3 ? 3 : 1;
@@ -275,7 +267,7 @@ RoughThermalConductivity rough_walton_thermal_conductivity(int dimension, double
 
 double rough_walton_shear_viscosity(int dimension, double alpha, double beta0, double kappa, double friction,
                                     double temperature_ratio, int intervals) {
-  check(dimension, alpha, beta0, kappa, friction);
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   if (!(temperature_ratio > 0)) throw std::invalid_argument("temperature_ratio: must be > 0");
   if (intervals < 2 || intervals % 2 != 0) throw std::invalid_argument("intervals: must be even and >= 2");
   const int d = dimension;
@@ -325,7 +317,7 @@ double rough_walton_shear_viscosity(int dimension, double alpha, double beta0, d
 
 RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, double kappa, double friction,
                                     double temperature_ratio, int intervals) {
-  check(dimension, alpha, beta0, kappa, friction);
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   if (!(temperature_ratio > 0)) throw std::invalid_argument("temperature_ratio: must be > 0");
   if (intervals < 2 || intervals % 2 != 0) throw std::invalid_argument("intervals: must be even and >= 2");
   const int d = dimension;
@@ -340,22 +332,12 @@ RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, d
   return {-g * 2.0 / d * dv, -g * 2.0 / (dr * tau) * dw};
 }
 
-RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha, const Rational& beta0,
-                                            const Rational& kappa, const Rational& friction) {
-  const double a = alpha.to_double(), b = beta0.to_double(), k = kappa.to_double(), mu = friction.to_double();
-  check(dimension, a, b, k, mu);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  RoughWaltonState out;
-  const auto decoupled = [&]() {
-    out.temperature_ratio = std::numeric_limits<double>::infinity();
-    out.cooling_rate = out.bulk_viscosity = out.cooling_rate_first_order = out.shear_viscosity = nan;
-    out.thermal_conductivity = out.density_heat_coefficient = nan;
-    out.spin_decoupled = true;
-    return out;
-  };
-  if (mu == 0 || b == -1) return decoupled();
+double rough_walton_temperature_ratio(int dimension, double alpha, double beta0, double kappa, double friction) {
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
+  const double none = std::numeric_limits<double>::infinity();
+  if (friction == 0 || beta0 == -1) return none;
   const auto residual = [&](double log_theta) {
-    const RoughWaltonRates r = rough_walton_rates(dimension, a, b, k, mu, std::exp(log_theta));
+    const RoughWaltonRates r = rough_walton_rates(dimension, alpha, beta0, kappa, friction, std::exp(log_theta));
     return r.translational - r.rotational;
   };
   // ζ_t − ζ_r > 0 as θ → 0 (the cold spin is heated); take the first sign change upwards in log θ.
@@ -371,7 +353,7 @@ RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha
     lo = x;
     f_lo = f;
   }
-  if (!found) return decoupled();
+  if (!found) return none;
   while (hi - lo > 1e-13) {
     const double mid = (lo + hi) / 2, f = residual(mid);
     if ((f > 0) == (f_lo > 0)) {
@@ -381,7 +363,24 @@ RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha
       hi = mid;
     }
   }
-  const double theta = std::exp((lo + hi) / 2);
+  return std::exp((lo + hi) / 2);
+}
+
+RoughWaltonState rough_walton_cooling_state(int dimension, const Rational& alpha, const Rational& beta0,
+                                            const Rational& kappa, const Rational& friction) {
+  const double a = alpha.to_double(), b = beta0.to_double(), k = kappa.to_double(), mu = friction.to_double();
+  detail::check_walton_parameters(dimension, a, b, k, mu);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  RoughWaltonState out;
+  const auto decoupled = [&]() {
+    out.temperature_ratio = std::numeric_limits<double>::infinity();
+    out.cooling_rate = out.bulk_viscosity = out.cooling_rate_first_order = out.shear_viscosity = nan;
+    out.thermal_conductivity = out.density_heat_coefficient = nan;
+    out.spin_decoupled = true;
+    return out;
+  };
+  const double theta = rough_walton_temperature_ratio(dimension, a, b, k, mu);
+  if (std::isinf(theta)) return decoupled();
   const RoughWaltonRates r = rough_walton_rates(dimension, a, b, k, mu, theta);
   out.temperature_ratio = theta;
   out.cooling_rate = r.translational;

@@ -21,14 +21,6 @@ namespace gkt {
 
 namespace {
 
-void check(int d, double alpha, double beta0, double kappa, double friction) {
-  if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(d));
-  if (!(alpha > 0 && alpha <= 1)) throw std::invalid_argument("alpha: must be a number in (0, 1]");
-  if (!(beta0 >= -1 && beta0 <= 1)) throw std::invalid_argument("beta0: must be a number in [-1, 1]");
-  if (!(kappa > 0 && kappa <= 1)) throw std::invalid_argument("moment_of_inertia: must be a number in (0, 1]");
-  if (!(friction >= 0)) throw std::invalid_argument("friction: must be a number >= 0");
-}
-
 /// The six quadratic forms of the linear scheme: x1 = c1², y1 = ŵ1², x2, y2, x1' = c1'², y1' = ŵ1'².
 enum Form { kX1, kY1, kX2, kY2, kX1p, kY1p, kForms };
 
@@ -189,7 +181,7 @@ using Polynomial = std::vector<Term>;
 
 RoughWaltonProductions rough_walton_productions(int dimension, double alpha, double beta0, double kappa,
                                                 double friction, double tau, int panels) {
-  check(dimension, alpha, beta0, kappa, friction);
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   if (!(tau > 0) || !std::isfinite(tau)) throw std::invalid_argument("temperature_ratio: must be > 0");
   if (panels < 1) throw std::invalid_argument("panels: must be >= 1");
   const int d = dimension;
@@ -236,22 +228,12 @@ RoughWaltonProductions rough_walton_productions(int dimension, double alpha, dou
   const auto over_u = [&](double big_g) {
     std::fill(sum_u.begin(), sum_u.end(), 0.0);
     const auto piece = [&](double lo, double hi) {
-      if (!(hi > lo)) return;
-      static constexpr std::array<double, 4> x{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                               0.9602898564975363};
-      static constexpr std::array<double, 4> w{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                               0.1012285362903763};
-      const double h = (hi - lo) / panels;
-      for (int p = 0; p < panels; ++p) {
-        const double mid = lo + (p + 0.5) * h;
-        for (std::size_t i = 0; i < 8; ++i) {
-          const double u = mid + (i < 4 ? -1 : 1) * x[i % 4] * h / 2;
-          const double eta_t = (big_g == 0 || u >= c * big_g) ? eta0 : m * u / big_g;
-          forms.evaluate(Eigen::Vector3d(u, big_g, eta_t * big_g), moments);
-          const double weight = w[i % 4] * h / 2 * u * std::exp(-u * u / 2);
-          for (std::size_t k = 0; k < count; ++k) sum_u[k] += weight * moments[k];
-        }
-      }
+      detail::for_each_gauss_legendre_node(lo, hi, panels, [&](double u, double weight) {
+        const double eta_t = (big_g == 0 || u >= c * big_g) ? eta0 : m * u / big_g;
+        forms.evaluate(Eigen::Vector3d(u, big_g, eta_t * big_g), moments);
+        const double factor = weight * u * std::exp(-u * u / 2);
+        for (std::size_t k = 0; k < count; ++k) sum_u[k] += factor * moments[k];
+      });
     };
     const double kink = big_g > 0 ? std::min(c * big_g, upper) : 0.0;
     piece(0, kink);
@@ -265,22 +247,11 @@ RoughWaltonProductions rough_walton_productions(int dimension, double alpha, dou
     return v;
   };
   const double edge = c > 0 && std::isfinite(c) ? std::min(upper / (c * s), upper) : upper;
-  for (const auto& [lo, hi] : {std::pair{0.0, edge}, std::pair{edge, upper}}) {
-    if (!(hi > lo)) continue;
-    static constexpr std::array<double, 4> x{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                             0.9602898564975363};
-    static constexpr std::array<double, 4> w{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                             0.1012285362903763};
-    const double h = (hi - lo) / panels;
-    for (int p = 0; p < panels; ++p) {
-      const double mid = lo + (p + 0.5) * h;
-      for (std::size_t i = 0; i < 8; ++i) {
-        const double r = mid + (i < 4 ? -1 : 1) * x[i % 4] * h / 2;
-        const std::vector<double> v = outer(r);
-        for (std::size_t k = 0; k < count; ++k) total[k] += w[i % 4] * h / 2 * v[k];
-      }
-    }
-  }
+  for (const auto& [lo, hi] : {std::pair{0.0, edge}, std::pair{edge, upper}})
+    detail::for_each_gauss_legendre_node(lo, hi, panels, [&](double r, double weight) {
+      const std::vector<double> v = outer(r);
+      for (std::size_t k = 0; k < count; ++k) total[k] += weight * v[k];
+    });
   RoughWaltonProductions out;
   for (std::size_t w = 0; w < 4; ++w)
     for (std::size_t t = 0; t < 5; ++t)
@@ -294,45 +265,18 @@ RoughWaltonProductions rough_walton_productions(int dimension, double alpha, dou
 
 RoughWaltonCumulantState rough_walton_linear_cooling_state(int dimension, double alpha, double beta0, double kappa,
                                                            double friction, int panels) {
-  check(dimension, alpha, beta0, kappa, friction);
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   RoughWaltonCumulantState out;
-  // The Maxwellian root (rough_walton.hpp): the centre of the scan.
-  const auto maxwellian_residual = [&](double log_theta) {
-    const RoughWaltonRates r = rough_walton_rates(dimension, alpha, beta0, kappa, friction, std::exp(log_theta));
-    return r.translational - r.rotational;
-  };
   const auto decoupled = [&]() {
     out.temperature_ratio = out.maxwellian_temperature_ratio = std::numeric_limits<double>::infinity();
     out.cooling_rate = out.maxwellian_cooling_rate = out.a20 = out.a02 = out.a11 = nan;
     out.spin_decoupled = true;
     return out;
   };
-  if (friction == 0 || beta0 == -1) return decoupled();
-  // The first sign change of ζ_t − ζ_r upwards in ln θ (the stable root, as rough_walton_cooling_state).
-  double lo = -20, f_lo = maxwellian_residual(lo), hi = lo;
-  bool found = false;
-  for (double x = lo + 0.25; x <= 20; x += 0.25) {
-    const double f = maxwellian_residual(x);
-    if ((f_lo > 0) != (f > 0)) {
-      hi = x;
-      found = true;
-      break;
-    }
-    lo = x;
-    f_lo = f;
-  }
-  if (!found) return decoupled();
-  while (hi - lo > 1e-13) {
-    const double mid = (lo + hi) / 2, f = maxwellian_residual(mid);
-    if ((f > 0) == (f_lo > 0)) {
-      lo = mid;
-      f_lo = f;
-    } else {
-      hi = mid;
-    }
-  }
-  out.maxwellian_temperature_ratio = std::exp((lo + hi) / 2);
+  // The Maxwellian root (rough_walton.hpp): the centre of the scan.
+  out.maxwellian_temperature_ratio = rough_walton_temperature_ratio(dimension, alpha, beta0, kappa, friction);
+  if (std::isinf(out.maxwellian_temperature_ratio)) return decoupled();
   out.maxwellian_cooling_rate =
       rough_walton_rates(dimension, alpha, beta0, kappa, friction, out.maxwellian_temperature_ratio).translational;
   // Linear scheme: at fixed τ the fourth-degree balances give a(τ) = −M(τ)⁻¹g(τ); G_0(τ, a(τ)) = 0 fixes τ

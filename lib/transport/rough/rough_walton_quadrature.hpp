@@ -1,13 +1,24 @@
 // Internal: the conditioned Gaussian of the Walton gas's pre-collisional velocities and the composite
 // Gauss–Legendre rule over (u, |g_c,t|) (docs/theory.md §19.10, (19.23)), shared by rough_walton.cpp and
-// rough_walton_cumulants.cpp.
+// rough_walton_cumulants.cpp and rough_walton_sonine.cpp, and the range check of the Walton parameters.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gkt::detail {
+
+/// Throws std::invalid_argument naming the field unless d ∈ {2, 3}, α ∈ (0, 1], β0 ∈ [−1, 1], κ ∈ (0, 1], μ_f ≥ 0.
+inline void check_walton_parameters(int d, double alpha, double beta0, double kappa, double friction) {
+  if (d != 2 && d != 3) throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(d));
+  if (!(alpha > 0 && alpha <= 1)) throw std::invalid_argument("alpha: must be a number in (0, 1]");
+  if (!(beta0 >= -1 && beta0 <= 1)) throw std::invalid_argument("beta0: must be a number in [-1, 1]");
+  if (!(kappa > 0 && kappa <= 1)) throw std::invalid_argument("moment_of_inertia: must be a number in (0, 1]");
+  if (!(friction >= 0)) throw std::invalid_argument("friction: must be a number >= 0");
+}
 
 /// The Gaussian of the pre-collisional velocities X = (v1, v2, w1, w2) (velocities in units of
 /// √(2T_t/m); variance 1/2 per translational and τ/2 per spin component) conditioned on the normal
@@ -78,6 +89,22 @@ inline ConditionedGaussian condition(int d, double tau) {
       g.cov[i][j] = (i == j ? prior[i] : 0) - x;
     }
   return g;
+}
+
+/// Visits the nodes of the composite 8-point Gauss–Legendre rule on [lo, hi] with `panels` panels: f(node, weight),
+/// weight = w_i h/2 (h the panel width), per panel the four nodes left of its midpoint, then the four right of it.
+template <class F>
+void for_each_gauss_legendre_node(double lo, double hi, int panels, const F& f) {
+  static constexpr std::array<double, 4> x{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                           0.9602898564975363};
+  static constexpr std::array<double, 4> w{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                           0.1012285362903763};
+  if (!(hi > lo)) return;
+  const double h = (hi - lo) / panels;
+  for (int p = 0; p < panels; ++p) {
+    const double mid = lo + (p + 0.5) * h;
+    for (std::size_t i = 0; i < 8; ++i) f(mid + (i < 4 ? -1 : 1) * x[i % 4] * h / 2, w[i % 4] * h / 2);
+  }
 }
 
 /// Composite 8-point Gauss–Legendre rule on [lo, hi] with `panels` panels, for f returning N values.

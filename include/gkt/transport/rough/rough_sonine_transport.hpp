@@ -28,7 +28,7 @@ struct RoughTransportValues {
   double cooling_rate_first_order = 0;            ///< ζ_U of ζ = ζ⁽⁰⁾ + ζ_U∇·u (NaN at β = −1)
 };
 
-/// Which trial families the Galerkin spaces hold (theory.md §19.16, §19.20).
+/// Which trial families the Galerkin spaces hold (theory.md §19.16, §19.21).
 enum class RoughTrialSpace {
   product,  ///< the translation × spin Sonine products of (19.40) only (the default)
   aligned,  ///< 3D: the products plus the lowest aligned-spin families (ŵŵ)°, (c·ŵ)(cŵ)°, (ŵŵ)°·c, (c·ŵ)² − c²ŵ²/3
@@ -50,7 +50,7 @@ class RoughSonineTransport {
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                        int highest_order, int cumulant_degree, bool orientation = false);
   /// As the first constructor, with the trial space `space`: RoughTrialSpace::aligned appends to each mode the
-  /// aligned-spin families (theory.md §19.20) times S_p(x) L_q(y), p + q ≤ aligned_order − 1 (1: the lowest members
+  /// aligned-spin families (theory.md §19.21) times S_p(x) L_q(y), p + q ≤ aligned_order − 1 (1: the lowest members
   /// alone), exact elements with the products of every order, about Maxwellians only (at, at_maxwellian_state).
   /// Throws std::invalid_argument naming `trial_space` for aligned with d = 2 (no c·ŵ for disks) and
   /// `aligned_order` below 1.

@@ -27,6 +27,12 @@ struct RoughWaltonRates {
 RoughWaltonRates rough_walton_rates(int dimension, double alpha, double beta0, double kappa, double friction,
                                     double temperature_ratio, int intervals = 4000);
 
+/// Returns the Maxwellian HCS temperature ratio θ = T_r/T_t of the Walton gas: the first sign change of
+/// ζ_t − ζ_r (rough_walton_rates) upwards in ln θ ∈ [−20, 20] (steps 1/4, then bisection to 1e-13 in ln θ;
+/// the stable root, theory.md §19.10), or +inf when there is none (μ_f = 0, β0 = −1, or friction too weak
+/// for the spin to keep up). Ranges as rough_walton_rates; throws std::invalid_argument naming the field.
+double rough_walton_temperature_ratio(int dimension, double alpha, double beta0, double kappa, double friction);
+
 /// Returns the first-Sonine shear viscosity η* = η/η0(T_t) = 1/(L_η/(d − 1) − ζ*/2) (theory.md (19.13))
 /// of the Walton gas at θ (Maxwellians at T_t and θT_t), ranges as above. L_η is a collision average of
 /// quartic forms: conditioned on the normal relative velocity u and g_c,t (which fix η_t) the velocities
