@@ -1,7 +1,6 @@
 // What the C wrappers of the binary and ternary tables share (table_common.hpp).
 #include "table_common.hpp"
 
-#include <cstring>
 #include <vector>
 
 namespace gkt::c_api {
@@ -44,23 +43,6 @@ Mixture mixture_from_c(int dimension, std::size_t species, const double* mass, c
   mixture.alpha.assign(alpha, alpha + species * species);
   mixture.validate();
   return mixture;
-}
-
-MixtureReference reference_from_c(const char* hcs, int hcs_order) {
-  require_pointer(hcs, "hcs");
-  MixtureReference reference;
-  if (std::strcmp(hcs, "maxwellian") == 0) return reference;
-  if (std::strcmp(hcs, "linear") == 0)
-    reference.scheme = MixtureHcsScheme::linear;
-  else if (std::strcmp(hcs, "nonlinear") == 0)
-    reference.scheme = MixtureHcsScheme::nonlinear;
-  else
-    throw Refusal{GKT_INVALID_ARGUMENT,
-                  std::string("hcs: must be \"maxwellian\", \"linear\" or \"nonlinear\", got \"") + hcs + "\""};
-  if (hcs_order < 2 || hcs_order > 6)
-    throw Refusal{GKT_INVALID_ARGUMENT, "hcs_order: must be an integer in [2, 6], got " + std::to_string(hcs_order)};
-  reference.hcs_order = hcs_order;
-  return reference;
 }
 
 std::string cell_index(std::size_t i) {

@@ -620,3 +620,30 @@ def test_dense_ternary_table_refusals():
         gkt.TernaryTransportTable(DENSE_MASS, DENSE_DIAMETER, 0.9, max_packing_fraction=-0.1)
     with pytest.raises(ValueError, match=r"^packing_nodes: must be an integer in \[3, 33\], got 2$"):
         gkt.TernaryTransportTable(DENSE_MASS, DENSE_DIAMETER, 0.9, max_packing_fraction=0.1, packing_nodes=2)
+
+
+def test_binary_table_about_the_cumulant_hcs_is_the_one_component_gas():
+    """Identical species about the nonlinear HCS with a_2 (reference="nonlinear", hcs_order=2, docs/theory.md
+    section 17.13): the binary table's eta, lambda, sum_j D''_j and zeta, reduced by the reference gas, equal the
+    smooth-inelastic model at order 1 (which keeps a_2 in f0) to round-off; the default Maxwellian reference does
+    not (lambda off by > 1e-3). A bad reference or hcs_order is refused naming the field."""
+    alpha, x1, n, temperature = 0.7, 0.3, 1.0, 1.0
+    one = gkt.table({"model": "smooth-inelastic", "alpha": alpha, "order": 1,
+                     "coefficients": ["shear_viscosity", "thermal_conductivity", "density_heat_coefficient",
+                                      "cooling_rate"]})
+    eta0 = 5 / 16 * np.sqrt(temperature / np.pi)
+    kappa0 = 15 / 4 * eta0
+    cumulant = gkt.BinaryTransportTable((1, 1), (1, 1), alpha, order=1, nodes=3, tolerance=1e-9,
+                                        reference="nonlinear", hcs_order=2).evaluate(x1, n, temperature)
+    np.testing.assert_allclose(cumulant["shear_viscosity"] / eta0, one["shear_viscosity"][0], rtol=1e-12)
+    np.testing.assert_allclose(cumulant["thermal_conductivity"] / kappa0, one["thermal_conductivity"][0], rtol=1e-12)
+    np.testing.assert_allclose((cumulant["dufour_1"] + cumulant["dufour_2"]) * temperature / kappa0,
+                               one["density_heat_coefficient"][0], rtol=1e-12)
+    np.testing.assert_allclose(cumulant["cooling_rate"] * eta0 / (n * temperature), one["cooling_rate"][0], rtol=1e-12)
+    maxwellian = gkt.BinaryTransportTable((1, 1), (1, 1), alpha, order=1, nodes=3, tolerance=1e-9)
+    assert abs(maxwellian.evaluate(x1, n, temperature)["thermal_conductivity"] / kappa0
+               / one["thermal_conductivity"][0] - 1) > 1e-3
+    with pytest.raises(ValueError, match=r'^reference: must be "maxwellian", "linear" or "nonlinear", got "hcs"$'):
+        gkt.BinaryTransportTable((1, 1), (1, 1), alpha, reference="hcs")
+    with pytest.raises(ValueError, match=r"^hcs_order: must be an integer in \[2, 6\]"):
+        gkt.TernaryTransportTable((1, 2, 3), (1, 1, 1), alpha, reference="linear", hcs_order=7)

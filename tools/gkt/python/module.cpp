@@ -420,15 +420,26 @@ std::vector<double> restitution_matrix(const py::object& alpha, py::ssize_t s) {
   throw std::invalid_argument("alpha: must be a number or a " + n + " x " + n + " restitution matrix");
 }
 
+/// Returns the f^(0) a table is built about (theory.md §17.13): "maxwellian" (hcs_order ignored, as
+/// MixtureReference ignores it), or "linear" / "nonlinear", the HCS of that scheme with a_2 … a_K in f^(0), K =
+/// hcs_order (the table refuses K outside [2, 6]).
+gkt::MixtureReference table_reference(const std::string& reference, int hcs_order) {
+  if (reference == "maxwellian") return {};
+  if (reference == "linear") return {gkt::MixtureHcsScheme::linear, hcs_order};
+  if (reference == "nonlinear") return {gkt::MixtureHcsScheme::nonlinear, hcs_order};
+  throw std::invalid_argument("reference: must be \"maxwellian\", \"linear\" or \"nonlinear\", got \"" + reference +
+                              "\"");
+}
+
 /// A binary's Navier–Stokes table (gkt/transport/mixture/mixture_transport_table.hpp) built once,
 /// evaluated per cell over NumPy arrays of (x_1, n, T).
 class BinaryTable {
  public:
   BinaryTable(const std::array<double, 2>& mass, const std::array<double, 2>& diameter, const py::object& alpha,
               int dimension, int order, int nodes, double max_packing_fraction, int packing_nodes, double tolerance,
-              const std::array<double, 2>& fraction_range)
+              const std::array<double, 2>& fraction_range, const std::string& reference, int hcs_order)
       : table_(build(mass, diameter, alpha, dimension, order, nodes, max_packing_fraction, packing_nodes, tolerance,
-                     fraction_range)) {}
+                     fraction_range, table_reference(reference, hcs_order))) {}
 
   [[nodiscard]] double interpolation_error() const { return table_->interpolation_error(); }
   [[nodiscard]] double validation_error() const { return table_->validation_error(); }
@@ -457,19 +468,17 @@ class BinaryTable {
  private:
   std::shared_ptr<const gkt::BinaryTransportTable> table_;
 
-  static std::shared_ptr<const gkt::BinaryTransportTable> build(const std::array<double, 2>& mass,
-                                                                const std::array<double, 2>& diameter,
-                                                                const py::object& alpha, int dimension, int order,
-                                                                int nodes, double max_packing_fraction,
-                                                                int packing_nodes, double tolerance,
-                                                                const std::array<double, 2>& fraction_range) {
+  static std::shared_ptr<const gkt::BinaryTransportTable> build(
+      const std::array<double, 2>& mass, const std::array<double, 2>& diameter, const py::object& alpha, int dimension,
+      int order, int nodes, double max_packing_fraction, int packing_nodes, double tolerance,
+      const std::array<double, 2>& fraction_range, const gkt::MixtureReference& reference) {
     gkt::Mixture mixture =
         gkt::make_mixture(dimension, {{mass[0], diameter[0], 0.5, ""}, {mass[1], diameter[1], 0.5, ""}}, 1.0);
     mixture.alpha = restitution_matrix(alpha, 2);
     mixture.validate();
     py::gil_scoped_release release;
     return std::make_shared<const gkt::BinaryTransportTable>(mixture, order, nodes, max_packing_fraction, packing_nodes,
-                                                             tolerance, fraction_range);
+                                                             tolerance, fraction_range, reference);
   }
 };
 
@@ -479,9 +488,9 @@ class TernaryTable {
  public:
   TernaryTable(const std::array<double, 3>& mass, const std::array<double, 3>& diameter, const py::object& alpha,
                int dimension, int order, int nodes, double tolerance, int max_nodes, double max_packing_fraction,
-               int packing_nodes)
+               int packing_nodes, const std::string& reference, int hcs_order)
       : table_(build(mass, diameter, alpha, dimension, order, nodes, tolerance, max_nodes, max_packing_fraction,
-                     packing_nodes)) {}
+                     packing_nodes, table_reference(reference, hcs_order))) {}
 
   [[nodiscard]] double interpolation_error() const { return table_->interpolation_error(); }
   [[nodiscard]] double validation_error() const { return table_->validation_error(); }
@@ -516,7 +525,8 @@ class TernaryTable {
                                                                  const std::array<double, 3>& diameter,
                                                                  const py::object& alpha, int dimension, int order,
                                                                  int nodes, double tolerance, int max_nodes,
-                                                                 double max_packing_fraction, int packing_nodes) {
+                                                                 double max_packing_fraction, int packing_nodes,
+                                                                 const gkt::MixtureReference& reference) {
     gkt::Mixture mixture = gkt::make_mixture(dimension,
                                              {{mass[0], diameter[0], 1.0 / 3, ""},
                                               {mass[1], diameter[1], 1.0 / 3, ""},
@@ -526,7 +536,7 @@ class TernaryTable {
     mixture.validate();
     py::gil_scoped_release release;
     return std::make_shared<const gkt::TernaryTransportTable>(mixture, order, nodes, tolerance, max_nodes,
-                                                              max_packing_fraction, packing_nodes);
+                                                              max_packing_fraction, packing_nodes, reference);
   }
 };
 
@@ -603,18 +613,22 @@ PYBIND11_MODULE(gkt, m) {
                           "The Navier-Stokes set of a granular binary, solved once on Chebyshev nodes of x_1 (and "
                           "phi) and interpolated per cell (docs/theory.md section 17.8, dense 18.10).")
       .def(py::init<const std::array<double, 2>&, const std::array<double, 2>&, const py::object&, int, int, int,
-                    double, int, double, const std::array<double, 2>&>(),
+                    double, int, double, const std::array<double, 2>&, const std::string&, int>(),
            py::arg("mass"), py::arg("diameter"), py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
            py::arg("order") = 1, py::arg("nodes") = 24, py::arg("max_packing_fraction") = 0.0,
            py::arg("packing_nodes") = 12, py::arg("tolerance") = 1e-3,
-           py::arg("fraction_range") = std::array<double, 2>{0.0, 1.0},
+           py::arg("fraction_range") = std::array<double, 2>{0.0, 1.0}, py::arg("reference") = "maxwellian",
+           py::arg("hcs_order") = 2,
            "Solves the binary (masses and diameters of species 1, 2; alpha a number or a symmetric 2 x 2 "
            "matrix) at Sonine order `order` on `nodes` points of x_1 in [0, 1] and, if max_packing_fraction > 0, "
            "`packing_nodes` points of phi in [0, max_packing_fraction]; refines the nodes and splits x_1 into "
            "intervals until the interpolation error is at most `tolerance` at every point checked, or raises "
            "ValueError naming the error reached and the x_1 interval. fraction_range = (x_low, x_high) limits the "
            "table to those compositions (e.g. below a pole of the truncated solution); evaluate then raises "
-           "ValueError outside it. The GIL is released while solving.")
+           "ValueError outside it. reference: the f0 every node is solved about, \"maxwellian\" (GDH's) or "
+           "\"linear\" / \"nonlinear\", the HCS of that scheme with its cumulants a_2 ... a_K in f0, K = hcs_order in "
+           "[2, 6] (docs/theory.md section 17.13; each node then costs ~20 times more). The GIL is released while "
+           "solving.")
       .def_property_readonly("interpolation_error", &BinaryTable::interpolation_error,
                              "Returns the largest interpolation error of the reduced coefficients measured at build "
                              "time, between the nodes and at independent validation points (relative to "
@@ -636,17 +650,19 @@ PYBIND11_MODULE(gkt, m) {
                            "the Duffy square of the composition triangle (x_1 = u, x_2 = (1 - u) v) (and phi) and "
                            "interpolated per cell (docs/theory.md section 17.8, \"Ternary tables\"; dense 18.10).")
       .def(py::init<const std::array<double, 3>&, const std::array<double, 3>&, const py::object&, int, int, int,
-                    double, int, double, int>(),
+                    double, int, double, int, const std::string&, int>(),
            py::arg("mass"), py::arg("diameter"), py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
            py::arg("order") = 1, py::arg("nodes") = 9, py::arg("tolerance") = 1e-3, py::arg("max_nodes") = 33,
-           py::arg("max_packing_fraction") = 0.0, py::arg("packing_nodes") = 5,
+           py::arg("max_packing_fraction") = 0.0, py::arg("packing_nodes") = 5, py::arg("reference") = "maxwellian",
+           py::arg("hcs_order") = 2,
            "Solves the ternary (masses and diameters of species 1, 2, 3; alpha a number or a symmetric "
            "3 x 3 matrix) at Sonine order `order` on nodes x nodes points of the Duffy square and, if "
            "max_packing_fraction > 0, `packing_nodes` points of phi in [0, max_packing_fraction]; refines every "
            "axis (K -> 2K - 1, up to max_nodes) and splits the square into rectangles until the interpolation "
            "error is at most `tolerance` at every point checked, or raises ValueError naming the error reached, "
            "the point (x_1, x_2) and the region of x_1 and x_2/(1 - x_1) (and phi) (e.g. around a pole of the "
-           "truncated solution). The GIL is released while solving.")
+           "truncated solution). reference and hcs_order as for BinaryTransportTable. The GIL is released while "
+           "solving.")
       .def_property_readonly("interpolation_error", &TernaryTable::interpolation_error,
                              "Returns the largest interpolation error of the reduced coefficients measured at build "
                              "time, at the midpoints and at independent validation points (relative to "
