@@ -96,6 +96,7 @@ module gkt
   public :: gkt_ternary_table_create, gkt_ternary_table_destroy, gkt_ternary_table_interpolation_error
   public :: gkt_ternary_table_build_cost, gkt_ternary_table_evaluate, gkt_ternary_table_evaluate_reduced
   public :: gkt_ternary_table_create_dense, gkt_ternary_table_evaluate_reduced_dense
+  public :: gkt_binary_table_create_about, gkt_ternary_table_create_about
 
   ! The per-cell calls bind directly: no conversion on the way.
   interface
@@ -243,6 +244,36 @@ module gkt
       integer(c_int), value :: order, nodes, max_nodes
       real(c_double), value :: tolerance, max_packing_fraction
       integer(c_int), value :: packing_nodes
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_ternary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_nodes, tolerance, &
+                                          max_packing_fraction, packing_nodes, reference, hcs_order, out) &
+        bind(C, name="gkt_ternary_table_create_about") result(status)
+      import :: c_int, c_double, c_ptr, c_char
+      integer(c_int), value :: dimension
+      real(c_double), intent(in) :: mass(3), diameter(3), alpha(9)
+      integer(c_int), value :: order, nodes, max_nodes
+      real(c_double), value :: tolerance, max_packing_fraction
+      integer(c_int), value :: packing_nodes
+      character(kind=c_char), intent(in) :: reference(*)
+      integer(c_int), value :: hcs_order
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_binary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction, &
+                                         packing_nodes, tolerance, fraction_range, reference, hcs_order, out) &
+        bind(C, name="gkt_binary_table_create_about") result(status)
+      import :: c_int, c_double, c_ptr, c_char
+      integer(c_int), value :: dimension
+      real(c_double), intent(in) :: mass(2), diameter(2), alpha(4)
+      integer(c_int), value :: order, nodes
+      real(c_double), value :: max_packing_fraction
+      integer(c_int), value :: packing_nodes
+      real(c_double), value :: tolerance
+      real(c_double), intent(in) :: fraction_range(2)
+      character(kind=c_char), intent(in) :: reference(*)
+      integer(c_int), value :: hcs_order
       type(c_ptr), intent(out) :: out
       integer(c_int) :: status
     end function
@@ -462,6 +493,35 @@ contains
     status = c_binary_table_create_to_tolerance(dimension, mass, diameter, reshape(alpha, [4]), order, nodes, &
                                                 max_packing_fraction, packing_nodes, tolerance, fraction_range, &
                                                 table%handle)
+  end function
+
+  !> Builds the table as gkt_binary_table_create_to_tolerance about the reference f0 `reference`:
+  !> "maxwellian", or "linear" / "nonlinear", the HCS of that scheme with a_2 ... a_K, K = hcs_order in [2, 6] (gkt.h).
+  function gkt_binary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction, &
+                                         packing_nodes, tolerance, fraction_range, reference, hcs_order, table) &
+      result(status)
+    integer(c_int), intent(in) :: dimension, order, nodes, packing_nodes, hcs_order
+    real(c_double), intent(in) :: mass(2), diameter(2), alpha(2, 2), max_packing_fraction, tolerance, fraction_range(2)
+    character(len=*), intent(in) :: reference
+    type(gkt_binary_table), intent(out) :: table
+    integer(c_int) :: status
+    status = c_binary_table_create_about(dimension, mass, diameter, reshape(alpha, [4]), order, nodes, &
+                                         max_packing_fraction, packing_nodes, tolerance, fraction_range, &
+                                         reference // c_null_char, hcs_order, table%handle)
+  end function
+
+  !> Builds the table as gkt_ternary_table_create_dense about the reference f0 `reference` and hcs_order (gkt.h).
+  function gkt_ternary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_nodes, tolerance, &
+                                          max_packing_fraction, packing_nodes, reference, hcs_order, table) &
+      result(status)
+    integer(c_int), intent(in) :: dimension, order, nodes, max_nodes, packing_nodes, hcs_order
+    real(c_double), intent(in) :: mass(3), diameter(3), alpha(3, 3), tolerance, max_packing_fraction
+    character(len=*), intent(in) :: reference
+    type(gkt_ternary_table), intent(out) :: table
+    integer(c_int) :: status
+    status = c_ternary_table_create_about(dimension, mass, diameter, reshape(alpha, [9]), order, nodes, max_nodes, &
+                                          tolerance, max_packing_fraction, packing_nodes, reference // c_null_char, &
+                                          hcs_order, table%handle)
   end function
 
   !> Writes the table's build cost: x_1 intervals, mixture solves and wall-clock seconds.

@@ -215,6 +215,17 @@ gkt_status gkt_binary_table_create_to_tolerance(int dimension, const double mass
                                                 double max_packing_fraction, int packing_nodes, double tolerance,
                                                 const double fraction_range[2], gkt_binary_table** out);
 
+/** Builds the table as gkt_binary_table_create_to_tolerance about the reference f^(0) `reference`
+ *  (theory.md §17.13): "maxwellian" (GDH's; gkt_binary_table_create_to_tolerance; hcs_order ignored), or
+ *  "linear" / "nonlinear", the HCS of that scheme with its cumulants a_2 … a_K in f^(0), K = hcs_order in
+ *  [2, 6] (the mixture model's reference_state = "hcs" with that hcs and hcs_order). The tolerance is
+ *  enforced against direct solves about the same reference; each node costs ~20 times a Maxwellian one
+ *  (docs/performance.md). GKT_INVALID_ARGUMENT naming reference or hcs_order otherwise. */
+gkt_status gkt_binary_table_create_about(int dimension, const double mass[2], const double diameter[2],
+                                         const double alpha[4], int order, int nodes, double max_packing_fraction,
+                                         int packing_nodes, double tolerance, const double fraction_range[2],
+                                         const char* reference, int hcs_order, gkt_binary_table** out);
+
 /** Writes the cost of the table's build: the x_1 intervals it settled on, the mixture solves it
  *  made (nodes, error and validation points) and the wall-clock seconds. */
 gkt_status gkt_binary_table_build_cost(const gkt_binary_table* table, int* intervals, int* solves, double* seconds);
@@ -299,6 +310,13 @@ gkt_status gkt_ternary_table_create(int dimension, const double mass[3], const d
 gkt_status gkt_ternary_table_create_dense(int dimension, const double mass[3], const double diameter[3],
                                           const double alpha[9], int order, int nodes, int max_nodes, double tolerance,
                                           double max_packing_fraction, int packing_nodes, gkt_ternary_table** out);
+
+/** Builds the table as gkt_ternary_table_create_dense about the reference f^(0) `reference` and hcs_order,
+ *  as gkt_binary_table_create_about (theory.md §17.13; each node ~30 times a Maxwellian one). */
+gkt_status gkt_ternary_table_create_about(int dimension, const double mass[3], const double diameter[3],
+                                          const double alpha[9], int order, int nodes, int max_nodes, double tolerance,
+                                          double max_packing_fraction, int packing_nodes, const char* reference,
+                                          int hcs_order, gkt_ternary_table** out);
 
 /** Writes the cost of the table's build: the rectangles (pieces) it settled on, the mixture solves
  *  it made (nodes, error and validation points) and the wall-clock seconds. */

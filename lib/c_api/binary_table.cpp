@@ -17,8 +17,8 @@
 /// A binary's table and what the C layer needs to check states against it.
 struct gkt_binary_table {
   gkt_binary_table(const gkt::Mixture& mixture, int order, int nodes, double max_packing, int packing_nodes,
-                   double tolerance, std::array<double, 2> fraction_range)
-      : table(mixture, order, nodes, max_packing, packing_nodes, tolerance, fraction_range),
+                   double tolerance, std::array<double, 2> fraction_range, const gkt::MixtureReference& reference)
+      : table(mixture, order, nodes, max_packing, packing_nodes, tolerance, fraction_range, reference),
         species(mixture, max_packing) {}
   gkt::BinaryTransportTable table;
   gkt::c_api::TableSpecies<2> species;
@@ -68,20 +68,30 @@ using gkt::c_api::require_pointer;
 
 extern "C" {
 
+gkt_status gkt_binary_table_create_about(int dimension, const double mass[2], const double diameter[2],
+                                         const double alpha[4], int order, int nodes, double max_packing_fraction,
+                                         int packing_nodes, double tolerance, const double fraction_range[2],
+                                         const char* reference, int hcs_order, gkt_binary_table** out) {
+  return guarded([&] {
+    require_pointer(out, "out");
+    const gkt::Mixture mixture = gkt::c_api::mixture_from_c(dimension, 2, mass, diameter, alpha);
+    const gkt::MixtureReference about = gkt::c_api::reference_from_c(reference, hcs_order);
+    auto t = std::make_unique<gkt_binary_table>(mixture, order, nodes, max_packing_fraction, packing_nodes, tolerance,
+                                                fraction_range != nullptr
+                                                    ? std::array<double, 2>{fraction_range[0], fraction_range[1]}
+                                                    : std::array<double, 2>{0.0, 1.0},
+                                                about);
+    *out = t.release();
+    return GKT_OK;
+  });
+}
+
 gkt_status gkt_binary_table_create_to_tolerance(int dimension, const double mass[2], const double diameter[2],
                                                 const double alpha[4], int order, int nodes,
                                                 double max_packing_fraction, int packing_nodes, double tolerance,
                                                 const double fraction_range[2], gkt_binary_table** out) {
-  return guarded([&] {
-    require_pointer(out, "out");
-    const gkt::Mixture mixture = gkt::c_api::mixture_from_c(dimension, 2, mass, diameter, alpha);
-    auto t = std::make_unique<gkt_binary_table>(mixture, order, nodes, max_packing_fraction, packing_nodes, tolerance,
-                                                fraction_range != nullptr
-                                                    ? std::array<double, 2>{fraction_range[0], fraction_range[1]}
-                                                    : std::array<double, 2>{0.0, 1.0});
-    *out = t.release();
-    return GKT_OK;
-  });
+  return gkt_binary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction,
+                                       packing_nodes, tolerance, fraction_range, "maxwellian", 2, out);
 }
 
 gkt_status gkt_binary_table_create(int dimension, const double mass[2], const double diameter[2], const double alpha[4],

@@ -45,6 +45,16 @@ Mixture mixture_from_c(int dimension, std::size_t species, const double* mass, c
   return mixture;
 }
 
+MixtureReference reference_from_c(const char* reference, int hcs_order) {
+  require_pointer(reference, "reference");
+  const std::string name(reference);
+  if (name == "maxwellian") return {};
+  if (name == "linear") return {MixtureHcsScheme::linear, hcs_order};
+  if (name == "nonlinear") return {MixtureHcsScheme::nonlinear, hcs_order};
+  throw Refusal{GKT_INVALID_ARGUMENT,
+                "reference: must be \"maxwellian\", \"linear\" or \"nonlinear\", got \"" + name + "\""};
+}
+
 std::string cell_index(std::size_t i) {
   std::string out(1, '[');
   out += std::to_string(i);

@@ -11,6 +11,7 @@
 #include "gkt/gkt.h"
 #include "gkt/transport/common/reference_gas.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "guard.hpp"
 
 namespace gkt::c_api {
@@ -20,6 +21,11 @@ namespace gkt::c_api {
 /// throws a Refusal naming the field ("mass_2", "alpha_1_3", "alpha" for an asymmetric matrix, "dimension").
 Mixture mixture_from_c(int dimension, std::size_t species, const double* mass, const double* diameter,
                        const double* alpha);
+
+/// Returns the f^(0) a table is built about (theory.md §17.13): reference "maxwellian" (hcs_order ignored, as
+/// MixtureReference ignores it), "linear" or "nonlinear" (the HCS of that scheme with a_2 … a_K in f^(0), K =
+/// hcs_order, which the table refuses outside [2, 6]); throws a Refusal naming reference otherwise.
+MixtureReference reference_from_c(const char* reference, int hcs_order);
 
 /// Returns "[i]", the suffix that names cell i in a message.
 std::string cell_index(std::size_t i);

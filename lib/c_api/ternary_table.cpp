@@ -16,8 +16,9 @@
 /// A ternary's table and what the C layer needs to check states against it.
 struct gkt_ternary_table {
   gkt_ternary_table(const gkt::Mixture& mixture, int order, int nodes, int max_nodes, double tolerance,
-                    double max_packing, int packing_nodes)
-      : table(mixture, order, nodes, tolerance, max_nodes, max_packing, packing_nodes), species(mixture, max_packing) {}
+                    double max_packing, int packing_nodes, const gkt::MixtureReference& reference)
+      : table(mixture, order, nodes, tolerance, max_nodes, max_packing, packing_nodes, reference),
+        species(mixture, max_packing) {}
   gkt::TernaryTransportTable table;
   gkt::c_api::TableSpecies<3> species;
 };
@@ -61,17 +62,26 @@ using gkt::c_api::require_pointer;
 
 extern "C" {
 
-gkt_status gkt_ternary_table_create_dense(int dimension, const double mass[3], const double diameter[3],
+gkt_status gkt_ternary_table_create_about(int dimension, const double mass[3], const double diameter[3],
                                           const double alpha[9], int order, int nodes, int max_nodes, double tolerance,
-                                          double max_packing_fraction, int packing_nodes, gkt_ternary_table** out) {
+                                          double max_packing_fraction, int packing_nodes, const char* reference,
+                                          int hcs_order, gkt_ternary_table** out) {
   return guarded([&] {
     require_pointer(out, "out");
     const gkt::Mixture mixture = gkt::c_api::mixture_from_c(dimension, 3, mass, diameter, alpha);
+    const gkt::MixtureReference about = gkt::c_api::reference_from_c(reference, hcs_order);
     auto t = std::make_unique<gkt_ternary_table>(mixture, order, nodes, max_nodes, tolerance, max_packing_fraction,
-                                                 packing_nodes);
+                                                 packing_nodes, about);
     *out = t.release();
     return GKT_OK;
   });
+}
+
+gkt_status gkt_ternary_table_create_dense(int dimension, const double mass[3], const double diameter[3],
+                                          const double alpha[9], int order, int nodes, int max_nodes, double tolerance,
+                                          double max_packing_fraction, int packing_nodes, gkt_ternary_table** out) {
+  return gkt_ternary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_nodes, tolerance,
+                                        max_packing_fraction, packing_nodes, "maxwellian", 2, out);
 }
 
 gkt_status gkt_ternary_table_create(int dimension, const double mass[3], const double diameter[3],

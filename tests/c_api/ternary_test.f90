@@ -10,6 +10,7 @@ program ternary_test
   use gkt
   implicit none
   type(gkt_ternary_table) :: table, dense
+  type(gkt_binary_table) :: about
   type(gkt_ternary_transport) :: physical, reduced, unit
   real(c_double) :: alpha(3, 3), dense_alpha(3, 3), error, seconds, n
   integer(c_int) :: pieces, solves
@@ -78,6 +79,22 @@ program ternary_test
   message = gkt_last_error()
   call check(index(message, 'tolerance: the interpolation error ') == 1 .and. index(message, new_line('a')) == 0, &
              'one-line refusal: ' // message)
+  deallocate (message)
+
+  ! About the cumulant HCS (gkt_*_table_create_about): identical species build (their values do not depend on x_1),
+  ! an unknown reference is refused naming it.
+  call check(gkt_binary_table_create_about(3_c_int, [1.0_c_double, 1.0_c_double], [1.0_c_double, 1.0_c_double], &
+                                           reshape([(0.7_c_double, pieces = 1, 4)], [2, 2]), 1_c_int, 3_c_int, &
+                                           0.0_c_double, 3_c_int, 1e-9_c_double, [0.0_c_double, 1.0_c_double], &
+                                           'nonlinear', 2_c_int, about) == GKT_OK, 'create about the HCS')
+  call check(gkt_binary_table_interpolation_error(about, error) == GKT_OK .and. error <= 1e-9_c_double, 'about error')
+  call gkt_binary_table_destroy(about)
+  call check(gkt_ternary_table_create_about(3_c_int, [1.0_c_double, 2.0_c_double, 3.5_c_double], &
+                                            [1.0_c_double, 1.3_c_double, 0.8_c_double], alpha, 1_c_int, 3_c_int, &
+                                            3_c_int, 5e-2_c_double, 0.0_c_double, 3_c_int, 'hcs', 2_c_int, dense) &
+             == GKT_INVALID_ARGUMENT, 'unknown reference refused')
+  message = gkt_last_error()
+  call check(index(message, 'reference: must be') == 1, 'field named: ' // message)
 
   if (failures > 0) then
     print '(a, i0, a)', 'ternary_test: ', failures, ' check(s) failed'

@@ -173,3 +173,34 @@ TEST(CApiTernaryTable, DenseAgreesWithDirectSolvesAndRefuses) {
   EXPECT_EQ(std::string(gkt_last_error()).find('\n'), std::string::npos);
   EXPECT_EQ(refused, nullptr);
 }
+
+// The tables about the cumulant HCS through the C API (gkt_binary_table_create_about, gkt_ternary_table_create_about;
+// theory.md §17.13): a binary of identical species about the nonlinear HCS with a_2 equals the direct solve about the
+// same reference at an off-node composition to round-off (its coefficients do not depend on x_1) and differs from the
+// Maxwellian solve; an unknown reference and an hcs_order outside [2, 6] are refused naming the field, no handle.
+TEST(CApiTernaryTable, TablesAboutTheCumulantHcs) {
+  const double mass[2] = {1.0, 1.0}, diameter[2] = {1.0, 1.0}, alpha[4] = {0.7, 0.7, 0.7, 0.7};
+  gkt_binary_table* b = nullptr;
+  ASSERT_EQ(gkt_binary_table_create_about(3, mass, diameter, alpha, 1, 3, 0.0, 3, 1e-9, nullptr, "nonlinear", 2, &b),
+            GKT_OK)
+      << gkt_last_error();
+  gkt_binary_transport r{};
+  ASSERT_EQ(gkt_binary_table_evaluate_reduced(b, 0.3, 0.0, &r), GKT_OK);
+  const gkt::Mixture m = gkt::make_mixture(3, {{1.0, 1.0, 0.3, "1"}, {1.0, 1.0, 0.7, "2"}}, 0.7);
+  const auto about = gkt::MixtureNavierStokes(m, 1, {gkt::MixtureHcsScheme::nonlinear, 2}).coefficients(1);
+  const auto maxwellian = gkt::MixtureNavierStokes(m, 1).coefficients(1);
+  EXPECT_NEAR(r.thermal_conductivity, about.thermal_conductivity, 1e-12 * about.thermal_conductivity);
+  EXPECT_NEAR(r.shear_viscosity, about.shear_viscosity, 1e-12 * about.shear_viscosity);
+  EXPECT_GT(std::abs(r.thermal_conductivity / maxwellian.thermal_conductivity - 1), 1e-3);
+  gkt_binary_table_destroy(b);
+  gkt_binary_table* refused = nullptr;
+  EXPECT_EQ(gkt_binary_table_create_about(3, mass, diameter, alpha, 1, 3, 0.0, 3, 1e-3, nullptr, "hcs", 2, &refused),
+            GKT_INVALID_ARGUMENT);
+  EXPECT_STREQ(gkt_last_error(), "reference: must be \"maxwellian\", \"linear\" or \"nonlinear\", got \"hcs\"");
+  EXPECT_EQ(refused, nullptr);
+  gkt_ternary_table* t = nullptr;
+  EXPECT_EQ(gkt_ternary_table_create_about(3, kMass, kDiameter, kAlpha, 1, 3, 3, 5e-2, 0.0, 3, "linear", 7, &t),
+            GKT_INVALID_ARGUMENT);
+  EXPECT_STREQ(gkt_last_error(), "hcs_order: must be an integer in [2, 6] for a table about the cumulant HCS, got 7");
+  EXPECT_EQ(t, nullptr);
+}
