@@ -55,7 +55,7 @@ module gkt
     real(c_double) :: cooling_rate_first_order
   end type
 
-  !> A dilute ternary's Navier-Stokes set (physical or reduced, as in gkt.h; D_ij at 3(i-1) + j).
+  !> A ternary's Navier-Stokes set (physical or reduced, as in gkt.h; D_ij at 3(i-1) + j).
   type, bind(C), public :: gkt_ternary_transport
     real(c_double) :: cooling_rate
     real(c_double) :: temperature_ratio(3)
@@ -66,6 +66,8 @@ module gkt
     real(c_double) :: pressure_diffusion(3)
     real(c_double) :: dufour(3)
     real(c_double) :: pressure
+    real(c_double) :: bulk_viscosity
+    real(c_double) :: cooling_rate_first_order
   end type
 
   !> A registry model (gkt_model*); free it with gkt_model_destroy.
@@ -78,7 +80,7 @@ module gkt
     type(c_ptr) :: handle = c_null_ptr
   end type
 
-  !> A dilute ternary's transport table (gkt_ternary_table*); free it with gkt_ternary_table_destroy.
+  !> A ternary's transport table, dilute or dense (gkt_ternary_table*); free it with gkt_ternary_table_destroy.
   type, public :: gkt_ternary_table
     type(c_ptr) :: handle = c_null_ptr
   end type
@@ -93,6 +95,8 @@ module gkt
   public :: gkt_binary_table_evaluate, gkt_binary_table_evaluate_reduced, gkt_binary_table_evaluate_cells
   public :: gkt_ternary_table_create, gkt_ternary_table_destroy, gkt_ternary_table_interpolation_error
   public :: gkt_ternary_table_build_cost, gkt_ternary_table_evaluate, gkt_ternary_table_evaluate_reduced
+  public :: gkt_ternary_table_create_dense, gkt_ternary_table_evaluate_reduced_dense
+  public :: gkt_binary_table_create_about, gkt_ternary_table_create_about
 
   ! The per-cell calls bind directly: no conversion on the way.
   interface
@@ -229,6 +233,56 @@ module gkt
       integer(c_int), value :: order, nodes
       real(c_double), value :: tolerance
       type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_ternary_table_create_dense(dimension, mass, diameter, alpha, order, nodes, max_nodes, tolerance, &
+                                          max_packing_fraction, packing_nodes, out) &
+        bind(C, name="gkt_ternary_table_create_dense") result(status)
+      import :: c_int, c_double, c_ptr
+      integer(c_int), value :: dimension
+      real(c_double), intent(in) :: mass(3), diameter(3), alpha(9)
+      integer(c_int), value :: order, nodes, max_nodes
+      real(c_double), value :: tolerance, max_packing_fraction
+      integer(c_int), value :: packing_nodes
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_ternary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_nodes, tolerance, &
+                                          max_packing_fraction, packing_nodes, reference, hcs_order, out) &
+        bind(C, name="gkt_ternary_table_create_about") result(status)
+      import :: c_int, c_double, c_ptr, c_char
+      integer(c_int), value :: dimension
+      real(c_double), intent(in) :: mass(3), diameter(3), alpha(9)
+      integer(c_int), value :: order, nodes, max_nodes
+      real(c_double), value :: tolerance, max_packing_fraction
+      integer(c_int), value :: packing_nodes
+      character(kind=c_char), intent(in) :: reference(*)
+      integer(c_int), value :: hcs_order
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_binary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction, &
+                                         packing_nodes, tolerance, fraction_range, reference, hcs_order, out) &
+        bind(C, name="gkt_binary_table_create_about") result(status)
+      import :: c_int, c_double, c_ptr, c_char
+      integer(c_int), value :: dimension
+      real(c_double), intent(in) :: mass(2), diameter(2), alpha(4)
+      integer(c_int), value :: order, nodes
+      real(c_double), value :: max_packing_fraction
+      integer(c_int), value :: packing_nodes
+      real(c_double), value :: tolerance
+      real(c_double), intent(in) :: fraction_range(2)
+      character(kind=c_char), intent(in) :: reference(*)
+      integer(c_int), value :: hcs_order
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+    function c_ternary_table_evaluate_reduced_dense(table, fraction_1, fraction_2, packing_fraction, out) &
+        bind(C, name="gkt_ternary_table_evaluate_reduced_dense") result(status)
+      import :: c_ptr, c_double, c_int, gkt_ternary_transport
+      type(c_ptr), value :: table
+      real(c_double), value :: fraction_1, fraction_2, packing_fraction
+      type(gkt_ternary_transport), intent(out) :: out
       integer(c_int) :: status
     end function
     function c_ternary_table_build_cost(table, pieces, solves, seconds) &
@@ -441,6 +495,35 @@ contains
                                                 table%handle)
   end function
 
+  !> Builds the table as gkt_binary_table_create_to_tolerance about the reference f0 `reference`:
+  !> "maxwellian", or "linear" / "nonlinear", the HCS of that scheme with a_2 ... a_K, K = hcs_order in [2, 6] (gkt.h).
+  function gkt_binary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction, &
+                                         packing_nodes, tolerance, fraction_range, reference, hcs_order, table) &
+      result(status)
+    integer(c_int), intent(in) :: dimension, order, nodes, packing_nodes, hcs_order
+    real(c_double), intent(in) :: mass(2), diameter(2), alpha(2, 2), max_packing_fraction, tolerance, fraction_range(2)
+    character(len=*), intent(in) :: reference
+    type(gkt_binary_table), intent(out) :: table
+    integer(c_int) :: status
+    status = c_binary_table_create_about(dimension, mass, diameter, reshape(alpha, [4]), order, nodes, &
+                                         max_packing_fraction, packing_nodes, tolerance, fraction_range, &
+                                         reference // c_null_char, hcs_order, table%handle)
+  end function
+
+  !> Builds the table as gkt_ternary_table_create_dense about the reference f0 `reference` and hcs_order (gkt.h).
+  function gkt_ternary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_nodes, tolerance, &
+                                          max_packing_fraction, packing_nodes, reference, hcs_order, table) &
+      result(status)
+    integer(c_int), intent(in) :: dimension, order, nodes, max_nodes, packing_nodes, hcs_order
+    real(c_double), intent(in) :: mass(3), diameter(3), alpha(3, 3), tolerance, max_packing_fraction
+    character(len=*), intent(in) :: reference
+    type(gkt_ternary_table), intent(out) :: table
+    integer(c_int) :: status
+    status = c_ternary_table_create_about(dimension, mass, diameter, reshape(alpha, [9]), order, nodes, max_nodes, &
+                                          tolerance, max_packing_fraction, packing_nodes, reference // c_null_char, &
+                                          hcs_order, table%handle)
+  end function
+
   !> Writes the table's build cost: x_1 intervals, mixture solves and wall-clock seconds.
   function gkt_binary_table_build_cost(table, intervals, solves, seconds) result(status)
     type(gkt_binary_table), intent(in) :: table
@@ -499,6 +582,20 @@ contains
                                     table%handle)
   end function
 
+  !> Builds the dense ternary's table: as gkt_ternary_table_create with the packing fraction phi as a
+  !> third axis, packing_nodes points of phi in [0, max_packing_fraction] to start from (0: dilute),
+  !> every axis refined up to max_nodes before a rectangle is split; the tolerance holds over the
+  !> whole (x_1, x_2, phi) box or the table is refused (gkt.h).
+  function gkt_ternary_table_create_dense(dimension, mass, diameter, alpha, order, nodes, max_nodes, tolerance, &
+                                          max_packing_fraction, packing_nodes, table) result(status)
+    integer(c_int), intent(in) :: dimension, order, nodes, max_nodes, packing_nodes
+    real(c_double), intent(in) :: mass(3), diameter(3), alpha(3, 3), tolerance, max_packing_fraction
+    type(gkt_ternary_table), intent(out) :: table
+    integer(c_int) :: status
+    status = c_ternary_table_create_dense(dimension, mass, diameter, reshape(alpha, [9]), order, nodes, max_nodes, &
+                                          tolerance, max_packing_fraction, packing_nodes, table%handle)
+  end function
+
   !> Writes the table's build cost: rectangles of the Duffy square, mixture solves and wall-clock seconds.
   function gkt_ternary_table_build_cost(table, pieces, solves, seconds) result(status)
     type(gkt_ternary_table), intent(in) :: table
@@ -540,6 +637,17 @@ contains
     type(gkt_ternary_transport), intent(out) :: out
     integer(c_int) :: status
     status = c_ternary_table_evaluate_reduced(table%handle, fraction_1, fraction_2, out)
+  end function
+
+  !> Evaluates the table at (x_1, x_2) and packing fraction phi in reduced units (phi = 0 for a dilute
+  !> table, in [0, max_packing_fraction] for a dense one).
+  function gkt_ternary_table_evaluate_reduced_dense(table, fraction_1, fraction_2, packing_fraction, out) &
+      result(status)
+    type(gkt_ternary_table), intent(in) :: table
+    real(c_double), intent(in) :: fraction_1, fraction_2, packing_fraction
+    type(gkt_ternary_transport), intent(out) :: out
+    integer(c_int) :: status
+    status = c_ternary_table_evaluate_reduced_dense(table%handle, fraction_1, fraction_2, packing_fraction, out)
   end function
 
   !> Computes the dilute first-Sonine set in reduced units at the size(alpha) restitutions alpha(i)

@@ -194,14 +194,13 @@ typedef struct gkt_binary_table gkt_binary_table;
 
 /** Builds the table of two species: mass[i] > 0, diameter[i] > 0 (any consistent units; only
  *  ratios enter the reduced values; each mass is converted once to the short rational it rounds,
- *  0.1 -> 1/10, as a scene's decimal is read: docs/architecture.md §4), the restitution matrix alpha[2i + j] (symmetric, each in
- *  (0, 1]; row- or column-major alike), Sonine order in [1, 12], nodes in [3, 64] points in x_1
- *  ∈ [0, 1]; max_packing_fraction in [0, 0.5) (3D) or [0, 0.7) (2D), 0 for a dilute table; and
- *  packing_nodes in [3, 64] points in φ (used only when max_packing_fraction > 0). The table
- *  meets an interpolation error of 1e-3 (relative to max(1, |value|) of the reduced coefficients)
- *  at every point checked, or is refused: GKT_INVALID_ARGUMENT, the message naming the error
- *  reached and the x_1 interval (e.g. a pole of the order-N solution). Costs a few mixture solves
- *  per node (seconds for a dense table; see gkt_binary_table_build_cost). */
+ *  0.1 -> 1/10, as a scene's decimal is read: docs/architecture.md §4), the restitution matrix alpha[2i + j]
+ * (symmetric, each in (0, 1]; row- or column-major alike), Sonine order in [1, 12], nodes in [3, 64] points in x_1 ∈
+ * [0, 1]; max_packing_fraction in [0, 0.5) (3D) or [0, 0.7) (2D), 0 for a dilute table; and packing_nodes in [3, 64]
+ * points in φ (used only when max_packing_fraction > 0). The table meets an interpolation error of 1e-3 (relative to
+ * max(1, |value|) of the reduced coefficients) at every point checked, or is refused: GKT_INVALID_ARGUMENT, the message
+ * naming the error reached and the x_1 interval (e.g. a pole of the order-N solution). Costs a few mixture solves per
+ * node (seconds for a dense table; see gkt_binary_table_build_cost). */
 gkt_status gkt_binary_table_create(int dimension, const double mass[2], const double diameter[2], const double alpha[4],
                                    int order, int nodes, double max_packing_fraction, int packing_nodes,
                                    gkt_binary_table** out);
@@ -215,6 +214,17 @@ gkt_status gkt_binary_table_create_to_tolerance(int dimension, const double mass
                                                 const double alpha[4], int order, int nodes,
                                                 double max_packing_fraction, int packing_nodes, double tolerance,
                                                 const double fraction_range[2], gkt_binary_table** out);
+
+/** Builds the table as gkt_binary_table_create_to_tolerance about the reference f^(0) `reference`
+ *  (theory.md §17.14): "maxwellian" (GDH's; gkt_binary_table_create_to_tolerance; hcs_order ignored), or
+ *  "linear" / "nonlinear", the HCS of that scheme with its cumulants a_2 … a_K in f^(0), K = hcs_order in
+ *  [2, 6] (the mixture model's reference_state = "hcs" with that hcs and hcs_order). The tolerance is
+ *  enforced against direct solves about the same reference; each node costs ~20 times a Maxwellian one
+ *  (docs/performance.md). GKT_INVALID_ARGUMENT naming reference or hcs_order otherwise. */
+gkt_status gkt_binary_table_create_about(int dimension, const double mass[2], const double diameter[2],
+                                         const double alpha[4], int order, int nodes, double max_packing_fraction,
+                                         int packing_nodes, double tolerance, const double fraction_range[2],
+                                         const char* reference, int hcs_order, gkt_binary_table** out);
 
 /** Writes the cost of the table's build: the x_1 intervals it settled on, the mixture solves it
  *  made (nodes, error and validation points) and the wall-clock seconds. */
@@ -268,10 +278,11 @@ gkt_status gkt_binary_table_evaluate_reduced(const gkt_binary_table* table, doub
 
 /* ---- ternary mixtures: the per-cell transport table ---------------------------------------------- */
 
-/** A dilute ternary's Navier–Stokes table (theory.md §17.8, "Ternary tables"): solved once at
- *  creation on Chebyshev–Lobatto nodes of the Duffy square (x_1 = u, x_2 = (1 − u) v), the square
- *  split into rectangles until a requested accuracy holds at every point checked, and interpolated
- *  per cell without allocation. Evaluation is thread-safe (the table is read only). */
+/** A ternary's Navier–Stokes table (theory.md §17.8, "Ternary tables"; dense, φ as a third axis,
+ *  §18.10): solved once at creation on Chebyshev–Lobatto nodes of the Duffy square (x_1 = u,
+ *  x_2 = (1 − u) v) (× φ), the square split into rectangles until a requested accuracy holds at every
+ *  point checked, and interpolated per cell without allocation. Evaluation is thread-safe (the table
+ *  is read only). */
 typedef struct gkt_ternary_table gkt_ternary_table;
 
 /** Builds the table of three species: mass[i] > 0, diameter[i] > 0 (any consistent units; each
@@ -288,6 +299,25 @@ gkt_status gkt_ternary_table_create(int dimension, const double mass[3], const d
                                     const double alpha[9], int order, int nodes, double tolerance,
                                     gkt_ternary_table** out);
 
+/** Builds the dense ternary's table: as gkt_ternary_table_create, with the packing fraction φ as a
+ *  third axis, packing_nodes in [3, 33] Chebyshev–Lobatto points of φ ∈ [0, max_packing_fraction] to
+ *  start from, refined with the other axes up to max_nodes in [nodes, 33] per axis (33 in
+ *  gkt_ternary_table_create) before a rectangle is split; max_packing_fraction in [0, 0.5) (3D) or
+ *  [0, 0.7) (2D), 0 for the dilute table of gkt_ternary_table_create. The tolerance holds over the whole
+ *  (x_1, x_2, φ) box or the table is refused (GKT_INVALID_ARGUMENT, the message naming the error
+ *  reached, the point and the region of x_1, x_2/(1 − x_1) and φ). Costs one dense mixture solve per
+ *  node and check point: about 20 s for tolerance 5e-2 at order 1 (docs/performance.md). */
+gkt_status gkt_ternary_table_create_dense(int dimension, const double mass[3], const double diameter[3],
+                                          const double alpha[9], int order, int nodes, int max_nodes, double tolerance,
+                                          double max_packing_fraction, int packing_nodes, gkt_ternary_table** out);
+
+/** Builds the table as gkt_ternary_table_create_dense about the reference f^(0) `reference` and hcs_order,
+ *  as gkt_binary_table_create_about (theory.md §17.14; each node ~30 times a Maxwellian one). */
+gkt_status gkt_ternary_table_create_about(int dimension, const double mass[3], const double diameter[3],
+                                          const double alpha[9], int order, int nodes, int max_nodes, double tolerance,
+                                          double max_packing_fraction, int packing_nodes, const char* reference,
+                                          int hcs_order, gkt_ternary_table** out);
+
 /** Writes the cost of the table's build: the rectangles (pieces) it settled on, the mixture solves
  *  it made (nodes, error and validation points) and the wall-clock seconds. */
 gkt_status gkt_ternary_table_build_cost(const gkt_ternary_table* table, int* pieces, int* solves, double* seconds);
@@ -299,24 +329,28 @@ void gkt_ternary_table_destroy(gkt_ternary_table* table);
  *  independent validation points against direct solves). */
 gkt_status gkt_ternary_table_interpolation_error(const gkt_ternary_table* table, double* out);
 
-/** The Navier–Stokes set of a dilute ternary at one state; species indices 0, 1, 2 (C) = 1, 2, 3
+/** The Navier–Stokes set of a ternary at one state; species indices 0, 1, 2 (C) = 1, 2, 3
  *  (conventions.md); matrices at 3i + j. Flux laws and reductions as gkt_binary_transport (the
  *  reference gas of m̄ = Σ x_i m_i, σ̄ = Σ x_i σ_i at n, T). */
 typedef struct gkt_ternary_transport {
-  double cooling_rate;          /**< reduced ζ* = ζ/ν0 (ν0 = nT/η0); physical ζ (1/time) */
-  double temperature_ratio[3];  /**< T_i/T (both) */
-  double shear_viscosity;       /**< reduced η/η0; physical η */
-  double thermal_conductivity;  /**< reduced λ/κ0; physical λ */
-  double mutual_diffusion[9];   /**< D_ij at 3i + j: reduced D_ij/(n D0); physical D_ij (n × diffusivity) */
-  double thermal_diffusion[3];  /**< reduced D^T_i/D0; physical D^T_i (diffusivity) */
-  double pressure_diffusion[3]; /**< reduced D^p_i/D0; physical D^p_i (diffusivity) */
-  double dufour[3];             /**< reduced D''_j T/κ0; physical D''_j */
-  double pressure;              /**< reduced p/(nT) = 1; physical p = nT */
+  double cooling_rate;             /**< reduced ζ* = ζ/ν0 (ν0 = nT/η0); physical ζ (1/time) */
+  double temperature_ratio[3];     /**< T_i/T (both) */
+  double shear_viscosity;          /**< reduced η/η0; physical η */
+  double thermal_conductivity;     /**< reduced λ/κ0; physical λ */
+  double mutual_diffusion[9];      /**< D_ij at 3i + j: reduced D_ij/(n D0); physical D_ij (n × diffusivity) */
+  double thermal_diffusion[3];     /**< reduced D^T_i/D0; physical D^T_i (diffusivity) */
+  double pressure_diffusion[3];    /**< reduced D^p_i/D0; physical D^p_i (diffusivity) */
+  double dufour[3];                /**< reduced D''_j T/κ0; physical D''_j */
+  double pressure;                 /**< reduced p/(nT) (1 when dilute); physical p (nT when dilute) */
+  double bulk_viscosity;           /**< reduced κ_b/η0; physical κ_b (0 when dilute) */
+  double cooling_rate_first_order; /**< ζ_U (dimensionless, both; 0 when dilute) */
 } gkt_ternary_transport;
 
 /** Evaluates the table at mole fractions x_1 = fraction_1 in [0, 1], x_2 = fraction_2 in
  *  [0, 1 − x_1] (x_3 = 1 − x_1 − x_2), number density n > 0 and temperature T > 0 in physical units
- *  (the units of the masses and diameters given at creation). Thread-safe, no allocation. */
+ *  (the units of the masses and diameters given at creation). A dilute table treats any n as dilute;
+ *  a dense one returns GKT_OUT_OF_RANGE when φ = n v_d Σ x_i σ_i^d exceeds its max_packing_fraction.
+ *  Thread-safe, no allocation. */
 gkt_status gkt_ternary_table_evaluate(const gkt_ternary_table* table, double fraction_1, double fraction_2,
                                       double number_density, double temperature, gkt_ternary_transport* out);
 
@@ -328,10 +362,18 @@ gkt_status gkt_ternary_table_evaluate_cells(const gkt_ternary_table* table, size
                                             const double* fraction_2, const double* number_density,
                                             const double* temperature, gkt_ternary_transport* out);
 
-/** Evaluates the table at (x_1, x_2) in reduced units (the columns of `gkt table` for a dilute
- *  ternary mixture scene, hcs = "maxwellian"). Thread-safe, no allocation. */
+/** Evaluates the table at (x_1, x_2) and φ = 0 in reduced units (the columns of `gkt table` for a
+ *  dilute ternary mixture scene, hcs = "maxwellian"). Thread-safe, no allocation. */
 gkt_status gkt_ternary_table_evaluate_reduced(const gkt_ternary_table* table, double fraction_1, double fraction_2,
                                               gkt_ternary_transport* out);
+
+/** Evaluates the table at (x_1, x_2) and packing fraction φ in reduced units (the columns of `gkt
+ *  table` for a ternary mixture scene at that packing_fraction, hcs = "maxwellian"). φ must be 0 for a
+ *  dilute table and in [0, max_packing_fraction] for a dense one (GKT_OUT_OF_RANGE above it).
+ *  Thread-safe, no allocation. */
+gkt_status gkt_ternary_table_evaluate_reduced_dense(const gkt_ternary_table* table, double fraction_1,
+                                                    double fraction_2, double packing_fraction,
+                                                    gkt_ternary_transport* out);
 
 #ifdef __cplusplus
 }

@@ -12,42 +12,25 @@
 #include "gkt/transport/mixture/mixture.hpp"
 #include "gkt/transport/mixture/mixture_transport_table.hpp"
 #include "guard.hpp"
+#include "table_common.hpp"
 
 /// A binary's table and what the C layer needs to check states against it.
 struct gkt_binary_table {
   gkt_binary_table(const gkt::Mixture& mixture, int order, int nodes, double max_packing, int packing_nodes,
-                   double tolerance, std::array<double, 2> fraction_range)
-      : table(mixture, order, nodes, max_packing, packing_nodes, tolerance, fraction_range),
-        dimension(mixture.dimension),
-        max_packing_fraction(max_packing) {
-    for (std::size_t i = 0; i < 2; ++i) {
-      mass[i] = mixture.species[i].mass.value();
-      diameter[i] = mixture.species[i].diameter;
-      species_volume[i] = gkt::unit_sphere_volume(dimension) * std::pow(diameter[i], dimension);
-    }
-  }
+                   double tolerance, std::array<double, 2> fraction_range, const gkt::MixtureReference& reference)
+      : table(mixture, order, nodes, max_packing, packing_nodes, tolerance, fraction_range, reference),
+        species(mixture, max_packing) {}
   gkt::BinaryTransportTable table;
-  int dimension;
-  std::array<double, 2> mass{}, diameter{};
-  std::array<double, 2> species_volume{};  // v_d σ_i^d
-  double max_packing_fraction;
+  gkt::c_api::TableSpecies<2> species;
 };
 
 namespace gkt::c_api {
 namespace {
 
 /// Throws a Refusal unless fraction_1 is in [0, 1].
-void require_fraction(double fraction_1, const char* field) {
+void require_fraction(double fraction_1, const std::string& field) {
   if (!(fraction_1 >= 0 && fraction_1 <= 1))
-    throw Refusal{GKT_INVALID_ARGUMENT, std::string(field) + ": must be a number in [0, 1], got " + number(fraction_1)};
-}
-
-/// Returns "[i]", the suffix that names cell i in a message.
-std::string index(std::size_t i) {
-  std::string out(1, '[');
-  out += std::to_string(i);
-  out += ']';
-  return out;
+    throw Refusal{GKT_INVALID_ARGUMENT, refusal(field.c_str(), "", "a number in [0, 1]", fraction_1)};
 }
 
 /// Throws a Refusal (GKT_OUT_OF_RANGE) unless x_1 ∈ [0, 1] is within the table's fraction_range.
@@ -63,41 +46,16 @@ bool covers(const gkt_binary_table& t, double x1, double n, double temperature) 
   const std::array<double, 2> range = t.table.fraction_range();
   if (!(x1 >= range[0] && x1 <= range[1] && n > 0 && std::isfinite(n) && temperature > 0 && std::isfinite(temperature)))
     return false;
-  return t.max_packing_fraction <= 0 ||
-         n * (x1 * t.species_volume[0] + (1 - x1) * t.species_volume[1]) <= t.max_packing_fraction;
+  return t.species.covers_packing({x1, 1 - x1}, n);
 }
 
 /// Throws a Refusal unless (x_1, n, T) is a state the table covers; suffix names the cell ("[3]").
-void require_state(const gkt_binary_table& t, double x1, double n, double temperature, const char* suffix = "") {
-  require_fraction(x1, (std::string("fraction_1") + suffix).c_str());
-  require_covered_fraction(t, x1, std::string("fraction_1") + suffix);
-  require_positive(n, (std::string("number_density") + suffix).c_str());
-  require_positive(temperature, (std::string("temperature") + suffix).c_str());
-  if (t.max_packing_fraction > 0) {
-    const double phi = n * (x1 * t.species_volume[0] + (1 - x1) * t.species_volume[1]);
-    if (phi > t.max_packing_fraction)
-      throw Refusal{GKT_OUT_OF_RANGE,
-                    std::string("number_density") + suffix + ": the packing fraction n v_d sum_i x_i sigma_i^d = " +
-                        number(phi) + " exceeds the table's max_packing_fraction " + number(t.max_packing_fraction)};
-  }
-}
-
-gkt_binary_transport to_c(const BinaryTransport& v) {
-  gkt_binary_transport out{};
-  out.cooling_rate = v.cooling_rate;
-  out.shear_viscosity = v.shear_viscosity;
-  out.thermal_conductivity = v.thermal_conductivity;
-  for (std::size_t i = 0; i < 2; ++i) {
-    out.temperature_ratio[i] = v.temperature_ratio[i];
-    out.thermal_diffusion[i] = v.thermal_diffusion[i];
-    out.pressure_diffusion[i] = v.pressure_diffusion[i];
-    out.dufour[i] = v.dufour[i];
-  }
-  for (std::size_t k = 0; k < 4; ++k) out.mutual_diffusion[k] = v.mutual_diffusion[k];
-  out.pressure = v.pressure;
-  out.bulk_viscosity = v.bulk_viscosity;
-  out.cooling_rate_first_order = v.cooling_rate_first_order;
-  return out;
+void require_state(const gkt_binary_table& t, double x1, double n, double temperature, const std::string& suffix = "") {
+  require_fraction(x1, "fraction_1" + suffix);
+  require_covered_fraction(t, x1, "fraction_1" + suffix);
+  require_positive(n, ("number_density" + suffix).c_str());
+  require_positive(temperature, ("temperature" + suffix).c_str());
+  require_packing_within(t.species.packing({x1, 1 - x1}, n), t.species.max_packing_fraction, suffix);
 }
 
 }  // namespace
@@ -110,41 +68,30 @@ using gkt::c_api::require_pointer;
 
 extern "C" {
 
+gkt_status gkt_binary_table_create_about(int dimension, const double mass[2], const double diameter[2],
+                                         const double alpha[4], int order, int nodes, double max_packing_fraction,
+                                         int packing_nodes, double tolerance, const double fraction_range[2],
+                                         const char* reference, int hcs_order, gkt_binary_table** out) {
+  return guarded([&] {
+    require_pointer(out, "out");
+    const gkt::Mixture mixture = gkt::c_api::mixture_from_c(dimension, 2, mass, diameter, alpha);
+    const gkt::MixtureReference about = gkt::c_api::reference_from_c(reference, hcs_order);
+    auto t = std::make_unique<gkt_binary_table>(mixture, order, nodes, max_packing_fraction, packing_nodes, tolerance,
+                                                fraction_range != nullptr
+                                                    ? std::array<double, 2>{fraction_range[0], fraction_range[1]}
+                                                    : std::array<double, 2>{0.0, 1.0},
+                                                about);
+    *out = t.release();
+    return GKT_OK;
+  });
+}
+
 gkt_status gkt_binary_table_create_to_tolerance(int dimension, const double mass[2], const double diameter[2],
                                                 const double alpha[4], int order, int nodes,
                                                 double max_packing_fraction, int packing_nodes, double tolerance,
                                                 const double fraction_range[2], gkt_binary_table** out) {
-  return guarded([&] {
-    require_pointer(out, "out");
-    require_pointer(mass, "mass");
-    require_pointer(diameter, "diameter");
-    require_pointer(alpha, "alpha");
-    if (dimension != 2 && dimension != 3)
-      throw Refusal{GKT_INVALID_ARGUMENT, "dimension: must be 2 or 3, got " + std::to_string(dimension)};
-    std::vector<gkt::Species> species(2);
-    for (std::size_t i = 0; i < 2; ++i) {
-      const std::string k = std::to_string(i + 1);
-      gkt::c_api::require_positive(mass[i], ("mass_" + k).c_str());
-      gkt::c_api::require_positive(diameter[i], ("diameter_" + k).c_str());
-      species[i] = {mass[i], diameter[i], 0.5, ""};
-    }
-    for (std::size_t i = 0; i < 2; ++i)
-      for (std::size_t j = 0; j < 2; ++j)
-        gkt::c_api::require_restitution(alpha[2 * i + j],
-                                        ("alpha_" + std::to_string(i + 1) + "_" + std::to_string(j + 1)).c_str());
-    if (alpha[1] != alpha[2])
-      throw Refusal{GKT_INVALID_ARGUMENT, "alpha: the restitution matrix must be symmetric, got alpha_1_2 = " +
-                                              number(alpha[1]) + " and alpha_2_1 = " + number(alpha[2])};
-    gkt::Mixture mixture = gkt::make_mixture(dimension, species, 1.0);
-    mixture.alpha.assign(alpha, alpha + 4);
-    mixture.validate();
-    auto t = std::make_unique<gkt_binary_table>(mixture, order, nodes, max_packing_fraction, packing_nodes, tolerance,
-                                                fraction_range != nullptr
-                                                    ? std::array<double, 2>{fraction_range[0], fraction_range[1]}
-                                                    : std::array<double, 2>{0.0, 1.0});
-    *out = t.release();
-    return GKT_OK;
-  });
+  return gkt_binary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_packing_fraction,
+                                       packing_nodes, tolerance, fraction_range, "maxwellian", 2, out);
 }
 
 gkt_status gkt_binary_table_create(int dimension, const double mass[2], const double diameter[2], const double alpha[4],
@@ -185,7 +132,7 @@ gkt_status gkt_binary_table_evaluate(const gkt_binary_table* table, double fract
     require_pointer(out, "out");
     if (!gkt::c_api::covers(*table, fraction_1, number_density, temperature))  // messages only on failure
       gkt::c_api::require_state(*table, fraction_1, number_density, temperature);
-    *out = gkt::c_api::to_c(table->table.evaluate(fraction_1, number_density, temperature));
+    *out = gkt::c_api::to_c<gkt_binary_transport>(table->table.evaluate(fraction_1, number_density, temperature));
     return GKT_OK;
   });
 }
@@ -202,10 +149,11 @@ gkt_status gkt_binary_table_evaluate_cells(const gkt_binary_table* table, size_t
     const gkt_binary_table& t = *table;
     for (std::size_t i = 0; i < cells; ++i) {
       if (!gkt::c_api::covers(t, fraction_1[i], number_density[i], temperature[i]))  // messages only on failure
-        gkt::c_api::require_state(t, fraction_1[i], number_density[i], temperature[i], gkt::c_api::index(i).c_str());
+        gkt::c_api::require_state(t, fraction_1[i], number_density[i], temperature[i], gkt::c_api::cell_index(i));
     }
     for (std::size_t i = 0; i < cells; ++i)
-      out[i] = gkt::c_api::to_c(table->table.evaluate(fraction_1[i], number_density[i], temperature[i]));
+      out[i] = gkt::c_api::to_c<gkt_binary_transport>(
+          table->table.evaluate(fraction_1[i], number_density[i], temperature[i]));
     return GKT_OK;
   });
 }
@@ -218,22 +166,17 @@ gkt_status gkt_binary_table_evaluate_reduced(const gkt_binary_table* table, doub
     gkt::c_api::require_fraction(fraction_1, "fraction_1");
     const gkt_binary_table& t = *table;
     gkt::c_api::require_covered_fraction(t, fraction_1, "fraction_1");
-    if (!(packing_fraction >= 0 && packing_fraction <= t.max_packing_fraction)) {
-      if (packing_fraction > t.max_packing_fraction && std::isfinite(packing_fraction))
-        throw Refusal{GKT_OUT_OF_RANGE, "packing_fraction: must be in [0, " + number(t.max_packing_fraction) +
-                                            "] (the table's max_packing_fraction), got " + number(packing_fraction)};
-      throw Refusal{GKT_INVALID_ARGUMENT, "packing_fraction: must be a number >= 0, got " + number(packing_fraction)};
-    }
+    gkt::c_api::require_reduced_packing(packing_fraction, t.species.max_packing_fraction);
     // A state of this φ at T = 1 (n = 1 when dilute, where n drops out of every reduced value),
     // evaluated physically and divided by the reference gas of (m̄, σ̄) at n, T.
     const double x[2] = {fraction_1, 1 - fraction_1};
-    const double n =
-        packing_fraction > 0 ? packing_fraction / (x[0] * t.species_volume[0] + x[1] * t.species_volume[1]) : 1.0;
+    const double n = packing_fraction > 0 ? packing_fraction / t.species.packing({x[0], x[1]}, 1.0) : 1.0;
     const double temperature = 1;
     const gkt::BinaryTransport v = t.table.evaluate(fraction_1, n, temperature);
-    const double mbar = x[0] * t.mass[0] + x[1] * t.mass[1], sbar = x[0] * t.diameter[0] + x[1] * t.diameter[1];
-    const gkt::ReferenceGas ref = gkt::reference_gas(t.dimension, mbar, sbar, n, temperature);
-    gkt_binary_transport r = gkt::c_api::to_c(v);
+    const auto& sp = t.species;
+    const double mbar = x[0] * sp.mass[0] + x[1] * sp.mass[1], sbar = x[0] * sp.diameter[0] + x[1] * sp.diameter[1];
+    const gkt::ReferenceGas ref = gkt::reference_gas(sp.dimension, mbar, sbar, n, temperature);
+    gkt_binary_transport r = gkt::c_api::to_c<gkt_binary_transport>(v);
     r.cooling_rate /= ref.collision_frequency;
     r.shear_viscosity /= ref.viscosity;
     r.thermal_conductivity /= ref.conductivity;

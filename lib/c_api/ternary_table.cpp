@@ -1,6 +1,6 @@
-// The C API of the dilute ternary's per-cell table (include/gkt/gkt.h): TernaryTransportTable built
-// from C arrays (masses, diameters, the 3 × 3 restitution matrix), evaluated in physical or reduced
-// units (docs/conventions.md, mixtures; docs/theory.md §17.8).
+// The C API of the ternary's per-cell table, dilute or dense (include/gkt/gkt.h): TernaryTransportTable
+// built from C arrays (masses, diameters, the 3 × 3 restitution matrix; φ_max and φ nodes when dense),
+// evaluated in physical or reduced units (docs/conventions.md, mixtures; docs/theory.md §17.8, §18.10).
 #include <array>
 #include <cmath>
 #include <memory>
@@ -11,33 +11,25 @@
 #include "gkt/transport/mixture/mixture.hpp"
 #include "gkt/transport/mixture/ternary_transport_table.hpp"
 #include "guard.hpp"
+#include "table_common.hpp"
 
-/// A ternary's table.
+/// A ternary's table and what the C layer needs to check states against it.
 struct gkt_ternary_table {
-  gkt_ternary_table(const gkt::Mixture& mixture, int order, int nodes, double tolerance)
-      : table(mixture, order, nodes, tolerance) {}
+  gkt_ternary_table(const gkt::Mixture& mixture, int order, int nodes, int max_nodes, double tolerance,
+                    double max_packing, int packing_nodes, const gkt::MixtureReference& reference)
+      : table(mixture, order, nodes, tolerance, max_nodes, max_packing, packing_nodes, reference),
+        species(mixture, max_packing) {}
   gkt::TernaryTransportTable table;
+  gkt::c_api::TableSpecies<3> species;
 };
 
 namespace gkt::c_api {
 namespace {
 
 /// True if (x_1, x_2, n, T) is a state the table covers (the checks of require_state, no message).
-bool covers(double x1, double x2, double n, double temperature) {
+bool covers(const gkt_ternary_table& t, double x1, double x2, double n, double temperature) {
   return x1 >= 0 && x1 <= 1 && x2 >= 0 && x2 <= 1 - x1 && n > 0 && std::isfinite(n) && temperature > 0 &&
-         std::isfinite(temperature);
-}
-
-/// Returns field + suffix + ": must be " + range + ", got " + x (built by appending: GCC 12's
-/// -Wrestrict misreads chained operator+ on a const std::string&).
-std::string refusal(const char* field, const std::string& suffix, const char* range, double x) {
-  std::string out(field);
-  out += suffix;
-  out += ": must be ";
-  out += range;
-  out += ", got ";
-  out += number(x);
-  return out;
+         std::isfinite(temperature) && t.species.covers_packing({x1, x2, 1 - x1 - x2}, n);
 }
 
 /// Throws a Refusal unless x_1 ∈ [0, 1] and x_2 ∈ [0, 1 − x_1]; suffix names the cell ("[3]").
@@ -48,37 +40,16 @@ void require_fractions(double x1, double x2, const std::string& suffix) {
     throw Refusal{GKT_INVALID_ARGUMENT, refusal("fraction_2", suffix, "a number in [0, 1 - fraction_1]", x2)};
 }
 
-/// Throws a Refusal unless (x_1, x_2, n, T) is a state the table covers.
-void require_state(double x1, double x2, double n, double temperature, const std::string& suffix) {
+/// Throws a Refusal unless (x_1, x_2, n, T) is a state the table covers (GKT_OUT_OF_RANGE for a φ above a
+/// dense table's max_packing_fraction).
+void require_state(const gkt_ternary_table& t, double x1, double x2, double n, double temperature,
+                   const std::string& suffix) {
   require_fractions(x1, x2, suffix);
   if (!(n > 0 && std::isfinite(n)))
     throw Refusal{GKT_INVALID_ARGUMENT, refusal("number_density", suffix, "a finite number > 0", n)};
   if (!(temperature > 0 && std::isfinite(temperature)))
     throw Refusal{GKT_INVALID_ARGUMENT, refusal("temperature", suffix, "a finite number > 0", temperature)};
-}
-
-/// Returns "[i]", the suffix that names cell i in a message.
-std::string index(std::size_t i) {
-  std::string out(1, '[');
-  out += std::to_string(i);
-  out += ']';
-  return out;
-}
-
-gkt_ternary_transport to_c(const TernaryTransport& v) {
-  gkt_ternary_transport out{};
-  out.cooling_rate = v.cooling_rate;
-  out.shear_viscosity = v.shear_viscosity;
-  out.thermal_conductivity = v.thermal_conductivity;
-  for (std::size_t i = 0; i < 3; ++i) {
-    out.temperature_ratio[i] = v.temperature_ratio[i];
-    out.thermal_diffusion[i] = v.thermal_diffusion[i];
-    out.pressure_diffusion[i] = v.pressure_diffusion[i];
-    out.dufour[i] = v.dufour[i];
-  }
-  for (std::size_t k = 0; k < 9; ++k) out.mutual_diffusion[k] = v.mutual_diffusion[k];
-  out.pressure = v.pressure;
-  return out;
+  require_packing_within(t.species.packing({x1, x2, 1 - x1 - x2}, n), t.species.max_packing_fraction, suffix);
 }
 
 }  // namespace
@@ -91,51 +62,32 @@ using gkt::c_api::require_pointer;
 
 extern "C" {
 
-gkt_status gkt_ternary_table_create(int dimension, const double mass[3], const double diameter[3],
-                                    const double alpha[9], int order, int nodes, double tolerance,
-                                    gkt_ternary_table** out) {
+gkt_status gkt_ternary_table_create_about(int dimension, const double mass[3], const double diameter[3],
+                                          const double alpha[9], int order, int nodes, int max_nodes, double tolerance,
+                                          double max_packing_fraction, int packing_nodes, const char* reference,
+                                          int hcs_order, gkt_ternary_table** out) {
   return guarded([&] {
     require_pointer(out, "out");
-    require_pointer(mass, "mass");
-    require_pointer(diameter, "diameter");
-    require_pointer(alpha, "alpha");
-    if (dimension != 2 && dimension != 3)
-      throw Refusal{GKT_INVALID_ARGUMENT, "dimension: must be 2 or 3, got " + std::to_string(dimension)};
-    std::vector<gkt::Species> species(3);
-    for (std::size_t i = 0; i < 3; ++i) {
-      const std::string k = std::to_string(i + 1);
-      gkt::c_api::require_positive(mass[i], ("mass_" + k).c_str());
-      gkt::c_api::require_positive(diameter[i], ("diameter_" + k).c_str());
-      species[i] = {mass[i], diameter[i], i < 2 ? 1.0 / 3 : 1 - 2.0 / 3, ""};
-    }
-    for (std::size_t i = 0; i < 3; ++i)
-      for (std::size_t j = 0; j < 3; ++j)
-        gkt::c_api::require_restitution(alpha[3 * i + j],
-                                        ("alpha_" + std::to_string(i + 1) + "_" + std::to_string(j + 1)).c_str());
-    for (std::size_t i = 0; i < 3; ++i)
-      for (std::size_t j = i + 1; j < 3; ++j)
-        if (alpha[3 * i + j] != alpha[3 * j + i]) {
-          std::string message = "alpha: the restitution matrix must be symmetric, got alpha_";
-          message += std::to_string(i + 1);
-          message += '_';
-          message += std::to_string(j + 1);
-          message += " = ";
-          message += number(alpha[3 * i + j]);
-          message += " and alpha_";
-          message += std::to_string(j + 1);
-          message += '_';
-          message += std::to_string(i + 1);
-          message += " = ";
-          message += number(alpha[3 * j + i]);
-          throw Refusal{GKT_INVALID_ARGUMENT, message};
-        }
-    gkt::Mixture mixture = gkt::make_mixture(dimension, species, 1.0);
-    mixture.alpha.assign(alpha, alpha + 9);
-    mixture.validate();
-    auto t = std::make_unique<gkt_ternary_table>(mixture, order, nodes, tolerance);
+    const gkt::Mixture mixture = gkt::c_api::mixture_from_c(dimension, 3, mass, diameter, alpha);
+    const gkt::MixtureReference about = gkt::c_api::reference_from_c(reference, hcs_order);
+    auto t = std::make_unique<gkt_ternary_table>(mixture, order, nodes, max_nodes, tolerance, max_packing_fraction,
+                                                 packing_nodes, about);
     *out = t.release();
     return GKT_OK;
   });
+}
+
+gkt_status gkt_ternary_table_create_dense(int dimension, const double mass[3], const double diameter[3],
+                                          const double alpha[9], int order, int nodes, int max_nodes, double tolerance,
+                                          double max_packing_fraction, int packing_nodes, gkt_ternary_table** out) {
+  return gkt_ternary_table_create_about(dimension, mass, diameter, alpha, order, nodes, max_nodes, tolerance,
+                                        max_packing_fraction, packing_nodes, "maxwellian", 2, out);
+}
+
+gkt_status gkt_ternary_table_create(int dimension, const double mass[3], const double diameter[3],
+                                    const double alpha[9], int order, int nodes, double tolerance,
+                                    gkt_ternary_table** out) {
+  return gkt_ternary_table_create_dense(dimension, mass, diameter, alpha, order, nodes, 33, tolerance, 0.0, 5, out);
 }
 
 void gkt_ternary_table_destroy(gkt_ternary_table* table) { std::unique_ptr<gkt_ternary_table> owned(table); }
@@ -167,9 +119,10 @@ gkt_status gkt_ternary_table_evaluate(const gkt_ternary_table* table, double fra
   return guarded([&] {
     require_pointer(table, "table");
     require_pointer(out, "out");
-    if (!gkt::c_api::covers(fraction_1, fraction_2, number_density, temperature))  // messages only on failure
-      gkt::c_api::require_state(fraction_1, fraction_2, number_density, temperature, "");
-    *out = gkt::c_api::to_c(table->table.evaluate(fraction_1, fraction_2, number_density, temperature));
+    if (!gkt::c_api::covers(*table, fraction_1, fraction_2, number_density, temperature))  // messages only on failure
+      gkt::c_api::require_state(*table, fraction_1, fraction_2, number_density, temperature, "");
+    *out = gkt::c_api::to_c<gkt_ternary_transport>(
+        table->table.evaluate(fraction_1, fraction_2, number_density, temperature));
     return GKT_OK;
   });
 }
@@ -185,22 +138,31 @@ gkt_status gkt_ternary_table_evaluate_cells(const gkt_ternary_table* table, size
     require_pointer(number_density, "number_density");
     require_pointer(temperature, "temperature");
     for (std::size_t i = 0; i < cells; ++i)
-      if (!gkt::c_api::covers(fraction_1[i], fraction_2[i], number_density[i], temperature[i]))
-        gkt::c_api::require_state(fraction_1[i], fraction_2[i], number_density[i], temperature[i],
-                                  gkt::c_api::index(i));
+      if (!gkt::c_api::covers(*table, fraction_1[i], fraction_2[i], number_density[i], temperature[i]))
+        gkt::c_api::require_state(*table, fraction_1[i], fraction_2[i], number_density[i], temperature[i],
+                                  gkt::c_api::cell_index(i));
     for (std::size_t i = 0; i < cells; ++i)
-      out[i] = gkt::c_api::to_c(table->table.evaluate(fraction_1[i], fraction_2[i], number_density[i], temperature[i]));
+      out[i] = gkt::c_api::to_c<gkt_ternary_transport>(
+          table->table.evaluate(fraction_1[i], fraction_2[i], number_density[i], temperature[i]));
     return GKT_OK;
   });
 }
 
 gkt_status gkt_ternary_table_evaluate_reduced(const gkt_ternary_table* table, double fraction_1, double fraction_2,
                                               gkt_ternary_transport* out) {
+  return gkt_ternary_table_evaluate_reduced_dense(table, fraction_1, fraction_2, 0.0, out);
+}
+
+gkt_status gkt_ternary_table_evaluate_reduced_dense(const gkt_ternary_table* table, double fraction_1,
+                                                    double fraction_2, double packing_fraction,
+                                                    gkt_ternary_transport* out) {
   return guarded([&] {
     require_pointer(table, "table");
     require_pointer(out, "out");
     gkt::c_api::require_fractions(fraction_1, fraction_2, "");
-    *out = gkt::c_api::to_c(table->table.evaluate_reduced(fraction_1, fraction_2));
+    gkt::c_api::require_reduced_packing(packing_fraction, table->species.max_packing_fraction);
+    *out = gkt::c_api::to_c<gkt_ternary_transport>(
+        table->table.evaluate_reduced(fraction_1, fraction_2, packing_fraction));
     return GKT_OK;
   });
 }

@@ -492,7 +492,8 @@ def test_ternary_table_at_a_node_equals_the_mixture_table(ternary_table):
     n, temperature = np.array([1.0, 0.2]), np.array([1.0, 4.0])
     cells = ternary_table.evaluate(0.5, 0.25, n, temperature)
     scales = ternary_scales(0.5, 0.25, n, temperature)
-    assert sorted(cells) == sorted([*scales, "pressure"])
+    assert sorted(cells) == sorted([*scales, "pressure", "bulk_viscosity", "cooling_rate_first_order"])
+    assert np.all(cells["bulk_viscosity"] == 0) and np.all(cells["cooling_rate_first_order"] == 0)  # dilute
     solved = ternary_solve(0.5, 0.25, list(scales))
     for name, scale in scales.items():
         np.testing.assert_allclose(cells[name] / scale, solved[name][0], rtol=1e-10, atol=1e-12, err_msg=name)
@@ -564,3 +565,85 @@ def test_ternary_table_refuses_a_pole_of_the_truncated_solution():
     with pytest.raises(ValueError, match=pattern) as refused:  # 3 x 3 nodes, no refinement: cheap
         gkt.TernaryTransportTable((1, 10, 1), (1, 1, 1), 0.8, order=1, nodes=3, tolerance=5e-2, max_nodes=3)
     assert "\n" not in str(refused.value)
+
+
+# The dense ternary of tests/test_ternary_transport_table.cpp (DenseEqualsDirectSolves): three similar
+# species, 3 nodes per axis and in phi in [0, 0.1], no refinement, tolerance 5e-2 (a few seconds).
+DENSE_MASS, DENSE_DIAMETER = (1, 1.2, 1.4), (1, 1.1, 0.95)
+DENSE_ALPHA = [[0.9, 0.85, 0.8], [0.85, 0.8, 0.8], [0.8, 0.8, 0.85]]
+DENSE_PHI_MAX = 0.1
+
+
+@pytest.fixture(scope="module")
+def dense_ternary_table():
+    return gkt.TernaryTransportTable(DENSE_MASS, DENSE_DIAMETER, DENSE_ALPHA, order=1, nodes=3, max_nodes=3,
+                                     tolerance=TERNARY_TOLERANCE, max_packing_fraction=DENSE_PHI_MAX,
+                                     packing_nodes=3)
+
+
+def test_dense_ternary_table_agrees_with_direct_dense_solves(dense_ternary_table):
+    """Off the nodes (x_1, x_2, phi) = (0.21, 0.44, 0.07) the dense table's physical set, divided by the
+    reference gas of (m̄, σ̄) at n, T (p by nT, κ_b by η0, ζ_U by 1), agrees with the mixture model's
+    columns at that packing_fraction within the tolerance the table was built for; above phi_max every
+    value is nan (the per-cell contract of gkt::evaluate)."""
+    table = dense_ternary_table
+    assert 0 < table.interpolation_error <= TERNARY_TOLERANCE
+    assert table.build_cost["packing_nodes"] >= 3
+    x1, x2, phi, temperature = 0.21, 0.44, 0.07, 0.8
+    fractions = np.array([x1, x2, 1 - x1 - x2])
+    mbar, sbar = fractions @ np.array(DENSE_MASS, float), fractions @ np.array(DENSE_DIAMETER, float)
+    n = phi / (np.pi / 6 * (fractions @ np.array(DENSE_DIAMETER, float) ** 3))
+    eta0 = 5 / (16 * sbar**2) * np.sqrt(mbar * temperature / np.pi)
+    kappa0 = 15 / 4 * eta0 / mbar
+    scales = {"shear_viscosity": eta0, "thermal_conductivity": kappa0, "bulk_viscosity": eta0,
+              "cooling_rate_first_order": 1.0, "pressure": n * temperature, "cooling_rate": n * temperature / eta0}
+    solved = gkt.table({"model": "mixture", "alpha": DENSE_ALPHA, "order": 1, "hcs": "maxwellian",
+                        "packing_fraction": phi, "coefficients": list(scales),
+                        "species": [{"mass": m, "diameter": s, "fraction": x}
+                                    for m, s, x in zip(DENSE_MASS, DENSE_DIAMETER, fractions)]})
+    cells = table.evaluate(x1, x2, n, temperature)
+    for name, scale in scales.items():
+        exact = solved[name][0]
+        assert abs(cells[name] / scale - exact) <= TERNARY_TOLERANCE * max(1.0, abs(exact)), name
+    assert solved["pressure"][0] > 1.1 and solved["bulk_viscosity"][0] > 0  # dense values, not dilute ones
+    beyond = table.evaluate(x1, x2, 2 * n, temperature)
+    assert all(np.isnan(column[()]) for column in beyond.values())
+
+
+def test_dense_ternary_table_refusals():
+    """Bad phi_max and packing_nodes name the field (a tolerance the table cannot meet is refused by the
+    same constructor: test_ternary_table_refuses_a_pole_of_the_truncated_solution; a dense refusal splits
+    for ~20 s before it gives up, too slow for this suite)."""
+    with pytest.raises(ValueError, match=r"^max_packing_fraction: must be a number in \[0, 0\.5\) for dimension = 3"):
+        gkt.TernaryTransportTable(DENSE_MASS, DENSE_DIAMETER, 0.9, max_packing_fraction=0.6)
+    with pytest.raises(ValueError, match=r"^max_packing_fraction: must be a number in \[0, 0\.5\) for dimension = 3"):
+        gkt.TernaryTransportTable(DENSE_MASS, DENSE_DIAMETER, 0.9, max_packing_fraction=-0.1)
+    with pytest.raises(ValueError, match=r"^packing_nodes: must be an integer in \[3, 33\], got 2$"):
+        gkt.TernaryTransportTable(DENSE_MASS, DENSE_DIAMETER, 0.9, max_packing_fraction=0.1, packing_nodes=2)
+
+
+def test_binary_table_about_the_cumulant_hcs_is_the_one_component_gas():
+    """Identical species about the nonlinear HCS with a_2 (reference="nonlinear", hcs_order=2, docs/theory.md
+    section 17.14): the binary table's eta, lambda, sum_j D''_j and zeta, reduced by the reference gas, equal the
+    smooth-inelastic model at order 1 (which keeps a_2 in f0) to round-off; the default Maxwellian reference does
+    not (lambda off by > 1e-3). A bad reference or hcs_order is refused naming the field."""
+    alpha, x1, n, temperature = 0.7, 0.3, 1.0, 1.0
+    one = gkt.table({"model": "smooth-inelastic", "alpha": alpha, "order": 1,
+                     "coefficients": ["shear_viscosity", "thermal_conductivity", "density_heat_coefficient",
+                                      "cooling_rate"]})
+    eta0 = 5 / 16 * np.sqrt(temperature / np.pi)
+    kappa0 = 15 / 4 * eta0
+    cumulant = gkt.BinaryTransportTable((1, 1), (1, 1), alpha, order=1, nodes=3, tolerance=1e-9,
+                                        reference="nonlinear", hcs_order=2).evaluate(x1, n, temperature)
+    np.testing.assert_allclose(cumulant["shear_viscosity"] / eta0, one["shear_viscosity"][0], rtol=1e-12)
+    np.testing.assert_allclose(cumulant["thermal_conductivity"] / kappa0, one["thermal_conductivity"][0], rtol=1e-12)
+    np.testing.assert_allclose((cumulant["dufour_1"] + cumulant["dufour_2"]) * temperature / kappa0,
+                               one["density_heat_coefficient"][0], rtol=1e-12)
+    np.testing.assert_allclose(cumulant["cooling_rate"] * eta0 / (n * temperature), one["cooling_rate"][0], rtol=1e-12)
+    maxwellian = gkt.BinaryTransportTable((1, 1), (1, 1), alpha, order=1, nodes=3, tolerance=1e-9)
+    assert abs(maxwellian.evaluate(x1, n, temperature)["thermal_conductivity"] / kappa0
+               / one["thermal_conductivity"][0] - 1) > 1e-3
+    with pytest.raises(ValueError, match=r'^reference: must be "maxwellian", "linear" or "nonlinear", got "hcs"$'):
+        gkt.BinaryTransportTable((1, 1), (1, 1), alpha, reference="hcs")
+    with pytest.raises(ValueError, match=r"^hcs_order: must be an integer in \[2, 6\]"):
+        gkt.TernaryTransportTable((1, 2, 3), (1, 1, 1), alpha, reference="linear", hcs_order=7)

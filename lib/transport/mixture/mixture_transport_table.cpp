@@ -9,6 +9,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
@@ -30,8 +31,9 @@ namespace {
 
 }  // namespace
 
-BinaryTransportTable::Reduced BinaryTransportTable::solve(const Mixture& mixture, int order) {
-  const MixtureNavierStokes ns(mixture, order);
+BinaryTransportTable::Reduced BinaryTransportTable::solve(const Mixture& mixture, int order,
+                                                          const MixtureReference& reference) {
+  const MixtureNavierStokes ns(mixture, order, reference);
   const MixtureTransportValues v = ns.coefficients(order);
   const MixtureCoolingState& hcs = ns.cooling_state();
   return {hcs.cooling_rate,
@@ -77,8 +79,12 @@ constexpr double kMinWidth = 1.0 / 4096;  // the narrowest piece the build split
 }  // namespace
 
 BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, int nodes, double max_packing_fraction,
-                                           int packing_nodes, double tolerance, std::array<double, 2> fraction_range)
-    : dimension_(mixture.dimension), max_packing_(max_packing_fraction), fraction_range_(fraction_range) {
+                                           int packing_nodes, double tolerance, std::array<double, 2> fraction_range,
+                                           MixtureReference reference)
+    : dimension_(mixture.dimension),
+      max_packing_(max_packing_fraction),
+      fraction_range_(fraction_range),
+      reference_(std::move(reference)) {
   const auto started = std::chrono::steady_clock::now();
   if (mixture.size() != 2) throw std::invalid_argument("species: the transport table is for binaries (2 species)");
   if (nodes < 3 || nodes > kMaxNodes)
@@ -86,6 +92,9 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
   if (packing_nodes < 3 || packing_nodes > kMaxNodes)
     throw std::invalid_argument("packing_nodes: must be an integer in [3, 64], got " + std::to_string(packing_nodes));
   if (order < 1 || order > 12) throw std::invalid_argument("order: must be an integer in [1, 12]");
+  if (reference_.scheme != MixtureHcsScheme::maxwellian && (reference_.hcs_order < 2 || reference_.hcs_order > 6))
+    throw std::invalid_argument("hcs_order: must be an integer in [2, 6] for a table about the cumulant HCS, got " +
+                                std::to_string(reference_.hcs_order));
   const Rational limit = gkt::max_packing_fraction(mixture.dimension);
   if (!(max_packing_fraction >= 0 && max_packing_fraction < limit.to_double()))
     throw std::invalid_argument("max_packing_fraction: must be a number in [0, " + limit.to_decimal_string() +
@@ -116,7 +125,7 @@ BinaryTransportTable::BinaryTransportTable(const Mixture& mixture, int order, in
     m.species[0].fraction = x1;
     m.species[1].fraction = 1 - x1;
     m.packing_fraction = phi;
-    return solved.emplace(key, solve(m, order)).first->second;
+    return solved.emplace(key, solve(m, order, reference_)).first->second;
   };
   // The largest error of a piece's interpolant against direct solves at the grid of angular
   // positions offset + k·step in x_1 and φ (offset ½, step 1: the midpoints; offset ⅓, step 2: the

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "gkt/transport/common/pair_correlation.hpp"
 #include "gkt/transport/common/reference_gas.hpp"
@@ -45,8 +46,9 @@ constexpr double kMinWidth = 1.0 / 256;  // the narrowest rectangle the build sp
 
 }  // namespace
 
-TernaryTransportTable::Reduced TernaryTransportTable::solve(const Mixture& mixture, int order) {
-  const MixtureNavierStokes ns(mixture, order);
+TernaryTransportTable::Reduced TernaryTransportTable::solve(const Mixture& mixture, int order,
+                                                            const MixtureReference& reference) {
+  const MixtureNavierStokes ns(mixture, order, reference);
   const MixtureTransportValues v = ns.coefficients(order);
   const MixtureCoolingState& hcs = ns.cooling_state();
   Reduced r{};
@@ -92,8 +94,9 @@ TernaryTransportTable::Reduced TernaryTransportTable::Piece::reduced_at(double u
 }
 
 TernaryTransportTable::TernaryTransportTable(const Mixture& mixture, int order, int nodes, double tolerance,
-                                             int max_nodes, double max_packing_fraction, int packing_nodes)
-    : dimension_(mixture.dimension), max_packing_(max_packing_fraction) {
+                                             int max_nodes, double max_packing_fraction, int packing_nodes,
+                                             MixtureReference reference)
+    : dimension_(mixture.dimension), max_packing_(max_packing_fraction), reference_(std::move(reference)) {
   const auto started = std::chrono::steady_clock::now();
   if (mixture.size() != 3)
     throw std::invalid_argument("species: the ternary transport table is for 3 species, got " +
@@ -106,6 +109,9 @@ TernaryTransportTable::TernaryTransportTable(const Mixture& mixture, int order, 
   if (order < 1 || order > 12) throw std::invalid_argument("order: must be an integer in [1, 12]");
   if (!(tolerance > 0 && tolerance <= 1))
     throw std::invalid_argument("tolerance: must be a number in (0, 1], got " + short_number(tolerance));
+  if (reference_.scheme != MixtureHcsScheme::maxwellian && (reference_.hcs_order < 2 || reference_.hcs_order > 6))
+    throw std::invalid_argument("hcs_order: must be an integer in [2, 6] for a table about the cumulant HCS, got " +
+                                std::to_string(reference_.hcs_order));
   if (packing_nodes < 3 || packing_nodes > kMaxNodes)
     throw std::invalid_argument("packing_nodes: must be an integer in [3, 33], got " + std::to_string(packing_nodes));
   if (mixture.dimension == 2 || mixture.dimension == 3) {
@@ -142,7 +148,7 @@ TernaryTransportTable::TernaryTransportTable(const Mixture& mixture, int order, 
     m.species[1].fraction = (1 - u) * v;
     m.species[2].fraction = (1 - u) * (1 - v);
     m.packing_fraction = phi;
-    return solved.emplace(key, solve(m, order)).first->second;
+    return solved.emplace(key, solve(m, order, reference_)).first->second;
   };
   // The largest error of a piece's interpolant against direct solves on the grid of angular
   // positions offset + k·step in u and v (and φ) (offset ½, step 1: every pair of midpoints; offset ⅓,

@@ -307,6 +307,8 @@ class MixtureColumns {
       put("dufour" + at, [i](const Cell& v) { return v.dufour[i]; });
     }
     put("pressure", [](const Cell& v) { return v.pressure; });
+    put("bulk_viscosity", [](const Cell& v) { return v.bulk_viscosity; });
+    put("cooling_rate_first_order", [](const Cell& v) { return v.cooling_rate_first_order; });
   }
 
   /// Adds the column `name` with get(cell) at every cell.
@@ -418,15 +420,26 @@ std::vector<double> restitution_matrix(const py::object& alpha, py::ssize_t s) {
   throw std::invalid_argument("alpha: must be a number or a " + n + " x " + n + " restitution matrix");
 }
 
+/// Returns the f^(0) a table is built about (theory.md §17.14): "maxwellian" (hcs_order ignored, as
+/// MixtureReference ignores it), or "linear" / "nonlinear", the HCS of that scheme with a_2 … a_K in f^(0), K =
+/// hcs_order (the table refuses K outside [2, 6]).
+gkt::MixtureReference table_reference(const std::string& reference, int hcs_order) {
+  if (reference == "maxwellian") return {};
+  if (reference == "linear") return {gkt::MixtureHcsScheme::linear, hcs_order};
+  if (reference == "nonlinear") return {gkt::MixtureHcsScheme::nonlinear, hcs_order};
+  throw std::invalid_argument("reference: must be \"maxwellian\", \"linear\" or \"nonlinear\", got \"" + reference +
+                              "\"");
+}
+
 /// A binary's Navier–Stokes table (gkt/transport/mixture/mixture_transport_table.hpp) built once,
 /// evaluated per cell over NumPy arrays of (x_1, n, T).
 class BinaryTable {
  public:
   BinaryTable(const std::array<double, 2>& mass, const std::array<double, 2>& diameter, const py::object& alpha,
               int dimension, int order, int nodes, double max_packing_fraction, int packing_nodes, double tolerance,
-              const std::array<double, 2>& fraction_range)
+              const std::array<double, 2>& fraction_range, const std::string& reference, int hcs_order)
       : table_(build(mass, diameter, alpha, dimension, order, nodes, max_packing_fraction, packing_nodes, tolerance,
-                     fraction_range)) {}
+                     fraction_range, table_reference(reference, hcs_order))) {}
 
   [[nodiscard]] double interpolation_error() const { return table_->interpolation_error(); }
   [[nodiscard]] double validation_error() const { return table_->validation_error(); }
@@ -449,47 +462,44 @@ class BinaryTable {
       py::gil_scoped_release release;
       gkt::evaluate(*table_, {in[0].data(), n}, {in[1].data(), n}, {in[2].data(), n}, cells);
     }
-    using T = gkt::BinaryTransport;
-    MixtureColumns<T> columns(cells, shape_of(in[0]), 2);
-    columns.put("bulk_viscosity", [](const T& v) { return v.bulk_viscosity; });
-    columns.put("cooling_rate_first_order", [](const T& v) { return v.cooling_rate_first_order; });
-    return columns.dict();
+    return MixtureColumns<gkt::BinaryTransport>(cells, shape_of(in[0]), 2).dict();
   }
 
  private:
   std::shared_ptr<const gkt::BinaryTransportTable> table_;
 
-  static std::shared_ptr<const gkt::BinaryTransportTable> build(const std::array<double, 2>& mass,
-                                                                const std::array<double, 2>& diameter,
-                                                                const py::object& alpha, int dimension, int order,
-                                                                int nodes, double max_packing_fraction,
-                                                                int packing_nodes, double tolerance,
-                                                                const std::array<double, 2>& fraction_range) {
+  static std::shared_ptr<const gkt::BinaryTransportTable> build(
+      const std::array<double, 2>& mass, const std::array<double, 2>& diameter, const py::object& alpha, int dimension,
+      int order, int nodes, double max_packing_fraction, int packing_nodes, double tolerance,
+      const std::array<double, 2>& fraction_range, const gkt::MixtureReference& reference) {
     gkt::Mixture mixture =
         gkt::make_mixture(dimension, {{mass[0], diameter[0], 0.5, ""}, {mass[1], diameter[1], 0.5, ""}}, 1.0);
     mixture.alpha = restitution_matrix(alpha, 2);
     mixture.validate();
     py::gil_scoped_release release;
     return std::make_shared<const gkt::BinaryTransportTable>(mixture, order, nodes, max_packing_fraction, packing_nodes,
-                                                             tolerance, fraction_range);
+                                                             tolerance, fraction_range, reference);
   }
 };
 
-/// A dilute ternary's Navier–Stokes table (gkt/transport/mixture/ternary_transport_table.hpp)
+/// A ternary's Navier–Stokes table, dilute or dense (gkt/transport/mixture/ternary_transport_table.hpp),
 /// built once, evaluated per cell over NumPy arrays of (x_1, x_2, n, T).
 class TernaryTable {
  public:
   TernaryTable(const std::array<double, 3>& mass, const std::array<double, 3>& diameter, const py::object& alpha,
-               int dimension, int order, int nodes, double tolerance, int max_nodes)
-      : table_(build(mass, diameter, alpha, dimension, order, nodes, tolerance, max_nodes)) {}
+               int dimension, int order, int nodes, double tolerance, int max_nodes, double max_packing_fraction,
+               int packing_nodes, const std::string& reference, int hcs_order)
+      : table_(build(mass, diameter, alpha, dimension, order, nodes, tolerance, max_nodes, max_packing_fraction,
+                     packing_nodes, table_reference(reference, hcs_order))) {}
 
   [[nodiscard]] double interpolation_error() const { return table_->interpolation_error(); }
   [[nodiscard]] double validation_error() const { return table_->validation_error(); }
-  /// Returns {pieces, nodes_per_axis, solves, seconds}: what the build cost.
+  /// Returns {pieces, nodes_per_axis, packing_nodes, solves, seconds}: what the build cost.
   [[nodiscard]] py::dict build_cost() const {
     py::dict out;
     out["pieces"] = table_->pieces();
     out["nodes_per_axis"] = table_->nodes_per_axis();
+    out["packing_nodes"] = table_->packing_nodes();
     out["solves"] = table_->build_solves();
     out["seconds"] = table_->build_seconds();
     return out;
@@ -514,7 +524,9 @@ class TernaryTable {
   static std::shared_ptr<const gkt::TernaryTransportTable> build(const std::array<double, 3>& mass,
                                                                  const std::array<double, 3>& diameter,
                                                                  const py::object& alpha, int dimension, int order,
-                                                                 int nodes, double tolerance, int max_nodes) {
+                                                                 int nodes, double tolerance, int max_nodes,
+                                                                 double max_packing_fraction, int packing_nodes,
+                                                                 const gkt::MixtureReference& reference) {
     gkt::Mixture mixture = gkt::make_mixture(dimension,
                                              {{mass[0], diameter[0], 1.0 / 3, ""},
                                               {mass[1], diameter[1], 1.0 / 3, ""},
@@ -523,7 +535,8 @@ class TernaryTable {
     mixture.alpha = restitution_matrix(alpha, 3);
     mixture.validate();
     py::gil_scoped_release release;
-    return std::make_shared<const gkt::TernaryTransportTable>(mixture, order, nodes, tolerance, max_nodes);
+    return std::make_shared<const gkt::TernaryTransportTable>(mixture, order, nodes, tolerance, max_nodes,
+                                                              max_packing_fraction, packing_nodes, reference);
   }
 };
 
@@ -600,18 +613,22 @@ PYBIND11_MODULE(gkt, m) {
                           "The Navier-Stokes set of a granular binary, solved once on Chebyshev nodes of x_1 (and "
                           "phi) and interpolated per cell (docs/theory.md section 17.8, dense 18.10).")
       .def(py::init<const std::array<double, 2>&, const std::array<double, 2>&, const py::object&, int, int, int,
-                    double, int, double, const std::array<double, 2>&>(),
+                    double, int, double, const std::array<double, 2>&, const std::string&, int>(),
            py::arg("mass"), py::arg("diameter"), py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
            py::arg("order") = 1, py::arg("nodes") = 24, py::arg("max_packing_fraction") = 0.0,
            py::arg("packing_nodes") = 12, py::arg("tolerance") = 1e-3,
-           py::arg("fraction_range") = std::array<double, 2>{0.0, 1.0},
+           py::arg("fraction_range") = std::array<double, 2>{0.0, 1.0}, py::arg("reference") = "maxwellian",
+           py::arg("hcs_order") = 2,
            "Solves the binary (masses and diameters of species 1, 2; alpha a number or a symmetric 2 x 2 "
            "matrix) at Sonine order `order` on `nodes` points of x_1 in [0, 1] and, if max_packing_fraction > 0, "
            "`packing_nodes` points of phi in [0, max_packing_fraction]; refines the nodes and splits x_1 into "
            "intervals until the interpolation error is at most `tolerance` at every point checked, or raises "
            "ValueError naming the error reached and the x_1 interval. fraction_range = (x_low, x_high) limits the "
            "table to those compositions (e.g. below a pole of the truncated solution); evaluate then raises "
-           "ValueError outside it. The GIL is released while solving.")
+           "ValueError outside it. reference: the f0 every node is solved about, \"maxwellian\" (GDH's) or "
+           "\"linear\" / \"nonlinear\", the HCS of that scheme with its cumulants a_2 ... a_K in f0, K = hcs_order in "
+           "[2, 6] (docs/theory.md section 17.14; each node then costs ~20 times more). The GIL is released while "
+           "solving.")
       .def_property_readonly("interpolation_error", &BinaryTable::interpolation_error,
                              "Returns the largest interpolation error of the reduced coefficients measured at build "
                              "time, between the nodes and at independent validation points (relative to "
@@ -629,19 +646,23 @@ PYBIND11_MODULE(gkt, m) {
            "the GIL released.");
 
   py::class_<TernaryTable>(m, "TernaryTransportTable",
-                           "The Navier-Stokes set of a dilute granular ternary, solved once on Chebyshev-Lobatto "
-                           "nodes of the Duffy square of the composition triangle (x_1 = u, x_2 = (1 - u) v) and "
-                           "interpolated per cell (docs/theory.md section 17.8, \"Ternary tables\").")
+                           "The Navier-Stokes set of a granular ternary, solved once on Chebyshev-Lobatto nodes of "
+                           "the Duffy square of the composition triangle (x_1 = u, x_2 = (1 - u) v) (and phi) and "
+                           "interpolated per cell (docs/theory.md section 17.8, \"Ternary tables\"; dense 18.10).")
       .def(py::init<const std::array<double, 3>&, const std::array<double, 3>&, const py::object&, int, int, int,
-                    double, int>(),
+                    double, int, double, int, const std::string&, int>(),
            py::arg("mass"), py::arg("diameter"), py::arg("alpha"), py::kw_only(), py::arg("dimension") = 3,
            py::arg("order") = 1, py::arg("nodes") = 9, py::arg("tolerance") = 1e-3, py::arg("max_nodes") = 33,
-           "Solves the dilute ternary (masses and diameters of species 1, 2, 3; alpha a number or a symmetric "
-           "3 x 3 matrix) at Sonine order `order` on nodes x nodes points of the Duffy square; refines both axes "
-           "(K -> 2K - 1, up to max_nodes) and splits the square into rectangles until the interpolation error "
-           "is at most `tolerance` at every point checked, or raises ValueError naming the error reached, the "
-           "point (x_1, x_2) and the region of x_1 and x_2/(1 - x_1) (e.g. around a pole of the truncated "
-           "solution). The GIL is released while solving.")
+           py::arg("max_packing_fraction") = 0.0, py::arg("packing_nodes") = 5, py::arg("reference") = "maxwellian",
+           py::arg("hcs_order") = 2,
+           "Solves the ternary (masses and diameters of species 1, 2, 3; alpha a number or a symmetric "
+           "3 x 3 matrix) at Sonine order `order` on nodes x nodes points of the Duffy square and, if "
+           "max_packing_fraction > 0, `packing_nodes` points of phi in [0, max_packing_fraction]; refines every "
+           "axis (K -> 2K - 1, up to max_nodes) and splits the square into rectangles until the interpolation "
+           "error is at most `tolerance` at every point checked, or raises ValueError naming the error reached, "
+           "the point (x_1, x_2) and the region of x_1 and x_2/(1 - x_1) (and phi) (e.g. around a pole of the "
+           "truncated solution). reference and hcs_order as for BinaryTransportTable. The GIL is released while "
+           "solving.")
       .def_property_readonly("interpolation_error", &TernaryTable::interpolation_error,
                              "Returns the largest interpolation error of the reduced coefficients measured at build "
                              "time, at the midpoints and at independent validation points (relative to "
@@ -649,14 +670,15 @@ PYBIND11_MODULE(gkt, m) {
       .def_property_readonly("validation_error", &TernaryTable::validation_error,
                              "Returns the interpolation error at the independent validation points alone.")
       .def_property_readonly("build_cost", &TernaryTable::build_cost,
-                             "Returns {pieces, nodes_per_axis, solves, seconds}: the rectangles of the Duffy square, "
-                             "the largest nodes per axis of a piece, the mixture solves and the wall-clock seconds "
-                             "of the build.")
+                             "Returns {pieces, nodes_per_axis, packing_nodes, solves, seconds}: the rectangles of the "
+                             "Duffy square, the largest nodes per axis and in phi of a piece (1 in phi when dilute), "
+                             "the mixture solves and the wall-clock seconds of the build.")
       .def("evaluate", &TernaryTable::evaluate, py::arg("fraction_1"), py::arg("fraction_2"), py::arg("number_density"),
            py::arg("temperature"),
            "Returns {cooling_rate, temperature_ratio_i, shear_viscosity, thermal_conductivity, "
-           "mutual_diffusion_i_j, thermal_diffusion_i, pressure_diffusion_i, dufour_i, pressure} (i, j = 1, 2, 3) "
-           "at every (x_1, x_2, n, T), broadcast as NumPy does, in the caller's units (mass, length, T in "
-           "energy); x_1, x_2 >= 0 with x_1 + x_2 <= 1 (x_3 = 1 - x_1 - x_2). Per cell: gkt::evaluate "
+           "mutual_diffusion_i_j, thermal_diffusion_i, pressure_diffusion_i, dufour_i, pressure, bulk_viscosity, "
+           "cooling_rate_first_order} (i, j = 1, 2, 3) at every (x_1, x_2, n, T), broadcast as NumPy does, in the "
+           "caller's units (mass, length, T in energy); x_1, x_2 >= 0 with x_1 + x_2 <= 1 (x_3 = 1 - x_1 - x_2); "
+           "nan beyond the table's phi_max. Per cell: gkt::evaluate "
            "(gkt/cell.hpp), the GIL released.");
 }

@@ -14,6 +14,7 @@
 
 #include "gkt/transport/common/chebyshev_axis.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
 
 namespace gkt {
 
@@ -53,10 +54,13 @@ class BinaryTransportTable {
   /// bisections did not halve): the one-line message names the error reached, where, and the x_1
   /// interval (e.g. around a pole of the order-N solution). `fraction_range` [x_low, x_high] ⊆ [0, 1]
   /// (x_low < x_high) limits the table to those compositions (a table below a pole; evaluate then
-  /// refuses x_1 outside it); bad ranges are refused naming fraction_range.
+  /// refuses x_1 outside it); bad ranges are refused naming fraction_range. `reference` is the f^(0) every
+  /// node is solved about (theory.md §17.11; §17.14 "Tables about the cumulant HCS"): the Maxwellian (the
+  /// default, GDH's) or the HCS of reference.scheme with a_2 … a_K, K = reference.hcs_order; the tolerance
+  /// is enforced the same way, against direct solves about that reference.
   BinaryTransportTable(const Mixture& mixture, int order, int nodes = 24, double max_packing_fraction = 0,
                        int packing_nodes = 12, double tolerance = 1e-3,
-                       std::array<double, 2> fraction_range = {0.0, 1.0});
+                       std::array<double, 2> fraction_range = {0.0, 1.0}, MixtureReference reference = {});
 
   /// Returns the coefficients at x_1 ∈ fraction_range ([0, 1] by default), density n > 0 and temperature T > 0 (no
   /// allocation); every value is nan if φ = n v_d Σ x_i σ_i^d exceeds the table's φ_max (0 for a dilute table, which
@@ -85,6 +89,8 @@ class BinaryTransportTable {
   [[nodiscard]] int build_solves() const { return build_solves_; }
   /// Returns the wall-clock time of the build in seconds.
   [[nodiscard]] double build_seconds() const { return build_seconds_; }
+  /// Returns the f^(0) the nodes were solved about (the constructor's reference).
+  [[nodiscard]] const MixtureReference& reference() const { return reference_; }
 
  private:
   // ζ*, γ_1, γ_2, η*, λ*, D_ij* (4), D^T_i* (2), D^p_i* (2), D''_j* (2), p*, κ*, ζ_U
@@ -108,8 +114,9 @@ class BinaryTransportTable {
   double reduced_bound_ = 0;  // bounds every interpolated |reduced value| (evaluate's overflow check)
   int build_solves_ = 0;
   double build_seconds_ = 0;
+  MixtureReference reference_;
 
-  static Reduced solve(const Mixture& mixture, int order);
+  static Reduced solve(const Mixture& mixture, int order, const MixtureReference& reference);
 };
 
 }  // namespace gkt

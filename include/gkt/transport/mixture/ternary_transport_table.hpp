@@ -15,6 +15,7 @@
 
 #include "gkt/transport/common/chebyshev_axis.hpp"
 #include "gkt/transport/mixture/mixture.hpp"
+#include "gkt/transport/mixture/mixture_cooling_state.hpp"
 
 namespace gkt {
 
@@ -53,8 +54,9 @@ class TernaryTransportTable {
   /// (0, 1], max_packing_fraction outside [0, φ limit)) and when splitting no longer helps (a piece narrower than 2^-8
   /// or whose error four successive splits did not halve): the one-line message names the error reached, the point
   /// (x_1, x_2) and the region of x_1 and x_2/(1 − x_1) (and φ, dense) (e.g. around a pole of the order-N solution).
+  /// `reference` is the f^(0) every node is solved about, as BinaryTransportTable's (theory.md §17.14).
   TernaryTransportTable(const Mixture& mixture, int order, int nodes = 9, double tolerance = 1e-3, int max_nodes = 33,
-                        double max_packing_fraction = 0, int packing_nodes = 5);
+                        double max_packing_fraction = 0, int packing_nodes = 5, MixtureReference reference = {});
 
   /// Returns the coefficients at x_1, x_2 ≥ 0 with x_1 + x_2 ≤ 1 (x_3 = 1 − x_1 − x_2), density
   /// n > 0 and temperature T > 0 (no allocation); every value is nan if φ = n v_d Σ x_i σ_i^d exceeds
@@ -89,6 +91,8 @@ class TernaryTransportTable {
   [[nodiscard]] int build_solves() const { return build_solves_; }
   /// Returns the wall-clock time of the build in seconds.
   [[nodiscard]] double build_seconds() const { return build_seconds_; }
+  /// Returns the f^(0) the nodes were solved about (the constructor's reference).
+  [[nodiscard]] const MixtureReference& reference() const { return reference_; }
 
  private:
   // ζ*, γ_i (3), η*, λ*, D_ij* (9), D^T_i* (3), D^p_i* (3), D''_j* (3), p*, κ/η0, ζ_U
@@ -118,10 +122,11 @@ class TernaryTransportTable {
   double reduced_bound_ = 0;  // bounds every interpolated |reduced value| (evaluate's overflow check)
   int build_solves_ = 0;
   double build_seconds_ = 0;
+  MixtureReference reference_;
 
   /// Returns the interpolated reduced set at (x_1, x_2, φ), refusing fractions off the triangle.
   [[nodiscard]] Reduced reduced(double fraction_1, double fraction_2, double phi) const;
-  static Reduced solve(const Mixture& mixture, int order);
+  static Reduced solve(const Mixture& mixture, int order, const MixtureReference& reference);
 };
 
 }  // namespace gkt
