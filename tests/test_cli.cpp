@@ -19,6 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sanitizer.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -1160,9 +1162,7 @@ TEST(CliRoughWalton, ConstantBetaLimitAndBadInput) {
 // Maxwellian Walton θ, the error from orders 3 and 4. μ_f = 10⁶ (every impact but the most grazing sticks) equals
 // the constant-β model's order 2 with its error (2D: the cheaper tables, ~3 s of CPU).
 TEST(CliRoughWalton, SecondSonineOrderIsTheConstantBetaOneAtLargeFriction) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the order-4 Walton tables take minutes under the sanitizer";
-#endif
+  GKT_SKIP_UNDER_SANITIZER("10 s");  // the order-4 Walton tables take minutes there
   const std::string common =
       " --set dimension=2 --set moment_of_inertia=0.5 --set alpha=0.9 --set order=2 "
       "--set 'coefficients=[\"shear_viscosity\", \"bulk_viscosity\"]'";

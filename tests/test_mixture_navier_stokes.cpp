@@ -20,6 +20,7 @@
 #include "gkt/transport/mixture/tracer_diffusion.hpp"
 #include "gkt/transport/monodisperse/navier_stokes.hpp"
 #include "mixture_test_helpers.hpp"
+#include "sanitizer.hpp"
 
 using gkt::Rational;
 using gkt::test::growing_modes;
@@ -306,6 +307,7 @@ TEST(MixtureNavierStokes, WideBasisAgreesWithTheStandardWhereBothConverge) {
 // orders 8–12: D_12* = −0.98673, −0.99020, −0.99175, −0.99233, −0.99232), and a second width
 // (1.5, 2) gives the same values at order 10 within 0.6 % (D_12*; the others within 6e-4).
 TEST(MixtureNavierStokes, WideBasisConvergesWhereTheStandardDiverges) {
+  GKT_SKIP_UNDER_SANITIZER("1.2 s");
   const gkt::Mixture m = binary(3, 1000, 10, 0.5, 0.5);
   const gkt::MixtureNavierStokes ns(m, 10, {.basis_width = {2.0, 2.0}});
   std::vector<gkt::MixtureTransportValues> v;
@@ -331,6 +333,7 @@ TEST(MixtureNavierStokes, WideBasisConvergesWhereTheStandardDiverges) {
 // settles it: D_11* = 6424.1, 6416.4, 6418.7, 6418.3 at orders 7–10 (steps ≤ 1.2e-3, then 3.6e-4 and
 // 6e-5 relative), within 1e-3 of the standard order-10 value.
 TEST(MixtureNavierStokes, NarrowHeavyBasisSettlesTheSlowHeavySpecies) {
+  GKT_SKIP_UNDER_SANITIZER("1.2 s");
   const gkt::Mixture m = binary(3, 100, 0.1, 0.5, 0.9);
   const gkt::MixtureNavierStokes narrow(m, 10, {.basis_width = {1.0, 0.7}});
   const auto v8 = narrow.coefficients(8), v9 = narrow.coefficients(9), v10 = narrow.coefficients(10);

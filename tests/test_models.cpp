@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "gkt/evolution/aggregation_evolution.hpp"
@@ -563,46 +565,67 @@ TEST(ModelFacade, SmoothInelasticToleranceReadsATurnThroughTheNextOrder) {
   const auto at5 = model->evaluate(p, {"a2"}, {5, std::nullopt}).front();
   EXPECT_FALSE(at5.converged);
   EXPECT_LE(std::fabs(at5.value.to_double() + 0.0262441287448), at5.error.to_double());
+  EXPECT_EQ(at5.divergence, gkt::Divergence::turn_growing);  // the reason the CLI's warning gives
 }
 
 namespace {
-/// A model of two coefficients with scripted values per order, for the row logic of a tolerance scan:
-/// "steady" meets the tolerance at order 3 and stays within it; "breaks" meets it at order 1 and breaks
-/// down at order 3 (error 1e-2, as the 2D α = 0.2 tensor mode of the tail scheme, theory.md §10.6).
+/// A model of scripted coefficients, for the row logic of a tolerance scan: coefficient c at order n has the
+/// value n and the error error(c, n), and takes orders 1 … highest(c) (refused beyond, as the rough HCS
+/// columns are beside η*); its tolerance scan stops at the first order whose error is below the tolerance,
+/// else at its highest order.
 class ScriptedModel final : public gkt::TransportModel {
  public:
+  using Error = std::function<Rational(const std::string&, int)>;
+  using Highest = std::function<int(const std::string&)>;
+  ScriptedModel(std::vector<std::string> names, Error error, Highest highest)
+      : names_(std::move(names)), error_(std::move(error)), highest_(std::move(highest)) {}
   [[nodiscard]] std::string name() const override { return "scripted"; }
   [[nodiscard]] std::string description() const override { return "test"; }
-  [[nodiscard]] std::vector<std::string> coefficient_names() const override { return {"steady", "breaks"}; }
+  [[nodiscard]] std::vector<std::string> coefficient_names() const override { return names_; }
   [[nodiscard]] std::vector<gkt::ParameterSpec> parameters() const override { return {}; }
   [[nodiscard]] int max_order() const override { return 4; }
   std::vector<gkt::CoefficientValue> evaluate(const ParameterPoint&, const std::vector<std::string>& names,
                                               const gkt::OrderRequest& order) override {
     std::vector<gkt::CoefficientValue> out;
     for (const auto& c : names) {
-      const bool steady = c == "steady";
-      auto at = [&](int n) {
-        const Rational error = steady ? Rational(1, 1000 * n * n) : n == 3 ? Rational(1, 100) : Rational(1, 10000);
-        return gkt::CoefficientValue{Rational(n), error, n, true, true, true};
-      };
+      const int highest = highest_(c);
+      auto at = [&](int n) { return gkt::CoefficientValue{Rational(n), error_(c, n), n, true, true, true}; };
       if (!order.tolerance) {
+        if (order.order > highest)
+          throw std::invalid_argument("order: " + c + " takes orders 1 to " + std::to_string(highest));
         out.push_back(at(order.order));
         continue;
       }
       int n = 1;
-      while (n < 4 && !(at(n).error < *order.tolerance)) ++n;
+      while (n < highest && !(at(n).error < *order.tolerance)) ++n;
       out.push_back(at(n));
     }
     return out;
   }
+
+ private:
+  std::vector<std::string> names_;
+  Error error_;
+  Highest highest_;
 };
+
+/// "steady" meets the tolerance at order 3 and stays within it; "breaks" meets it at order 1 and breaks down
+/// at order 3 (error 1e-2, as the 2D α = 0.2 tensor mode of the tail scheme, theory.md §10.6); orders 1 … 4.
+ScriptedModel steady_and_breaking_model() {
+  return ScriptedModel(
+      {"steady", "breaks"},
+      [](const std::string& c, int n) {
+        return c == "steady" ? Rational(1, 1000 * n * n) : n == 3 ? Rational(1, 100) : Rational(1, 10000);
+      },
+      [](const std::string&) { return 4; });
+}
 }  // namespace
 
 // The row of a tolerance scan (gkt/models/tolerance_row.hpp): a coefficient whose error at the row's order
 // misses the tolerance its own scan met is reported at its own stop, with that order; one that no order
 // brings below the tolerance is flagged. Never an error above the tolerance flagged converged.
 TEST(ModelFacade, ToleranceRowReportsEachColumnHonestly) {
-  ScriptedModel model;
+  ScriptedModel model = steady_and_breaking_model();
   const Rational tolerance(1, 5000);  // steady: 1e-3, 2.5e-4, 1.1e-4 → order 3; breaks: 1e-4 → order 1
   const gkt::ToleranceRow row = gkt::evaluate_tolerance_row(model, {}, {"steady", "breaks"}, tolerance);
   EXPECT_EQ(row.order, 3);
@@ -619,43 +642,14 @@ TEST(ModelFacade, ToleranceRowReportsEachColumnHonestly) {
   EXPECT_FALSE(tight.values[0].converged);  // steady's best, 1/16000, misses 1/20000 too
 }
 
-namespace {
-/// Two scripted coefficients of which "short" takes orders 1 … 2 only (refused beyond, as the rough HCS
-/// columns are beside η*): "long" meets the tolerance at order 4, "short" at order 2.
-class ShortRangeModel final : public gkt::TransportModel {
- public:
-  [[nodiscard]] std::string name() const override { return "short-range"; }
-  [[nodiscard]] std::string description() const override { return "test"; }
-  [[nodiscard]] std::vector<std::string> coefficient_names() const override { return {"long", "short"}; }
-  [[nodiscard]] std::vector<gkt::ParameterSpec> parameters() const override { return {}; }
-  [[nodiscard]] int max_order() const override { return 4; }
-  std::vector<gkt::CoefficientValue> evaluate(const ParameterPoint&, const std::vector<std::string>& names,
-                                              const gkt::OrderRequest& order) override {
-    std::vector<gkt::CoefficientValue> out;
-    for (const auto& c : names) {
-      const int highest = c == "short" ? 2 : 4;
-      auto at = [&](int n) {
-        return gkt::CoefficientValue{Rational(n), Rational(1, 10 * n * n * n), n, true, true, true};
-      };
-      if (!order.tolerance) {
-        if (order.order > highest) throw std::invalid_argument("order: " + c + " takes orders 1 to 2");
-        out.push_back(at(order.order));
-        continue;
-      }
-      int n = 1;
-      while (n < highest && !(at(n).error < *order.tolerance)) ++n;
-      out.push_back(at(n));
-    }
-    return out;
-  }
-};
-}  // namespace
-
 // A row whose order lies beyond one coefficient's range (the rough HCS columns stop at order 3, η* goes
 // on): that coefficient is reported at its own stop, the others at the row's order — not an error (before,
 // `gkt table` with cooling_rate and shear_viscosity of model rough at a tolerance failed on the second pass).
 TEST(ModelFacade, ToleranceRowKeepsACoefficientWhoseRangeEndsBelowTheRowOrder) {
-  ShortRangeModel model;
+  // "short" takes orders 1 … 2 only (as the rough HCS columns beside η*), "long" 1 … 4; error 1/(10 n³).
+  ScriptedModel model(
+      {"long", "short"}, [](const std::string&, int n) { return Rational(1, 10 * n * n * n); },
+      [](const std::string& c) { return c == "short" ? 2 : 4; });
   const Rational tolerance(1, 500);  // long: 1e-1, 1.25e-2, 3.7e-3, 1.6e-3 → 4; short: → 2 (1.25e-2, not met)
   const gkt::ToleranceRow row = gkt::evaluate_tolerance_row(model, {}, {"long", "short"}, tolerance);
   EXPECT_EQ(row.order, 4);

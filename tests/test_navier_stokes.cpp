@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include "gkt/transport/common/sonine_solution.hpp"
 #include "gkt/transport/monodisperse/hard_spheres.hpp"
@@ -282,4 +283,41 @@ TEST(SonineTruncation, TurningPointIsNotReadAsAnAlternation) {
   EXPECT_FALSE(gkt::estimate_truncation_confirmed(r(eta[0]), r(eta[1]), r(eta[2]), std::nullopt).converging);
   EXPECT_TRUE(gkt::changes_sign(r(eta[0]), r(eta[1]), r(eta[2])));
   EXPECT_FALSE(gkt::changes_sign(r(monotone(0)), r(monotone(1)), r(monotone(2))));
+}
+
+// Why an estimate is flagged not converging (gkt::Divergence, said by the CLI's warning): the changes of the
+// rough η* at 3D (α, β) = (0.9, 0.5), orders 7–9 (−3.16e-7, −4.70e-7: |r| = 1.49, (6.1) flags it with an error
+// 7.86e-7 below a tolerance of 1e-6), a turn whose tail grows, a turn without v_{N+3}; none where it
+// converges. estimate_truncation_checked reads v_{N+3} only at a sign change.
+TEST(SonineTruncation, NotConvergingSaysWhy) {
+  auto r = [](double x) { return Rational::from_double(x); };
+  const double v7 = 1.1114193904636045, v8 = 1.11141907457222;
+  const auto growing = gkt::estimate_truncation(r(v7), r(v8), r(v8 - 4.70e-7));
+  EXPECT_FALSE(growing.converging);
+  EXPECT_EQ(growing.divergence, gkt::Divergence::growing);
+  EXPECT_NEAR(growing.error.to_double(), 7.86e-7, 1e-9);
+  const std::string why = gkt::describe_divergence(growing.divergence, 7);
+  EXPECT_NE(why.find("not confirmed"), std::string::npos) << why;
+  EXPECT_NE(why.find("orders 7–9"), std::string::npos) << why;
+  const std::array<double, 4> eta{0, -5.0e-9, -0.4e-9, 7.3e-9};  // the turn of the test above
+  EXPECT_EQ(gkt::estimate_truncation_confirmed(r(eta[0]), r(eta[1]), r(eta[2]), r(eta[3])).divergence,
+            gkt::Divergence::turn_growing);
+  const auto unconfirmed = gkt::estimate_truncation_confirmed(r(eta[0]), r(eta[1]), r(eta[2]), std::nullopt);
+  EXPECT_EQ(unconfirmed.divergence, gkt::Divergence::turn_unconfirmed);
+  EXPECT_NE(gkt::describe_divergence(unconfirmed.divergence, 12).find("no order 15"), std::string::npos);
+  EXPECT_NE(gkt::describe_divergence(gkt::Divergence::turn_growing, 12).find("turn at order 13"), std::string::npos);
+  const auto fine = gkt::estimate_truncation(r(1.0), r(1.5), r(1.75));
+  EXPECT_TRUE(fine.converging);
+  EXPECT_EQ(fine.divergence, gkt::Divergence::none);
+  EXPECT_TRUE(gkt::describe_divergence(fine.divergence, 3).empty());
+  int asked = 0;
+  const auto next = [&] {
+    ++asked;
+    return std::optional<Rational>(r(eta[3]));
+  };
+  EXPECT_EQ(gkt::estimate_truncation_checked(r(1.0), r(1.5), r(1.75), next).error, fine.error);
+  EXPECT_EQ(asked, 0);  // monotone: v_{N+3} not computed
+  EXPECT_EQ(gkt::estimate_truncation_checked(r(eta[0]), r(eta[1]), r(eta[2]), next).divergence,
+            gkt::Divergence::turn_growing);
+  EXPECT_EQ(asked, 1);
 }

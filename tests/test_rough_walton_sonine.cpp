@@ -19,6 +19,7 @@
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "gkt/transport/rough/rough_walton_sonine.hpp"
 #include "rough_monte_carlo.hpp"
+#include "sanitizer.hpp"
 #include "transport/rough/rough_walton_elements.hpp"
 
 namespace {
@@ -28,11 +29,7 @@ using gkt::RoughTransportValues;
 
 double rel(double a, double b) { return std::abs(a - b) / std::max(1.0, std::abs(b)); }
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kTopOrder = 2;  // ASan: the order-3 tables cost ~10x more
-#else
-constexpr int kTopOrder = 3;
-#endif
+constexpr int kTopOrder = gkt_test::kUnderSanitizer ? 2 : 3;  // ASan: the order-3 tables cost ~10x more
 
 // μ_f = ∞ (every impact sticks, η_t = η0): every element equals the engine's exact one at the same τ, and the
 // coefficients equal RoughSonineTransport's at every order (d = 2, 3; β0 = 0.5 and −0.3, several θ).

@@ -15,6 +15,7 @@
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 #include "gkt/transport/mixture/mixture_transport_table.hpp"
 #include "gkt/transport/mixture/ternary_transport_table.hpp"
+#include "sanitizer.hpp"
 
 namespace {
 
@@ -149,6 +150,7 @@ TEST(TernaryTransportTable, RefusesAPole) {
 // (m = 1, 1.2, 1.4, σ = 1, 1.1, 0.95) and a loose tolerance keep the build to 134 dense solves (4 pieces of
 // 3 × 3 × 3 nodes, about 5 s CPU): each dense ternary solve costs ~40 ms.
 TEST(TernaryTransportTable, DenseEqualsDirectSolves) {
+  GKT_SKIP_UNDER_SANITIZER("5 s");
   const double phi_max = 0.2, tolerance = 5e-2, mass[3] = {1.0, 1.2, 1.4}, diameter[3] = {1.0, 1.1, 0.95};
   auto ternary = [&](double x1, double x2) {
     gkt::Mixture m = gkt::make_mixture(

@@ -116,8 +116,13 @@ def sonine_scan(seq, tol, new, summable):
             if s is not None and s[1] < tol:
                 est = s
         return est
+    return choose_order(value_at, tol, SONINE_MAX_ORDER)
+
+
+def choose_order(value_at, tol, cap):
+    """models.hpp's choose_order: value_at(n) = (value, error, converging) or None. Returns (order, value, error, met)."""
     best, best_v, growing = 0, None, 0
-    for n in range(1, SONINE_MAX_ORDER + 1):
+    for n in range(1, cap + 1):
         est = value_at(n)
         if est is None:
             continue

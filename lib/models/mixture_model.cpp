@@ -415,8 +415,11 @@ class MixtureModel final : public TransportModel {
     // Built for the order asked (+2 for the estimate); a tolerance scan rebuilds it larger as it goes.
     std::optional<TracerDiffusion> diffusion;
     return detail::choose_order(order, kMaxOrder, [&](int n) {
-      if (!diffusion || diffusion->max_order() < n + 2)
-        diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(n + 2, diffusion ? 2 * diffusion->max_order() : 6)),
+      // Order n + 3 too for the turning-point check (6.3) of theory.md §6 (the estimate reads it only where the
+      // changes change sign; at the cap, where it is past the operator, the turn is not confirmed).
+      const int needed = std::min(kMaxOrder + 2, n + 3);
+      if (!diffusion || diffusion->max_order() < needed)
+        diffusion.emplace(tracer, std::min(kMaxOrder + 2, std::max(needed, diffusion ? 2 * diffusion->max_order() : 6)),
                           reference);
       detail::OrderValue v;
       v.exact = false;
@@ -508,7 +511,7 @@ class MixtureModel final : public TransportModel {
     }
 
     /// Returns the coefficient `name` at the requested order or tolerance, its error from the next
-    /// two orders (theory.md §6), undefined (nan) if a value is not finite.
+    /// two orders, three where their changes change sign (theory.md (6.3)), undefined (nan) if a value is not finite.
     /// With scheme = "published" the value is GDH's first Sonine (order 1 only), its error estimated
     /// from it and gkt's orders 2 and 3 as (6.1) does from orders 1 … 3.
     CoefficientValue value(const Mixture& m, const std::string& name, const OrderRequest& order) {
@@ -521,7 +524,7 @@ class MixtureModel final : public TransportModel {
           throw std::invalid_argument("order: scheme = \"published\" exists at order = 1 only, got " +
                                       std::to_string(order.order));
         const double c = pick(at(m, 3)), b = pick(at(m, 2)), a = pick(at_published(m));
-        const detail::OrderValue v = detail::estimate_from_doubles(a, b, c);
+        const detail::OrderValue v = detail::estimate_from_doubles_confirmed(a, b, c, [&] { return pick(at(m, 4)); });
         CoefficientValue out{v.estimate.value, v.estimate.error, 1, v.defined && v.estimate.converging, false,
                              v.defined};
         out.infinite = v.infinite;
@@ -530,7 +533,10 @@ class MixtureModel final : public TransportModel {
       return detail::choose_order(order, kMaxOrder, [&](int n) {
         // Highest order first: the operator is then built once to n + 2, not to n and again larger.
         const double c = pick(at(m, n + 2)), b = pick(at(m, n + 1)), a = pick(at(m, n));
-        return detail::estimate_from_doubles(a, b, c);  // L_c* = +∞ of a gas that never clusters (elastic)
+        // L_c* = +∞ of a gas that never clusters (elastic). (6.3): order n + 3 where the changes change sign, within
+        // the operator's cap (else the turn is not confirmed).
+        return detail::estimate_from_doubles_confirmed(
+            a, b, c, [&] { return n + 3 <= kMaxOrder + 2 ? pick(at(m, n + 3)) : std::nan(""); });
       });
     }
   };

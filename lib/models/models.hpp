@@ -162,16 +162,17 @@ inline OrderValue estimate_from_doubles(double v_n, double v_n1, double v_n2) {
 
 /// Returns estimate_from_doubles(v_n, v_n1, v_n2) with the turning-point check of theory.md (6.3): where the
 /// two changes have opposite signs, `next()` gives v_{N+3} (NaN if there is none) and
-/// estimate_truncation_confirmed decides between an alternation and a turn.
+/// estimate_truncation_checked decides between an alternation and a turn. Every model's Sonine scan on doubles
+/// estimates its error here.
 template <class Next>
 OrderValue estimate_from_doubles_confirmed(double v_n, double v_n1, double v_n2, Next&& next) {
   OrderValue v = estimate_from_doubles(v_n, v_n1, v_n2);
   if (!v.defined || v.infinite) return v;
-  const Rational r0 = Rational::from_double(v_n), r1 = Rational::from_double(v_n1), r2 = Rational::from_double(v_n2);
-  if (!changes_sign(r0, r1, r2)) return v;
-  const double v_n3 = next();
-  v.estimate = estimate_truncation_confirmed(
-      r0, r1, r2, std::isfinite(v_n3) ? std::optional<Rational>(Rational::from_double(v_n3)) : std::nullopt);
+  v.estimate = estimate_truncation_checked(
+      Rational::from_double(v_n), Rational::from_double(v_n1), Rational::from_double(v_n2), [&] {
+        const double v_n3 = next();
+        return std::isfinite(v_n3) ? std::optional<Rational>(Rational::from_double(v_n3)) : std::nullopt;
+      });
   return v;
 }
 
@@ -184,6 +185,7 @@ CoefficientValue choose_order(const OrderRequest& request, int max_order, ValueA
   auto to_value = [](const OrderValue& v, int order, bool converged) {
     CoefficientValue c{v.estimate.value, v.estimate.error, order, converged, v.exact, v.defined};
     c.infinite = v.infinite;
+    c.divergence = v.estimate.divergence;
     return c;
   };
   if (!request.tolerance) {

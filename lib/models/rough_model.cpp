@@ -438,22 +438,26 @@ class RoughModel final : public TransportModel {
         out.push_back(*chosen);
         continue;
       }
-      if (!first && is_sonine_column(name)) {  // theory.md §19.16, error (6.1) from orders N + 1, N + 2
+      if (!first && is_sonine_column(name)) {  // theory.md §19.16, error (6.3) from orders N + 1, N + 2 (N + 3)
         // Tables to N + 2 for a fixed order; a tolerance scan starts at 3 and then takes the cap + 2 at once.
         const int tables = order.tolerance ? kMaxRoughOrder + 2 : order.order + 2;
         out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
           const auto at = [&](int m) {
+            if (m > kMaxRoughOrder + 2) return std::numeric_limits<double>::quiet_NaN();  // past the tables' cap
             return pick_transport(transport_values(d, alpha, beta, kappa, m, tables), name);
           };
-          return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
+          return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
         }));
         continue;
       }
       if (!first && is_critical(name)) {  // about the Maxwellian HCS at order N (theory.md §19.15, (19.33))
         const int tables = order.tolerance ? kMaxRoughOrder + 2 : order.order + 2;
         out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
-          const auto at = [&](int m) { return reference_column(d, alpha, beta, kappa, true, name, 1, m, tables); };
-          return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
+          const auto at = [&](int m) {
+            if (m > kMaxRoughOrder + 2) return std::numeric_limits<double>::quiet_NaN();  // past the tables' cap
+            return reference_column(d, alpha, beta, kappa, true, name, 1, m, tables);
+          };
+          return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
         }));
         continue;
       }
@@ -672,14 +676,18 @@ class RoughModel final : public TransportModel {
   }
 
   /// Returns one Navier–Stokes column at Sonine order n about the HCS of cumulant degree K: v_N(K) with the error
-  /// (6.1) from orders n + 1, n + 2 plus the reference step |v_N(K) − v_N(K − 1)| (K = 2 against the Maxwellian
-  /// reference, the HCS of order 0); flagged not converging where the lower reference has no value
-  /// (theory.md §19.16, "Cumulant reference").
+  /// (6.3) from orders n + 1, n + 2 (n + 3 where the changes change sign) plus the reference step |v_N(K) − v_N(K − 1)|
+  /// (K = 2 against the Maxwellian reference, the HCS of order 0); flagged not converging where the lower reference has
+  /// no value (theory.md §19.16, "Cumulant reference").
   OrderValue reference_value(int d, const Rational& alpha, const Rational& beta, const Rational& kappa, bool linear,
                              const std::string& name, int degree, int n, int tables) {
     const auto at = [&](int k, int m) { return reference_column(d, alpha, beta, kappa, linear, name, k, m, tables); };
     const double v = at(degree, n);
-    OrderValue out = estimate_from_doubles(v, at(degree, n + 1), at(degree, n + 2));
+    // (6.3): order N + 3 where the changes change sign, within the cap's tables (else not confirmed).
+    const int highest = (degree == 1 ? kMaxRoughOrder : kMaxRoughReferenceOrder) + 2;
+    OrderValue out = estimate_from_doubles_confirmed(v, at(degree, n + 1), at(degree, n + 2), [&] {
+      return n + 3 <= highest ? at(degree, n + 3) : std::numeric_limits<double>::quiet_NaN();
+    });
     if (!out.defined || out.infinite) return out;
     const double lower = at(degree - 1, n);
     if (!std::isfinite(lower)) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -18,6 +19,7 @@ namespace gkt::detail {
 namespace {
 
 constexpr int kMaxSonineOrder = 6;  // the error estimate asks for N + 1 and N + 2 ≤ 8
+constexpr int kMaxSeriesOrder = 8;  // viscoelastic_transport_series: N + 3 (theory.md (6.3)) exists below the cap
 
 /// A value of the state at one δ': a2, ζ*, η*, κ*, μ* — whose δ'-series coefficients are also
 /// offered as <name>_<j>, j = 1 … J — or an HCS stability value (theory.md (14.1), (14.6)).
@@ -143,7 +145,10 @@ class ViscoelasticModel final : public TransportModel {
           const int all = static_cast<int>(restitution.series().size());
           auto at = [&](int m, int terms) { return at_state(series_at(m), *value, x, terms); };
           const double v_n = at(n, all), shorter = at(n, all - 1);
-          OrderValue v = estimate_from_doubles(v_n, at(n + 1, all), at(n + 2, all));
+          // (6.3): order N + 3 where the changes change sign (NaN past the series' orders: not confirmed).
+          OrderValue v = estimate_from_doubles_confirmed(v_n, at(n + 1, all), at(n + 2, all), [&] {
+            return n + 3 <= kMaxSeriesOrder ? at(n + 3, all) : std::numeric_limits<double>::quiet_NaN();
+          });
           if (v.infinite) {  // δ' = 0, the elastic gas: L_c* = +∞ whatever the series' length
             v.defined = shorter == v_n;
             v.infinite = v.defined;
@@ -169,7 +174,10 @@ class ViscoelasticModel final : public TransportModel {
         auto at = [&](int m) {
           return Rational::from_double(family->series(series_at(m))[static_cast<std::size_t>(j)]);
         };
-        return OrderValue{estimate_truncation(at(n), at(n + 1), at(n + 2)), true, false};
+        return OrderValue{estimate_truncation_checked(
+                              at(n), at(n + 1), at(n + 2),
+                              [&] { return n + 3 <= kMaxSeriesOrder ? std::optional(at(n + 3)) : std::nullopt; }),
+                          true, false};
       }));
     }
     return out;

@@ -92,10 +92,14 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
     ToleranceRow scanned = evaluate_tolerance_row(model, parameters, scene.coefficients, tolerance);
     values = std::move(scanned.values);
     request.order = scanned.order;
-    std::string worst, others;
+    std::string worst, others, why;
     double worst_error = -1;
     for (std::size_t k = 0; k < values.size(); ++k) {
       if (values[k].converged) continue;
+      // Why an estimate is flagged not converging (theory.md (6.1), (6.3)): said per coefficient, since an error
+      // below the tolerance is otherwise a puzzle.
+      if (values[k].defined && values[k].divergence != Divergence::none)
+        why += "; " + scene.coefficients[k] + ": " + describe_divergence(values[k].divergence, values[k].order);
       const double e = values[k].defined ? values[k].error.to_double() : HUGE_VAL;
       if (e > worst_error) {
         if (!worst.empty()) others += (others.empty() ? "" : ", ") + worst;
@@ -113,7 +117,7 @@ RowResult compute_row(TransportModel& model, const Scene& scene, const TableOpti
       result.tolerance_warning = at + "tolerance " + format_error(tolerance.to_double()) +
                                  " not reached: row at order " + std::to_string(scanned.order) +
                                  ", largest estimated error " + format_error(worst_error) + " (" + worst + ")" +
-                                 (others.empty() ? "" : "; also above the tolerance: " + others);
+                                 (others.empty() ? "" : "; also above the tolerance: " + others) + why;
     }
   } else {
     values = model.evaluate(parameters, scene.coefficients, request);

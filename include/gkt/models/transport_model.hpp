@@ -14,6 +14,7 @@
 #include "gkt/models/closed_form.hpp"
 #include "gkt/models/cooling_trajectory.hpp"
 #include "gkt/models/parameter_spec.hpp"
+#include "gkt/transport/common/sonine_solution.hpp"
 
 namespace gkt {
 
@@ -29,6 +30,9 @@ struct CoefficientValue {
   /// true: the value is +∞ at every order used (the critical_length of a gas whose HCS is stable at
   /// every wave number, e.g. the elastic gas: docs/conventions.md); value and error are then 0.
   bool infinite = false;
+  /// Why the error estimate at `order` is flagged not converging (docs/theory.md (6.1), (6.3);
+  /// describe_divergence words it); Divergence::none where it converges or the scan only missed the tolerance.
+  Divergence divergence = Divergence::none;
 };
 
 /// What a model can answer, one per front-end subcommand: a table of coefficients (every model),

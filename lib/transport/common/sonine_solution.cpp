@@ -3,6 +3,7 @@
 #include <array>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include <flint/fmpq_mat.h>
 
@@ -41,14 +42,34 @@ Rational solve_first_component(const DenseMatrix<Rational>& l, int first, int n)
 TruncationEstimate estimate_truncation(const Rational& v_n, const Rational& v_n1, const Rational& v_n2) {
   const Rational first = v_n1 - v_n;
   const Rational second = v_n2 - v_n1;
-  if (first.is_zero()) return {v_n, second.abs(), second.is_zero()};
+  if (first.is_zero())
+    return {v_n, second.abs(), second.is_zero(), second.is_zero() ? Divergence::none : Divergence::growing};
   // Signed ratio: monotone (r > 0) and alternating (r < 0) geometric tails both sum to
   // first/(1 − r).
   const Rational ratio = second / first;
-  if (ratio.abs() >= Rational(1)) return {v_n, first.abs() + second.abs(), false};
+  if (ratio.abs() >= Rational(1)) return {v_n, first.abs() + second.abs(), false, Divergence::growing};
   // The geometric tail underestimates slowly accelerating-ratio sequences by ~2 % (elastic hard
   // spheres, N = 1..25: actual/estimate = 0.98–1.00); the 5/4 margin makes it an upper bound there.
   return {v_n, Rational(5, 4) * first.abs() / (Rational(1) - ratio), true};
+}
+
+std::string describe_divergence(Divergence divergence, int order) {
+  const std::string n = std::to_string(order), n1 = std::to_string(order + 1), n2 = std::to_string(order + 2),
+                    n3 = std::to_string(order + 3);
+  switch (divergence) {
+    case Divergence::growing:  // (6.1) with |r| ≥ 1
+      return "error estimate not confirmed: the changes do not shrink at orders " + n + "–" + n2 + " (|v" + n2 +
+             " − v" + n1 + "| ≥ |v" + n1 + " − v" + n + "|)";
+    case Divergence::turn_growing:  // (6.3) with q ≥ 1
+      return "error estimate not confirmed: the changes turn at order " + n1 + " and do not shrink after it (orders " +
+             n + "–" + n3 + ")";
+    case Divergence::turn_unconfirmed:  // (6.3) without v_{N+3}
+      return "error estimate not confirmed: the changes change sign at order " + n1 + " and no order " + n3 +
+             " exists to tell an alternation from a turn";
+    case Divergence::none:
+      break;
+  }
+  return {};
 }
 
 bool changes_sign(const Rational& v_n, const Rational& v_n1, const Rational& v_n2) {
@@ -62,13 +83,13 @@ TruncationEstimate estimate_truncation_confirmed(const Rational& v_n, const Rati
   const Rational second = v_n2 - v_n1;
   // An alternation read from two changes may be a turning point (theory.md (6.3)): a monotone approach that
   // overshot at N + 1 and now comes back. Only a third change flipping back confirms the alternation.
-  if (!v_n3) return {v_n, first + second.abs(), false};
+  if (!v_n3) return {v_n, first + second.abs(), false, Divergence::turn_unconfirmed};
   const Rational third = *v_n3 - v_n2;
   if (third.sign() * second.sign() < 0) return estimate_truncation(v_n, v_n1, v_n2);
   // Turned at N + 1: the remainder is Δ1 plus the monotone tail Δ2/(1 − q) after the turn; they have opposite
   // signs, so their magnitudes' sum bounds it (5/4 as in (6.1)).
   const Rational q = third / second;
-  if (q >= Rational(1)) return {v_n, first + second.abs() + third.abs(), false};
+  if (q >= Rational(1)) return {v_n, first + second.abs() + third.abs(), false, Divergence::turn_growing};
   return {v_n, Rational(5, 4) * (first + second.abs() / (Rational(1) - q)), true};
 }
 

@@ -111,8 +111,13 @@ double TracerDiffusion::coefficient(int order) const {
 }
 
 TruncationEstimate TracerDiffusion::estimate(int order) const {
-  return estimate_truncation(Rational::from_double(coefficient(order)), Rational::from_double(coefficient(order + 1)),
-                             Rational::from_double(coefficient(order + 2)));
+  // Rule (6.3) of docs/theory.md §6: order + 3 where the changes change sign, if the operator has it.
+  return estimate_truncation_checked(Rational::from_double(coefficient(order)),
+                                     Rational::from_double(coefficient(order + 1)),
+                                     Rational::from_double(coefficient(order + 2)), [&]() -> std::optional<Rational> {
+                                       if (order + 3 > max_order_) return std::nullopt;
+                                       return Rational::from_double(coefficient(order + 3));
+                                     });
 }
 
 }  // namespace gkt

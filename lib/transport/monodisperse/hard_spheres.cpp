@@ -35,7 +35,7 @@ void HardSphereSonineSystem::ensure_built(std::size_t c, int n_max) {
 }
 
 Rational HardSphereSonineSystem::reduced_coefficient(HardSphereCoefficient c, int order) {
-  if (order < 1 || order > kHardSphereMaxOrder + 2)
+  if (order < 1 || order > kHardSphereMaxOrder + 3)
     throw std::invalid_argument("order: must be in [1, " + std::to_string(kHardSphereMaxOrder) + "], got " +
                                 std::to_string(order));
   const auto k = static_cast<std::size_t>(c);
@@ -61,8 +61,10 @@ TruncationEstimate HardSphereSonineSystem::estimate(HardSphereCoefficient c, int
   if (cache.size() <= slot) cache.resize(slot + 1);
   if (!cache[slot]) {
     ensure_built(k, kSetups[k].first + order + 2);
-    cache[slot] = estimate_truncation(reduced_coefficient(c, order), reduced_coefficient(c, order + 1),
-                                      reduced_coefficient(c, order + 2));
+    // Rule (6.3) of docs/theory.md §6, shared by every Sonine scan: order + 3 only where the changes change sign.
+    cache[slot] = estimate_truncation_checked(
+        reduced_coefficient(c, order), reduced_coefficient(c, order + 1), reduced_coefficient(c, order + 2),
+        [&] { return std::optional<Rational>(reduced_coefficient(c, order + 3)); });
   }
   return *cache[slot];
 }

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "gkt/algebra/dense_matrix.hpp"
@@ -17,12 +18,26 @@ namespace gkt {
 /// starting at (first, first) and e_0 the first unit vector (exact; throws if singular).
 Rational solve_first_component(const DenseMatrix<Rational>& l, int first, int n);
 
+/// Why a truncation estimate is flagged not converging (docs/theory.md (6.1), (6.3)).
+enum class Divergence {
+  none,              ///< converging (or the estimate did not look past its three values)
+  growing,           ///< (6.1): |Δ2| ≥ |Δ1|, the changes do not shrink
+  turn_growing,      ///< (6.3): Δ1, Δ2 change sign and Δ3 follows Δ2 without shrinking (q ≥ 1)
+  turn_unconfirmed,  ///< (6.3): Δ1, Δ2 change sign and no v_{N+3} exists to confirm an alternation
+};
+
 /// A Sonine-order sequence value with its estimated truncation error.
 struct TruncationEstimate {
-  Rational value;   ///< the value at the requested order N
-  Rational error;   ///< estimated |value − converged value|
-  bool converging;  ///< false if the next two corrections do not shrink
+  Rational value;                            ///< the value at the requested order N
+  Rational error;                            ///< estimated |value − converged value|
+  bool converging;                           ///< false if the next two corrections do not shrink
+  Divergence divergence = Divergence::none;  ///< why `converging` is false
 };
+
+/// Returns the reason a value at Sonine order `order` is flagged not converging, in words naming the orders
+/// whose changes showed it (e.g. "error estimate not confirmed: changes do not shrink at orders 7–9"); empty for
+/// Divergence::none.
+std::string describe_divergence(Divergence divergence, int order);
 
 /// Returns v_N with error (5/4)|Δ1|/(1 − r), Δ1 = v_{N+1} − v_N, r = Δ2/Δ1 (signed),
 /// Δ2 = v_{N+2} − v_{N+1}: the geometric tail, monotone or alternating, with a 25 % margin
@@ -41,6 +56,16 @@ bool changes_sign(const Rational& v_n, const Rational& v_n1, const Rational& v_n
 /// alternation is |Δ1| + |Δ2|, `converging` false. v_n3 is read only where Δ1, Δ2 change sign.
 TruncationEstimate estimate_truncation_confirmed(const Rational& v_n, const Rational& v_n1, const Rational& v_n2,
                                                  const std::optional<Rational>& v_n3);
+
+/// Returns estimate_truncation_confirmed(v_n, v_n1, v_n2, next()) where Δ1, Δ2 change sign and
+/// estimate_truncation(v_n, v_n1, v_n2) elsewhere: rule (6.3) of docs/theory.md §6, every Sonine scan's one
+/// error rule; `next()` (a std::optional<Rational>, empty where order N + 3 does not exist) is called only there.
+template <class Next>
+TruncationEstimate estimate_truncation_checked(const Rational& v_n, const Rational& v_n1, const Rational& v_n2,
+                                               Next&& next) {
+  if (!changes_sign(v_n, v_n1, v_n2)) return estimate_truncation(v_n, v_n1, v_n2);
+  return estimate_truncation_confirmed(v_n, v_n1, v_n2, next());
+}
 
 /// Returns true if v_N, v_{N+1}, v_{N+2} alternate as on the plateau of an asymptotic series: the
 /// signed ratio (v_{N+2} − v_{N+1})/(v_{N+1} − v_N) lies in [−2, −1/2] (docs/theory.md §6).

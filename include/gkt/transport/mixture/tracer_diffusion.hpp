@@ -34,7 +34,8 @@ class TracerDiffusion {
   /// Returns D0* = D0/D_ref at order N ≤ max_order, D_ref = (dΓ(d/2)/(4π^{(d−1)/2}))√(T/m)/(nσ^{d−1})
   /// the host's first-approximation self-diffusion coefficient (flux of tracer number −D0 ∇n0).
   [[nodiscard]] double coefficient(int order) const;
-  /// Returns D0* at `order` with its truncation error from orders +1, +2 (order ≤ max_order − 2).
+  /// Returns D0* at `order` with its truncation error (6.3) of docs/theory.md §6 from orders +1, +2 and, where
+  /// their changes change sign, +3 (not confirmed, flagged, if order + 3 > max_order; order ≤ max_order − 2).
   [[nodiscard]] TruncationEstimate estimate(int order) const;
   /// Returns γ0 = T0/T of the tracer in the host's HCS (ζ0 = ζ_host; (16.4) with x0 = 0 when Maxwellian).
   [[nodiscard]] double temperature_ratio() const { return gamma_; }

@@ -15,7 +15,8 @@ namespace gkt {
 /// The transport coefficients of the elastic hard-sphere gas.
 enum class HardSphereCoefficient { shear_viscosity = 0, thermal_conductivity = 1, self_diffusion = 2 };
 
-/// Highest Sonine order the hard-sphere solver accepts (the error estimate uses two more).
+/// Highest Sonine order the hard-sphere solver accepts (the error estimate uses two more, three where the
+/// changes change sign: docs/theory.md (6.3)).
 inline constexpr int kHardSphereMaxOrder = 40;
 
 /// Sonine matrices of the elastic hard-sphere operator for one dimension, built once to the
@@ -29,7 +30,8 @@ class HardSphereSonineSystem {
   /// order `order` (number of Sonine polynomials, 1 = first approximation), exact.
   Rational reduced_coefficient(HardSphereCoefficient c, int order);
 
-  /// Returns the value at `order` with its estimated truncation error (uses orders +1, +2).
+  /// Returns the value at `order` with its estimated truncation error (6.3) of docs/theory.md §6 (uses orders
+  /// +1, +2, and +3 where the changes change sign).
   TruncationEstimate estimate(HardSphereCoefficient c, int order);
 
   /// Returns the spatial dimension d.
