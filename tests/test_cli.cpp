@@ -696,13 +696,14 @@ TEST(CliRough, CumulantReferenceKeys) {
   }
 }
 
-// Order N > 1 of the rough Navier-Stokes columns (theory.md §19.16): the order-2 error column is (6.1) from the
-// order-2, 3, 4 values printed by the CLI itself; order 1 stays the first approximation with a nan error.
+// Order N > 1 of the rough Navier-Stokes columns (theory.md §19.16): the order-2 error column is (6.3) from the
+// order-2 … 5 values printed by the CLI itself ((6.1) unless the changes flip sign; then order 5 tells an
+// alternation from a turn); order 1 stays the first approximation with a nan error.
 TEST(CliRough, HigherSonineOrderAndItsError) {
   const std::string base = "table " + scene_path("rough_hcs.toml") +
                            " --set alpha=0.9 --set 'coefficients=[\"shear_viscosity\", \"bulk_viscosity\"]'";
   std::map<int, std::vector<std::string>> row;
-  for (int n = 1; n <= 4; ++n) {
+  for (int n = 1; n <= 5; ++n) {
     const CliRun run = run_gkt(base + " --set order=" + std::to_string(n));
     ASSERT_EQ(run.status, 0) << run.err;
     const auto t = parse_csv(run.out);
@@ -712,9 +713,15 @@ TEST(CliRough, HigherSonineOrderAndItsError) {
   EXPECT_EQ(row[1][2], "nan");
   for (std::size_t c = 0; c < 2; ++c) {
     const double v2 = std::stod(row[2][c]), v3 = std::stod(row[3][c]), v4 = std::stod(row[4][c]);
-    // (6.1): the geometric tail with a 25 % margin, or both corrections when they do not shrink.
-    const double d1 = std::abs(v3 - v2), d2 = std::abs(v4 - v3), ratio = d2 / d1;
-    const double expected = ratio < 1 ? 1.25 * d1 / (1 - ratio) : d1 + d2;
+    const double v5 = std::stod(row[5][c]);
+    // (6.1): the geometric tail with a 25 % margin, or both corrections when they do not shrink; (6.3): where
+    // the changes flip sign and the third keeps the second's sign, Δ1 plus the monotone tail after the turn.
+    const double s1 = v3 - v2, s2 = v4 - v3, s3 = v5 - v4;
+    const double d1 = std::abs(s1), d2 = std::abs(s2), ratio = s2 / s1;
+    const bool turned = s1 * s2 < 0 && s2 * s3 > 0;
+    const double q = s3 / s2;
+    const double expected = turned ? (q < 1 ? 1.25 * (d1 + d2 / (1 - q)) : d1 + d2 + std::abs(s3))
+                                   : (std::abs(ratio) < 1 ? 1.25 * d1 / (1 - ratio) : d1 + d2);
     EXPECT_NEAR(std::stod(row[2][2 + c]), expected, 0.01 * expected) << c;
     EXPECT_NE(row[2][c], row[1][c]);
     EXPECT_EQ(row[2].back(), "2");
