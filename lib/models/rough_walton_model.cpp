@@ -33,7 +33,8 @@ const std::vector<std::string> kWaltonTableColumns{"rotational_temperature_ratio
                                                    "density_heat_coefficient",
                                                    "cooling_rate_first_order"};
 
-/// Highest Sonine order of the Navier–Stokes columns: the error of order N needs orders N + 1, N + 2, and the Walton
+/// Highest Sonine order of the Navier–Stokes columns: the error of order N needs orders N + 1, N + 2 (N + 3 to
+/// confirm a sign change, theory.md (6.3); past the cap such a change stays unconfirmed and flagged), and the Walton
 /// elements stop at order 4 (10–25 s of CPU there; order 5 would take minutes, docs/performance.md).
 constexpr int kMaxWaltonOrder = 2;
 
@@ -159,7 +160,7 @@ class RoughWaltonModel final : public TransportModel {
     const auto [d, alpha, beta0, kappa] = read_rough_grain(specs, point, "beta0");
     // Order 1 asked for as such is the first approximation of §19.10 (error not estimated); beyond it, or with a
     // tolerance, the five Navier–Stokes columns come from the Sonine solver of §19.20 about the Maxwellian HCS with
-    // the error (6.1) from orders N + 1, N + 2; every other column exists at order 1 only.
+    // the error (6.3) from orders N + 1 … N + 3 (theory.md §6); every other column exists at order 1 only.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     if (!first)
       for (const auto& name : coefficients)
@@ -176,10 +177,12 @@ class RoughWaltonModel final : public TransportModel {
       std::vector<CoefficientValue> out;
       for (const auto& name : coefficients)
         out.push_back(choose_order(order, kMaxWaltonOrder, [&](int n) {
+          // Orders past the solved ones (N + 3 beyond the library's cap 4) are nan: an unconfirmed sign change.
           const auto at = [&](int m) {
-            return v.empty() ? std::nan("") : walton_transport_column(v[static_cast<std::size_t>(m - 1)], name);
+            return m > static_cast<int>(v.size()) ? std::nan("")
+                                                  : walton_transport_column(v[static_cast<std::size_t>(m - 1)], name);
           };
-          return estimate_from_doubles(at(n), at(n + 1), at(n + 2));
+          return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
         }));
       return out;
     }
