@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -144,62 +145,115 @@ void partial_cooling(const Reduced& r, const Vec& gamma, Vec& zeta, Mat& jacobia
     }
 }
 
-/// The Maxwellian HCS (theory.md §16.2): ζ_i equal and Σ x_i γ_i = 1, by damped Newton from equipartition.
+/// The binary's Maxwellian HCS, returns γ. ζ_i(λγ) = √λ ζ_i(γ) ((16.11): w_il ∝ √γ, E_il (16.3) depends on
+/// θ_1/θ_2 only), so ζ_1 = ζ_2 fixes τ = γ_1/γ_2 alone, then Σ x_i γ_i = 1. In u = ln τ the scalar
+/// v(u) = (ζ_1 − ζ_2)/(−2c_d/d) at γ = (τ, 1) falls from +∞ to −∞, so Newton from equipartition is kept
+/// inside the bracket of the signs seen (bisection in ln τ where it leaves it); each step costs two square
+/// roots and one division, against the s-species Jacobian of partial_cooling.
+Vec binary_cooling_state(const Reduced& r) {
+  const double q = r.m[0] * r.inverse_m[1];  // θ_1/θ_2 = q/τ (θ_k = m_k/γ_k)
+  const double a12 = r.mu_a[1], a21 = r.mu_a[kMax], a11 = r.mu_a[0], a22 = r.mu_a[kMax + 1];
+  // x_l σ_il^{d−1} χ_il of the cross terms; the self terms x_i σ_ii^{d−1} χ_ii w_ii E_ii with E_ii = −2a_ii(1 − a_ii)
+  // and w_11 = √τ √(2/m_1), w_22 = √(2/m_2) (16.3)
+  const double c12 = r.x[1] * r.area[1], c21 = r.x[0] * r.area[kMax];
+  const double c11 = r.x[0] * r.area[0] * -2 * a11 * (1 - a11) * std::sqrt(2 * r.inverse_m[0]);
+  const double c22 = r.x[1] * r.area[kMax + 1] * -2 * a22 * (1 - a22) * std::sqrt(2 * r.inverse_m[1]);
+  double tau = 1, lo = 0, hi = std::numeric_limits<double>::infinity();  // bracket in τ
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double root = std::sqrt(tau), w12 = std::sqrt(tau * r.inverse_m[0] + r.inverse_m[1]);
+    const double rho = q / tau, over_rho = tau / q;  // θ_1/θ_2, θ_2/θ_1
+    const double e12 = -2 * a12 * (1 - 0.5 * a12 * (1 + rho)), e21 = -2 * a21 * (1 - 0.5 * a21 * (1 + over_rho));
+    const double v = c11 * root + w12 * (c12 * e12 - c21 * e21) - c22;
+    // dv/du: dw_11/du = w_11/2, dw_12/du = τ/(2m_1 w_12), dE_12/du = −a_12² θ_1/θ_2, dE_21/du = a_21² θ_2/θ_1
+    const double slope = 0.5 * c11 * root + 0.5 * tau * r.inverse_m[0] / w12 * (c12 * e12 - c21 * e21) -
+                         w12 * (c12 * a12 * a12 * rho + c21 * a21 * a21 * over_rho);
+    if (v > 0)
+      lo = tau;  // v falls with τ: the root lies above
+    else
+      hi = tau;
+    const double du = std::clamp(-v / slope, -5.0, 5.0);
+    // τ e^{δ}; near the root 1 + δ + δ²/2 suffices (u → τ only has to be right to first order)
+    double next = tau * (std::abs(du) < 1e-2 ? 1 + du * (1 + 0.5 * du) : std::exp(du));
+    // Quadratic convergence: a Newton step below 1e-8 leaves an error of order 1e-16 in u (taken even where
+    // round-off puts it on an end of the bracket).
+    if (std::abs(du) < 1e-8) {
+      const double per_sum = 1 / (r.x[0] * next + r.x[1]);
+      Vec gamma{};
+      gamma[0] = next * per_sum;
+      gamma[1] = per_sum;
+      return gamma;
+    }
+    if (!(std::isfinite(next) && next > lo &&
+          next < hi))  // bisection in ln τ, or a factor e out of a one-sided bracket
+      next = lo > 0 && std::isfinite(hi) ? std::sqrt(lo * hi) : (lo > 0 ? lo * std::numbers::e : hi / std::numbers::e);
+    tau = next;
+  }
+  throw std::invalid_argument("temperature_ratio: the Maxwellian HCS did not converge (binary ratio)");
+}
+
+/// The Maxwellian HCS (theory.md §16.2): ζ_i equal and Σ x_i γ_i = 1, by damped Newton from equipartition
+/// (the binary by its scalar equation for γ_1/γ_2).
 template <int S>
 void cooling_state(Reduced& r) {
-  Vec gamma{}, zeta{}, scale{};
+  Vec gamma{}, zeta{};
   Mat jac{};
-  for (int i = 0; i < S; ++i) gamma[i] = 1;
-  // Each equal-rate row is divided by the size of its gain and loss terms at equipartition,
-  // (2c_d/d) Σ_l x_l σ_il^{d−1} w_il 2μ_li(1+α_il) (> 0 also where ζ = 0, α = 1), held fixed.
-  const int last = S - 1;
-  for (int i = 0; i < S; ++i)
-    for (int l = 0; l < S; ++l)  // w_il = √(1/m_i + 1/m_l) at γ = 1
-      scale[i] += 4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * std::sqrt(r.inverse_m[i] + r.inverse_m[l]) *
-                  r.mu_a[i * kMax + l];
-  for (int i = 0; i < last; ++i) scale[i] = 1 / (scale[i] + scale[last]);  // held as its reciprocal
-  auto residual = [&](const Vec& g, Vec& res, Mat& j) {
-    partial_cooling<S>(r, g, zeta, j);
-    double norm = 0, sum = 0;
-    for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) * scale[i];
-    for (int i = 0; i < S; ++i) sum += r.x[i] * g[i];
-    res[last] = sum - 1;
-    for (int i = 0; i < S; ++i) norm += res[i] * res[i];
-    return norm;
-  };
-  Vec res{}, trial_res{};
-  Mat m{}, trial_jac{};  // Newton matrix and the trial point's Jacobian, reused by every iteration
-  double norm = residual(gamma, res, jac);
-  // Quadratic convergence: once |res| < 1e-11 the next full step reaches round-off; no search beyond it.
-  for (int iteration = 0; iteration < 200 && norm > 1e-30; ++iteration) {
-    const bool last_step = norm < 1e-22;
-    // Newton in ln γ keeps every γ > 0: Σ_k J_ik γ_k du_k = −res_i.
+  if constexpr (S == 2) {
+    gamma = binary_cooling_state(r);
+    partial_cooling<S>(r, gamma, zeta, jac);
+  } else {
+    Vec scale{};
+    for (int i = 0; i < S; ++i) gamma[i] = 1;
+    // Each equal-rate row is divided by the size of its gain and loss terms at equipartition,
+    // (2c_d/d) Σ_l x_l σ_il^{d−1} w_il 2μ_li(1+α_il) (> 0 also where ζ = 0, α = 1), held fixed.
+    const int last = S - 1;
     for (int i = 0; i < S; ++i)
-      for (int k = 0; k < S; ++k)
-        m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) * scale[i] : r.x[k]);
-    Vec rhs{};
-    for (int i = 0; i < S; ++i) rhs[i] = -res[i];
-    const Vec du = solve<S>(m, rhs);
-    double step = 1;
-    for (int halving = 0; halving < (last_step ? 1 : 40); ++halving, step /= 2) {
-      Vec trial = gamma;
-      // γ_k e^{δ}; near the root 1 + δ + δ²/2 suffices (the map u → γ only has to be right to first order).
-      for (int k = 0; k < S; ++k) {
-        const double delta = std::clamp(step * du[k], -5.0, 5.0);
-        trial[k] = gamma[k] * (std::abs(delta) < 1e-2 ? 1 + delta * (1 + 0.5 * delta) : std::exp(delta));
+      for (int l = 0; l < S; ++l)  // w_il = √(1/m_i + 1/m_l) at γ = 1
+        scale[i] += 4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * std::sqrt(r.inverse_m[i] + r.inverse_m[l]) *
+                    r.mu_a[i * kMax + l];
+    for (int i = 0; i < last; ++i) scale[i] = 1 / (scale[i] + scale[last]);  // held as its reciprocal
+    auto residual = [&](const Vec& g, Vec& res, Mat& j) {
+      partial_cooling<S>(r, g, zeta, j);
+      double norm = 0, sum = 0;
+      for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) * scale[i];
+      for (int i = 0; i < S; ++i) sum += r.x[i] * g[i];
+      res[last] = sum - 1;
+      for (int i = 0; i < S; ++i) norm += res[i] * res[i];
+      return norm;
+    };
+    Vec res{}, trial_res{};
+    Mat m{}, trial_jac{};  // Newton matrix and the trial point's Jacobian, reused by every iteration
+    double norm = residual(gamma, res, jac);
+    // Quadratic convergence: once |res| < 1e-11 the next full step reaches round-off; no search beyond it.
+    for (int iteration = 0; iteration < 200 && norm > 1e-30; ++iteration) {
+      const bool last_step = norm < 1e-22;
+      // Newton in ln γ keeps every γ > 0: Σ_k J_ik γ_k du_k = −res_i.
+      for (int i = 0; i < S; ++i)
+        for (int k = 0; k < S; ++k)
+          m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) * scale[i] : r.x[k]);
+      Vec rhs{};
+      for (int i = 0; i < S; ++i) rhs[i] = -res[i];
+      const Vec du = solve<S>(m, rhs);
+      double step = 1;
+      for (int halving = 0; halving < (last_step ? 1 : 40); ++halving, step /= 2) {
+        Vec trial = gamma;
+        // γ_k e^{δ}; near the root 1 + δ + δ²/2 suffices (the map u → γ only has to be right to first order).
+        for (int k = 0; k < S; ++k) {
+          const double delta = std::clamp(step * du[k], -5.0, 5.0);
+          trial[k] = gamma[k] * (std::abs(delta) < 1e-2 ? 1 + delta * (1 + 0.5 * delta) : std::exp(delta));
+        }
+        const double trial_norm = residual(trial, trial_res, trial_jac);
+        if (std::isfinite(trial_norm) && trial_norm < norm) {
+          gamma = trial, res = trial_res, jac = trial_jac, norm = trial_norm;
+          break;
+        }
       }
-      const double trial_norm = residual(trial, trial_res, trial_jac);
-      if (std::isfinite(trial_norm) && trial_norm < norm) {
-        gamma = trial, res = trial_res, jac = trial_jac, norm = trial_norm;
-        break;
-      }
+      if (step < 1e-11 || last_step) break;
     }
-    if (step < 1e-11 || last_step) break;
+    if (!(norm < 1e-22))
+      throw std::invalid_argument(std::string("temperature_ratio: the Maxwellian HCS did not converge (residual ")
+                                      .append(std::to_string(std::sqrt(norm)))
+                                      .append(")"));
   }
-  if (!(norm < 1e-22))
-    throw std::invalid_argument(std::string("temperature_ratio: the Maxwellian HCS did not converge (residual ")
-                                    .append(std::to_string(std::sqrt(norm)))
-                                    .append(")"));
   r.jacobian = jac;  // zeta and jac belong to the accepted γ
   r.gamma = gamma;
   for (int k = 0; k < S; ++k) {
@@ -215,7 +269,7 @@ void cooling_state(Reduced& r) {
       r.inverse_root_sum[i * kMax + j] = r.inverse_root_sum[j * kMax + i] = inverse;
       r.speed[i * kMax + j] = r.speed[j * kMax + i] = root * r.inverse_root_theta[i] * r.inverse_root_theta[j];
     }
-  r.zeta = zeta[last];
+  r.zeta = zeta[S - 1];
 }
 
 /// n ∂ln γ_i/∂n_j at i·4 + j and ∂ζ/∂n_j (theory.md §16.6): differentiate ζ_i − ζ_s = 0 and Σ_k n_k γ_k = n.
