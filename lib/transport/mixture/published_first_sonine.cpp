@@ -49,24 +49,26 @@ Vec solve(Mat m, Vec b) {
   return x;
 }
 
-/// LU factors (partial pivoting) of one s × s matrix, reused for every right-hand side of a mode.
+/// LU factors (partial pivoting) of the s × s block of one matrix, reused for every right-hand side of a mode.
 template <int S>
 class Lu {
  public:
-  explicit Lu(Mat m) : lu_(m) {
+  explicit Lu(const Mat& m) {
+    for (int i = 0; i < S; ++i)
+      for (int k = 0; k < S; ++k) lu_[i * S + k] = m[i * kMax + k];
     for (int c = 0; c < S; ++c) {
       int pivot = c;
       for (int r = c + 1; r < S; ++r)
-        if (std::abs(lu_[r * kMax + c]) > std::abs(lu_[pivot * kMax + c])) pivot = r;
+        if (std::abs(lu_[r * S + c]) > std::abs(lu_[pivot * S + c])) pivot = r;
       pivot_[c] = pivot;
       // Columns ≥ c only: the multipliers of earlier columns stay with the rows they were computed
       // for, so solve() can replay swap and elimination column by column (swapping them too would
       // need every swap applied to b first).
       if (pivot != c)
-        for (int k = c; k < S; ++k) std::swap(lu_[c * kMax + k], lu_[pivot * kMax + k]);
+        for (int k = c; k < S; ++k) std::swap(lu_[c * S + k], lu_[pivot * S + k]);
       for (int r = c + 1; r < S; ++r) {
-        const double f = lu_[r * kMax + c] /= lu_[c * kMax + c];
-        for (int k = c + 1; k < S; ++k) lu_[r * kMax + k] -= f * lu_[c * kMax + k];
+        const double f = lu_[r * S + c] /= lu_[c * S + c];
+        for (int k = c + 1; k < S; ++k) lu_[r * S + k] -= f * lu_[c * S + k];
       }
     }
   }
@@ -74,20 +76,21 @@ class Lu {
   [[nodiscard]] Vec solve(Vec b) const {
     for (int c = 0; c < S; ++c) {
       std::swap(b[c], b[pivot_[c]]);
-      for (int r = c + 1; r < S; ++r) b[r] -= lu_[r * kMax + c] * b[c];
+      for (int r = c + 1; r < S; ++r) b[r] -= lu_[r * S + c] * b[c];
     }
     Vec x{};
     for (int r = S - 1; r >= 0; --r) {
       double v = b[r];
-      for (int k = r + 1; k < S; ++k) v -= lu_[r * kMax + k] * x[k];
-      x[r] = v / lu_[r * kMax + r];
+      for (int k = r + 1; k < S; ++k) v -= lu_[r * S + k] * x[k];
+      x[r] = v / lu_[r * S + r];
     }
     return x;
   }
 
  private:
-  Mat lu_;
-  std::array<int, kMax> pivot_{};
+  std::array<double, S * S> lu_;  // the s × s block alone (row i, column k at i·s + k): a 4 × 4 copy per
+                                  // factorisation cost a tenth of the binary’s modes
+  std::array<int, S> pivot_{};
 };
 
 /// The state in the units of (16.11) and its Maxwellian HCS. The arrays are not zeroed (a call writes
@@ -354,11 +357,14 @@ PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
 /// The linearised operator (17.4) of the published truncation: the S_0–S_0 block l00 (mass flux), the
 /// S_1–S_0 block l10 that feeds the mass flux into the heat flux, the S_1–S_1 block l11, and the shear block.
 struct Operator {
-  Mat l00{}, l10{}, l11{}, shear{};
+  Mat l00, l10, l11, shear;  // only the s × s blocks are written and read
 };
 template <int S>
 Operator first_sonine_operator(const Reduced& r) {
   Operator op;
+  for (int i = 0; i < S; ++i)
+    for (int j = 0; j < S; ++j)
+      op.l00[i * kMax + j] = op.l10[i * kMax + j] = op.l11[i * kMax + j] = op.shear[i * kMax + j] = 0;
   for (int i = 0; i < S; ++i)
     for (int j = 0; j < S; ++j) {
       const PairIntegrals p = pair_integrals(r, i, j);
@@ -407,17 +413,20 @@ class VectorMode {
   }
 
  private:
-  static Mat mass_matrix(const Reduced& r, const Operator& op, double shift0) {
-    Mat m = op.l00;
-    for (int i = 0; i < S; ++i) m[i * kMax + i] += shift0;
+  // The s × s blocks alone are read: the rest of the operator's arrays is never written.
+  static Lu<S> mass_matrix(const Reduced& r, const Operator& op, double shift0) {
+    Mat m;
+    for (int i = 0; i < S; ++i)
+      for (int k = 0; k < S; ++k) m[i * kMax + k] = op.l00[i * kMax + k] + (i == k ? shift0 : 0.0);
     // Σ_k m_k ∫V X_k = 0 replaces the most abundant species' row (17.7).
     for (int k = 0; k < S; ++k) m[r.major * kMax + k] = r.m[k] * r.inverse_root_theta[k];
-    return m;
+    return Lu<S>(m);
   }
-  static Mat heat_matrix(const Operator& op, double shift11) {
-    Mat h = op.l11;
-    for (int i = 0; i < S; ++i) h[i * kMax + i] += shift11;
-    return h;
+  static Lu<S> heat_matrix(const Operator& op, double shift11) {
+    Mat h;
+    for (int i = 0; i < S; ++i)
+      for (int k = 0; k < S; ++k) h[i * kMax + k] = op.l11[i * kMax + k] + (i == k ? shift11 : 0.0);
+    return Lu<S>(h);
   }
   const Operator& op_;
   int major_;
@@ -694,9 +703,10 @@ PublishedFirstSonine first_sonine(Reduced& r) {
       out.pressure_diffusion[i] += r.m[i] * r.m[j] * r.x[j] * out.mutual_diffusion[i * kMax + j];
   // Shear (17.11) with Y_2 S_0 alone: (ℒ + ζD) φ̃ = −2x_i((d−1)/d)F_0 (+ the transfer (18.5) dense),
   // η_i = −(m_i/θ_i) F_0 φ̃_i/(d(d+2)).
-  Mat shear = op.shear;
+  Mat shear;  // the s × s block of op.shear
   Vec source{};
   for (int i = 0; i < S; ++i) {
+    for (int k = 0; k < S; ++k) shear[i * kMax + k] = op.shear[i * kMax + k];
     shear[i * kMax + i] -= z * (d - 1) * (d + 2) / 8;
     source[i] = -r.x[i] * (d - 1) * (d + 2) / 2;
     if (r.dense)
@@ -705,7 +715,7 @@ PublishedFirstSonine first_sonine(Reduced& r) {
         source[i] += r.length[P] * rate[P] * r.x[i] * r.x[j] * 2 * r.root_theta[j] * transfer[P].shear_source;
       }
   }
-  const Vec c = solve<S>(shear, source);
+  const Vec c = Lu<S>(shear).solve(source);
   for (int i = 0; i < S; ++i) {
     out.shear_viscosity_species[i] = -r.m[i] * r.inverse_theta[i] * c[i] * 0.25 * per_viscosity;
     out.shear_viscosity += out.shear_viscosity_species[i];
