@@ -327,11 +327,13 @@ struct PairIntegrals {
   double rate;  // R (without σ_ij^{d−1})
   double self00, other00, self10, other10, self11, other11, shear_self, shear_other;
 };
+template <int D>
 PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
   // t = θ_i/θ_j, k = μ_ji(1 + α_ij)(1 + t); with u = 1 + t the integrals are polynomials in k and t over u, u².
   // 1/u = θ_j/(θ_i + θ_j): no division per pair.
   const int P = i * kMax + j;
-  const double d = r.d, t = r.theta[i] * r.inverse_theta[j], ma = r.mu_a[P];
+  constexpr double d = D;  // the d-dependent coefficients fold at compile time
+  const double t = r.theta[i] * r.inverse_theta[j], ma = r.mu_a[P];
   const double u = 1 + t, v = r.theta[j] * r.inverse_root_sum[P] * r.inverse_root_sum[P], k = ma * u,
                st = r.root_theta[i] * r.inverse_root_theta[j];
   PairIntegrals p{};
@@ -344,7 +346,7 @@ PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
               (8 * d + 25) / 4) *
              v * v;                                            // (17.16)
   p.other11 = 3 * t * st * (k * k - 0.75 * k - 0.25) * v * v;  // (17.16)
-  if (r.d == 3) {                                              // (17.17)
+  if constexpr (D == 3) {                                      // (17.17)
     p.shear_self = (k - 10 * t / 3 - 4) * v;
     p.shear_other = t * (k - 2.0 / 3) * v;
   } else {
@@ -367,7 +369,7 @@ Operator first_sonine_operator(const Reduced& r) {
       op.l00[i * kMax + j] = op.l10[i * kMax + j] = op.l11[i * kMax + j] = op.shear[i * kMax + j] = 0;
   for (int i = 0; i < S; ++i)
     for (int j = 0; j < S; ++j) {
-      const PairIntegrals p = pair_integrals(r, i, j);
+      const PairIntegrals p = r.d == 3 ? pair_integrals<3>(r, i, j) : pair_integrals<2>(r, i, j);
       const double rate = r.area[i * kMax + j] * p.rate;
       const double self = rate * r.x[j], other = rate * r.x[i];
       // −Σ_j [x_j ∫ψ_i J_ij[X_i, f_j] + x_i ∫ψ_i J_ij[f_i, X_j]] (17.4)
@@ -444,10 +446,12 @@ struct PairTransfer {
   double heat_partner0, heat_partner1, heat_self0, heat_self1;
   double energy, energy_self, energy_partner, cooling_gradient;  // shear_gradient = −4 for every pair
 };
+template <int D>
 PairTransfer pair_transfer(const Reduced& r, int i, int j) {
   // Every division of the printed forms is by √θ_i, √θ_j, θ_i, θ_j or √(θ_i+θ_j), shared from Reduced.
   const int P = i * kMax + j;
-  const double d = r.d, ti = r.theta[i], tj = r.theta[j], k = r.mu_a[P], mi = r.m[i];
+  constexpr double d = D;  // the d-dependent coefficients fold at compile time
+  const double ti = r.theta[i], tj = r.theta[j], k = r.mu_a[P], mi = r.m[i];
   const double sum = ti + tj, root = r.root_sum[P], rti = r.root_theta[i], rtj = r.root_theta[j];
   const double iti = r.inverse_theta[i], itj = r.inverse_theta[j], irti = r.inverse_root_theta[i],
                irtj = r.inverse_root_theta[j], irs = r.inverse_root_sum[P];
@@ -573,7 +577,7 @@ PublishedFirstSonine first_sonine(Reduced& r) {
     for (int i = 0; i < S; ++i)
       for (int j = 0; j < S; ++j) {
         const int P = i * kMax + j;
-        transfer[P] = pair_transfer(r, i, j);
+        transfer[P] = r.d == 3 ? pair_transfer<3>(r, i, j) : pair_transfer<2>(r, i, j);
         rate[P] = r.area[P] * r.c_d * r.speed[P];
         const double sd = r.d == 3 ? r.sigma[P] * r.sigma[P] * r.sigma[P] : r.sigma[P] * r.sigma[P];
         const double w = r.closures->density * b2 * r.mu_a[P] * sd * r.closures->chi[P] * r.gamma[i];
