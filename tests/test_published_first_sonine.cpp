@@ -215,6 +215,28 @@ TEST(PublishedFirstSonine, CoolingStateConvergesAtExtremeRatios) {
           }
 }
 
+// The binary's HCS solves its scalar equation for γ_1/γ_2 (Newton in ln τ, bisection outside the bracket).
+// It converges where the two-species damped Newton it replaced stopped at a residual of 2e-3 and threw:
+// a heavy minority species (m_2/m_1 = 1000, σ_2/σ_1 = 0.3, x_1 = 0.9) and elastic collisions among the
+// light majority (α_11 = 1, α_12 = 0.9, α_22 = 0.8), d = 2, 3, dilute and φ = 0.25. γ_i equal
+// mixture_cooling_state's Maxwellian ratios to 1e-10 (its bracketed sweep, an independent method), and
+// Σ x_i γ_i = 1 to round-off.
+TEST(PublishedFirstSonine, BinaryCoolingStateConvergesWhereTheTwoSpeciesNewtonStopped) {
+  for (int d : {2, 3})
+    for (double phi : {0.0, 0.25}) {
+      gkt::Mixture m = binary(d, 1000, 0.3, 0.9, 0.9, phi);
+      m.alpha = {1.0, 0.9, 0.9, 0.8};
+      const auto c = gkt::published_first_sonine(gkt::mixture_cell(m));
+      const auto h = gkt::mixture_cooling_state(m, gkt::MixtureHcsScheme::maxwellian);
+      for (std::size_t i = 0; i < 2; ++i)
+        EXPECT_LT(std::abs(c.temperature_ratio[i] / h.temperature_ratio[i] - 1), 1e-10) << d << " " << phi;
+      EXPECT_LT(relative(c.cooling_rate, h.cooling_rate), 1e-10) << d << " " << phi;
+      EXPECT_LT(std::abs(0.9 * c.temperature_ratio[0] + 0.1 * c.temperature_ratio[1] - 1), 1e-15);
+      EXPECT_GT(c.temperature_ratio[1], 2 * c.temperature_ratio[0]);  // far from equipartition
+      EXPECT_TRUE(std::isfinite(c.thermal_conductivity) && std::isfinite(c.shear_viscosity));
+    }
+}
+
 // Bad input names the field; the closed form is the dilute gas's.
 TEST(PublishedFirstSonine, RefusesBadInput) {
   gkt::MixtureCell cell = gkt::mixture_cell(binary(3, 2, 1, 0.5, 0.8));

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -48,24 +49,26 @@ Vec solve(Mat m, Vec b) {
   return x;
 }
 
-/// LU factors (partial pivoting) of one s × s matrix, reused for every right-hand side of a mode.
+/// LU factors (partial pivoting) of the s × s block of one matrix, reused for every right-hand side of a mode.
 template <int S>
 class Lu {
  public:
-  explicit Lu(Mat m) : lu_(m) {
+  explicit Lu(const Mat& m) {
+    for (int i = 0; i < S; ++i)
+      for (int k = 0; k < S; ++k) lu_[i * S + k] = m[i * kMax + k];
     for (int c = 0; c < S; ++c) {
       int pivot = c;
       for (int r = c + 1; r < S; ++r)
-        if (std::abs(lu_[r * kMax + c]) > std::abs(lu_[pivot * kMax + c])) pivot = r;
+        if (std::abs(lu_[r * S + c]) > std::abs(lu_[pivot * S + c])) pivot = r;
       pivot_[c] = pivot;
       // Columns ≥ c only: the multipliers of earlier columns stay with the rows they were computed
       // for, so solve() can replay swap and elimination column by column (swapping them too would
       // need every swap applied to b first).
       if (pivot != c)
-        for (int k = c; k < S; ++k) std::swap(lu_[c * kMax + k], lu_[pivot * kMax + k]);
+        for (int k = c; k < S; ++k) std::swap(lu_[c * S + k], lu_[pivot * S + k]);
       for (int r = c + 1; r < S; ++r) {
-        const double f = lu_[r * kMax + c] /= lu_[c * kMax + c];
-        for (int k = c + 1; k < S; ++k) lu_[r * kMax + k] -= f * lu_[c * kMax + k];
+        const double f = lu_[r * S + c] /= lu_[c * S + c];
+        for (int k = c + 1; k < S; ++k) lu_[r * S + k] -= f * lu_[c * S + k];
       }
     }
   }
@@ -73,20 +76,21 @@ class Lu {
   [[nodiscard]] Vec solve(Vec b) const {
     for (int c = 0; c < S; ++c) {
       std::swap(b[c], b[pivot_[c]]);
-      for (int r = c + 1; r < S; ++r) b[r] -= lu_[r * kMax + c] * b[c];
+      for (int r = c + 1; r < S; ++r) b[r] -= lu_[r * S + c] * b[c];
     }
     Vec x{};
     for (int r = S - 1; r >= 0; --r) {
       double v = b[r];
-      for (int k = r + 1; k < S; ++k) v -= lu_[r * kMax + k] * x[k];
-      x[r] = v / lu_[r * kMax + r];
+      for (int k = r + 1; k < S; ++k) v -= lu_[r * S + k] * x[k];
+      x[r] = v / lu_[r * S + r];
     }
     return x;
   }
 
  private:
-  Mat lu_;
-  std::array<int, kMax> pivot_{};
+  std::array<double, S * S> lu_;  // the s × s block alone (row i, column k at i·s + k): a 4 × 4 copy per
+                                  // factorisation cost a tenth of the binary’s modes
+  std::array<int, S> pivot_{};
 };
 
 /// The state in the units of (16.11) and its Maxwellian HCS. The arrays are not zeroed (a call writes
@@ -144,62 +148,115 @@ void partial_cooling(const Reduced& r, const Vec& gamma, Vec& zeta, Mat& jacobia
     }
 }
 
-/// The Maxwellian HCS (theory.md §16.2): ζ_i equal and Σ x_i γ_i = 1, by damped Newton from equipartition.
+/// The binary's Maxwellian HCS, returns γ. ζ_i(λγ) = √λ ζ_i(γ) ((16.11): w_il ∝ √γ, E_il (16.3) depends on
+/// θ_1/θ_2 only), so ζ_1 = ζ_2 fixes τ = γ_1/γ_2 alone, then Σ x_i γ_i = 1. In u = ln τ the scalar
+/// v(u) = (ζ_1 − ζ_2)/(−2c_d/d) at γ = (τ, 1) falls from +∞ to −∞, so Newton from equipartition is kept
+/// inside the bracket of the signs seen (bisection in ln τ where it leaves it); each step costs two square
+/// roots and one division, against the s-species Jacobian of partial_cooling.
+Vec binary_cooling_state(const Reduced& r) {
+  const double q = r.m[0] * r.inverse_m[1];  // θ_1/θ_2 = q/τ (θ_k = m_k/γ_k)
+  const double a12 = r.mu_a[1], a21 = r.mu_a[kMax], a11 = r.mu_a[0], a22 = r.mu_a[kMax + 1];
+  // x_l σ_il^{d−1} χ_il of the cross terms; the self terms x_i σ_ii^{d−1} χ_ii w_ii E_ii with E_ii = −2a_ii(1 − a_ii)
+  // and w_11 = √τ √(2/m_1), w_22 = √(2/m_2) (16.3)
+  const double c12 = r.x[1] * r.area[1], c21 = r.x[0] * r.area[kMax];
+  const double c11 = r.x[0] * r.area[0] * -2 * a11 * (1 - a11) * std::sqrt(2 * r.inverse_m[0]);
+  const double c22 = r.x[1] * r.area[kMax + 1] * -2 * a22 * (1 - a22) * std::sqrt(2 * r.inverse_m[1]);
+  double tau = 1, lo = 0, hi = std::numeric_limits<double>::infinity();  // bracket in τ
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double root = std::sqrt(tau), w12 = std::sqrt(tau * r.inverse_m[0] + r.inverse_m[1]);
+    const double rho = q / tau, over_rho = tau / q;  // θ_1/θ_2, θ_2/θ_1
+    const double e12 = -2 * a12 * (1 - 0.5 * a12 * (1 + rho)), e21 = -2 * a21 * (1 - 0.5 * a21 * (1 + over_rho));
+    const double v = c11 * root + w12 * (c12 * e12 - c21 * e21) - c22;
+    // dv/du: dw_11/du = w_11/2, dw_12/du = τ/(2m_1 w_12), dE_12/du = −a_12² θ_1/θ_2, dE_21/du = a_21² θ_2/θ_1
+    const double slope = 0.5 * c11 * root + 0.5 * tau * r.inverse_m[0] / w12 * (c12 * e12 - c21 * e21) -
+                         w12 * (c12 * a12 * a12 * rho + c21 * a21 * a21 * over_rho);
+    if (v > 0)
+      lo = tau;  // v falls with τ: the root lies above
+    else
+      hi = tau;
+    const double du = std::clamp(-v / slope, -5.0, 5.0);
+    // τ e^{δ}; near the root 1 + δ + δ²/2 suffices (u → τ only has to be right to first order)
+    double next = tau * (std::abs(du) < 1e-2 ? 1 + du * (1 + 0.5 * du) : std::exp(du));
+    // Quadratic convergence: a Newton step below 1e-8 leaves an error of order 1e-16 in u (taken even where
+    // round-off puts it on an end of the bracket).
+    if (std::abs(du) < 1e-8) {
+      const double per_sum = 1 / (r.x[0] * next + r.x[1]);
+      Vec gamma{};
+      gamma[0] = next * per_sum;
+      gamma[1] = per_sum;
+      return gamma;
+    }
+    if (!(std::isfinite(next) && next > lo &&
+          next < hi))  // bisection in ln τ, or a factor e out of a one-sided bracket
+      next = lo > 0 && std::isfinite(hi) ? std::sqrt(lo * hi) : (lo > 0 ? lo * std::numbers::e : hi / std::numbers::e);
+    tau = next;
+  }
+  throw std::invalid_argument("temperature_ratio: the Maxwellian HCS did not converge (binary ratio)");
+}
+
+/// The Maxwellian HCS (theory.md §16.2): ζ_i equal and Σ x_i γ_i = 1, by damped Newton from equipartition
+/// (the binary by its scalar equation for γ_1/γ_2).
 template <int S>
 void cooling_state(Reduced& r) {
-  Vec gamma{}, zeta{}, scale{};
+  Vec gamma{}, zeta{};
   Mat jac{};
-  for (int i = 0; i < S; ++i) gamma[i] = 1;
-  // Each equal-rate row is divided by the size of its gain and loss terms at equipartition,
-  // (2c_d/d) Σ_l x_l σ_il^{d−1} w_il 2μ_li(1+α_il) (> 0 also where ζ = 0, α = 1), held fixed.
-  const int last = S - 1;
-  for (int i = 0; i < S; ++i)
-    for (int l = 0; l < S; ++l)  // w_il = √(1/m_i + 1/m_l) at γ = 1
-      scale[i] += 4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * std::sqrt(r.inverse_m[i] + r.inverse_m[l]) *
-                  r.mu_a[i * kMax + l];
-  for (int i = 0; i < last; ++i) scale[i] = 1 / (scale[i] + scale[last]);  // held as its reciprocal
-  auto residual = [&](const Vec& g, Vec& res, Mat& j) {
-    partial_cooling<S>(r, g, zeta, j);
-    double norm = 0, sum = 0;
-    for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) * scale[i];
-    for (int i = 0; i < S; ++i) sum += r.x[i] * g[i];
-    res[last] = sum - 1;
-    for (int i = 0; i < S; ++i) norm += res[i] * res[i];
-    return norm;
-  };
-  Vec res{}, trial_res{};
-  Mat m{}, trial_jac{};  // Newton matrix and the trial point's Jacobian, reused by every iteration
-  double norm = residual(gamma, res, jac);
-  // Quadratic convergence: once |res| < 1e-11 the next full step reaches round-off; no search beyond it.
-  for (int iteration = 0; iteration < 200 && norm > 1e-30; ++iteration) {
-    const bool last_step = norm < 1e-22;
-    // Newton in ln γ keeps every γ > 0: Σ_k J_ik γ_k du_k = −res_i.
+  if constexpr (S == 2) {
+    gamma = binary_cooling_state(r);
+    partial_cooling<S>(r, gamma, zeta, jac);
+  } else {
+    Vec scale{};
+    for (int i = 0; i < S; ++i) gamma[i] = 1;
+    // Each equal-rate row is divided by the size of its gain and loss terms at equipartition,
+    // (2c_d/d) Σ_l x_l σ_il^{d−1} w_il 2μ_li(1+α_il) (> 0 also where ζ = 0, α = 1), held fixed.
+    const int last = S - 1;
     for (int i = 0; i < S; ++i)
-      for (int k = 0; k < S; ++k)
-        m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) * scale[i] : r.x[k]);
-    Vec rhs{};
-    for (int i = 0; i < S; ++i) rhs[i] = -res[i];
-    const Vec du = solve<S>(m, rhs);
-    double step = 1;
-    for (int halving = 0; halving < (last_step ? 1 : 40); ++halving, step /= 2) {
-      Vec trial = gamma;
-      // γ_k e^{δ}; near the root 1 + δ + δ²/2 suffices (the map u → γ only has to be right to first order).
-      for (int k = 0; k < S; ++k) {
-        const double delta = std::clamp(step * du[k], -5.0, 5.0);
-        trial[k] = gamma[k] * (std::abs(delta) < 1e-2 ? 1 + delta * (1 + 0.5 * delta) : std::exp(delta));
+      for (int l = 0; l < S; ++l)  // w_il = √(1/m_i + 1/m_l) at γ = 1
+        scale[i] += 4 * r.c_d / r.d * r.x[l] * r.area[i * kMax + l] * std::sqrt(r.inverse_m[i] + r.inverse_m[l]) *
+                    r.mu_a[i * kMax + l];
+    for (int i = 0; i < last; ++i) scale[i] = 1 / (scale[i] + scale[last]);  // held as its reciprocal
+    auto residual = [&](const Vec& g, Vec& res, Mat& j) {
+      partial_cooling<S>(r, g, zeta, j);
+      double norm = 0, sum = 0;
+      for (int i = 0; i < last; ++i) res[i] = (zeta[i] - zeta[last]) * scale[i];
+      for (int i = 0; i < S; ++i) sum += r.x[i] * g[i];
+      res[last] = sum - 1;
+      for (int i = 0; i < S; ++i) norm += res[i] * res[i];
+      return norm;
+    };
+    Vec res{}, trial_res{};
+    Mat m{}, trial_jac{};  // Newton matrix and the trial point's Jacobian, reused by every iteration
+    double norm = residual(gamma, res, jac);
+    // Quadratic convergence: once |res| < 1e-11 the next full step reaches round-off; no search beyond it.
+    for (int iteration = 0; iteration < 200 && norm > 1e-30; ++iteration) {
+      const bool last_step = norm < 1e-22;
+      // Newton in ln γ keeps every γ > 0: Σ_k J_ik γ_k du_k = −res_i.
+      for (int i = 0; i < S; ++i)
+        for (int k = 0; k < S; ++k)
+          m[i * kMax + k] = gamma[k] * (i < last ? (jac[i * kMax + k] - jac[last * kMax + k]) * scale[i] : r.x[k]);
+      Vec rhs{};
+      for (int i = 0; i < S; ++i) rhs[i] = -res[i];
+      const Vec du = solve<S>(m, rhs);
+      double step = 1;
+      for (int halving = 0; halving < (last_step ? 1 : 40); ++halving, step /= 2) {
+        Vec trial = gamma;
+        // γ_k e^{δ}; near the root 1 + δ + δ²/2 suffices (the map u → γ only has to be right to first order).
+        for (int k = 0; k < S; ++k) {
+          const double delta = std::clamp(step * du[k], -5.0, 5.0);
+          trial[k] = gamma[k] * (std::abs(delta) < 1e-2 ? 1 + delta * (1 + 0.5 * delta) : std::exp(delta));
+        }
+        const double trial_norm = residual(trial, trial_res, trial_jac);
+        if (std::isfinite(trial_norm) && trial_norm < norm) {
+          gamma = trial, res = trial_res, jac = trial_jac, norm = trial_norm;
+          break;
+        }
       }
-      const double trial_norm = residual(trial, trial_res, trial_jac);
-      if (std::isfinite(trial_norm) && trial_norm < norm) {
-        gamma = trial, res = trial_res, jac = trial_jac, norm = trial_norm;
-        break;
-      }
+      if (step < 1e-11 || last_step) break;
     }
-    if (step < 1e-11 || last_step) break;
+    if (!(norm < 1e-22))
+      throw std::invalid_argument(std::string("temperature_ratio: the Maxwellian HCS did not converge (residual ")
+                                      .append(std::to_string(std::sqrt(norm)))
+                                      .append(")"));
   }
-  if (!(norm < 1e-22))
-    throw std::invalid_argument(std::string("temperature_ratio: the Maxwellian HCS did not converge (residual ")
-                                    .append(std::to_string(std::sqrt(norm)))
-                                    .append(")"));
   r.jacobian = jac;  // zeta and jac belong to the accepted γ
   r.gamma = gamma;
   for (int k = 0; k < S; ++k) {
@@ -215,7 +272,7 @@ void cooling_state(Reduced& r) {
       r.inverse_root_sum[i * kMax + j] = r.inverse_root_sum[j * kMax + i] = inverse;
       r.speed[i * kMax + j] = r.speed[j * kMax + i] = root * r.inverse_root_theta[i] * r.inverse_root_theta[j];
     }
-  r.zeta = zeta[last];
+  r.zeta = zeta[S - 1];
 }
 
 /// n ∂ln γ_i/∂n_j at i·4 + j and ∂ζ/∂n_j (theory.md §16.6): differentiate ζ_i − ζ_s = 0 and Σ_k n_k γ_k = n.
@@ -270,11 +327,13 @@ struct PairIntegrals {
   double rate;  // R (without σ_ij^{d−1})
   double self00, other00, self10, other10, self11, other11, shear_self, shear_other;
 };
+template <int D>
 PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
   // t = θ_i/θ_j, k = μ_ji(1 + α_ij)(1 + t); with u = 1 + t the integrals are polynomials in k and t over u, u².
   // 1/u = θ_j/(θ_i + θ_j): no division per pair.
   const int P = i * kMax + j;
-  const double d = r.d, t = r.theta[i] * r.inverse_theta[j], ma = r.mu_a[P];
+  constexpr double d = D;  // the d-dependent coefficients fold at compile time
+  const double t = r.theta[i] * r.inverse_theta[j], ma = r.mu_a[P];
   const double u = 1 + t, v = r.theta[j] * r.inverse_root_sum[P] * r.inverse_root_sum[P], k = ma * u,
                st = r.root_theta[i] * r.inverse_root_theta[j];
   PairIntegrals p{};
@@ -287,7 +346,7 @@ PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
               (8 * d + 25) / 4) *
              v * v;                                            // (17.16)
   p.other11 = 3 * t * st * (k * k - 0.75 * k - 0.25) * v * v;  // (17.16)
-  if (r.d == 3) {                                              // (17.17)
+  if constexpr (D == 3) {                                      // (17.17)
     p.shear_self = (k - 10 * t / 3 - 4) * v;
     p.shear_other = t * (k - 2.0 / 3) * v;
   } else {
@@ -300,14 +359,17 @@ PairIntegrals pair_integrals(const Reduced& r, int i, int j) {
 /// The linearised operator (17.4) of the published truncation: the S_0–S_0 block l00 (mass flux), the
 /// S_1–S_0 block l10 that feeds the mass flux into the heat flux, the S_1–S_1 block l11, and the shear block.
 struct Operator {
-  Mat l00{}, l10{}, l11{}, shear{};
+  Mat l00, l10, l11, shear;  // only the s × s blocks are written and read
 };
 template <int S>
 Operator first_sonine_operator(const Reduced& r) {
   Operator op;
   for (int i = 0; i < S; ++i)
+    for (int j = 0; j < S; ++j)
+      op.l00[i * kMax + j] = op.l10[i * kMax + j] = op.l11[i * kMax + j] = op.shear[i * kMax + j] = 0;
+  for (int i = 0; i < S; ++i)
     for (int j = 0; j < S; ++j) {
-      const PairIntegrals p = pair_integrals(r, i, j);
+      const PairIntegrals p = r.d == 3 ? pair_integrals<3>(r, i, j) : pair_integrals<2>(r, i, j);
       const double rate = r.area[i * kMax + j] * p.rate;
       const double self = rate * r.x[j], other = rate * r.x[i];
       // −Σ_j [x_j ∫ψ_i J_ij[X_i, f_j] + x_i ∫ψ_i J_ij[f_i, X_j]] (17.4)
@@ -353,17 +415,20 @@ class VectorMode {
   }
 
  private:
-  static Mat mass_matrix(const Reduced& r, const Operator& op, double shift0) {
-    Mat m = op.l00;
-    for (int i = 0; i < S; ++i) m[i * kMax + i] += shift0;
+  // The s × s blocks alone are read: the rest of the operator's arrays is never written.
+  static Lu<S> mass_matrix(const Reduced& r, const Operator& op, double shift0) {
+    Mat m;
+    for (int i = 0; i < S; ++i)
+      for (int k = 0; k < S; ++k) m[i * kMax + k] = op.l00[i * kMax + k] + (i == k ? shift0 : 0.0);
     // Σ_k m_k ∫V X_k = 0 replaces the most abundant species' row (17.7).
     for (int k = 0; k < S; ++k) m[r.major * kMax + k] = r.m[k] * r.inverse_root_theta[k];
-    return m;
+    return Lu<S>(m);
   }
-  static Mat heat_matrix(const Operator& op, double shift11) {
-    Mat h = op.l11;
-    for (int i = 0; i < S; ++i) h[i * kMax + i] += shift11;
-    return h;
+  static Lu<S> heat_matrix(const Operator& op, double shift11) {
+    Mat h;
+    for (int i = 0; i < S; ++i)
+      for (int k = 0; k < S; ++k) h[i * kMax + k] = op.l11[i * kMax + k] + (i == k ? shift11 : 0.0);
+    return Lu<S>(h);
   }
   const Operator& op_;
   int major_;
@@ -381,10 +446,12 @@ struct PairTransfer {
   double heat_partner0, heat_partner1, heat_self0, heat_self1;
   double energy, energy_self, energy_partner, cooling_gradient;  // shear_gradient = −4 for every pair
 };
+template <int D>
 PairTransfer pair_transfer(const Reduced& r, int i, int j) {
   // Every division of the printed forms is by √θ_i, √θ_j, θ_i, θ_j or √(θ_i+θ_j), shared from Reduced.
   const int P = i * kMax + j;
-  const double d = r.d, ti = r.theta[i], tj = r.theta[j], k = r.mu_a[P], mi = r.m[i];
+  constexpr double d = D;  // the d-dependent coefficients fold at compile time
+  const double ti = r.theta[i], tj = r.theta[j], k = r.mu_a[P], mi = r.m[i];
   const double sum = ti + tj, root = r.root_sum[P], rti = r.root_theta[i], rtj = r.root_theta[j];
   const double iti = r.inverse_theta[i], itj = r.inverse_theta[j], irti = r.inverse_root_theta[i],
                irtj = r.inverse_root_theta[j], irs = r.inverse_root_sum[P];
@@ -510,7 +577,7 @@ PublishedFirstSonine first_sonine(Reduced& r) {
     for (int i = 0; i < S; ++i)
       for (int j = 0; j < S; ++j) {
         const int P = i * kMax + j;
-        transfer[P] = pair_transfer(r, i, j);
+        transfer[P] = r.d == 3 ? pair_transfer<3>(r, i, j) : pair_transfer<2>(r, i, j);
         rate[P] = r.area[P] * r.c_d * r.speed[P];
         const double sd = r.d == 3 ? r.sigma[P] * r.sigma[P] * r.sigma[P] : r.sigma[P] * r.sigma[P];
         const double w = r.closures->density * b2 * r.mu_a[P] * sd * r.closures->chi[P] * r.gamma[i];
@@ -640,9 +707,10 @@ PublishedFirstSonine first_sonine(Reduced& r) {
       out.pressure_diffusion[i] += r.m[i] * r.m[j] * r.x[j] * out.mutual_diffusion[i * kMax + j];
   // Shear (17.11) with Y_2 S_0 alone: (ℒ + ζD) φ̃ = −2x_i((d−1)/d)F_0 (+ the transfer (18.5) dense),
   // η_i = −(m_i/θ_i) F_0 φ̃_i/(d(d+2)).
-  Mat shear = op.shear;
+  Mat shear;  // the s × s block of op.shear
   Vec source{};
   for (int i = 0; i < S; ++i) {
+    for (int k = 0; k < S; ++k) shear[i * kMax + k] = op.shear[i * kMax + k];
     shear[i * kMax + i] -= z * (d - 1) * (d + 2) / 8;
     source[i] = -r.x[i] * (d - 1) * (d + 2) / 2;
     if (r.dense)
@@ -651,7 +719,7 @@ PublishedFirstSonine first_sonine(Reduced& r) {
         source[i] += r.length[P] * rate[P] * r.x[i] * r.x[j] * 2 * r.root_theta[j] * transfer[P].shear_source;
       }
   }
-  const Vec c = solve<S>(shear, source);
+  const Vec c = Lu<S>(shear).solve(source);
   for (int i = 0; i < S; ++i) {
     out.shear_viscosity_species[i] = -r.m[i] * r.inverse_theta[i] * c[i] * 0.25 * per_viscosity;
     out.shear_viscosity += out.shear_viscosity_species[i];
