@@ -194,7 +194,8 @@ TEST(PublishedFirstSonine, IdenticalSpeciesAndTracerLimits) {
   }
 }
 
-// The closed form's HCS (damped Newton in ln γ) converges where the library's bracketed sweep does:
+// The closed form's HCS (binary: Newton in ln(γ_1/γ_2); three species: damped Newton in ln γ) converges where the
+// library's bracketed sweep does:
 // mass ratios 10^±3 with diameter ratios 0.1 and 10, α down to 0.1, tracer to nearly pure, d = 2, 3 —
 // γ_i equal mixture_cooling_state's Maxwellian ratios to 1e-10 and every coefficient is finite.
 TEST(PublishedFirstSonine, CoolingStateConvergesAtExtremeRatios) {
