@@ -95,6 +95,7 @@ program ternary_test
              == GKT_INVALID_ARGUMENT, 'unknown reference refused')
   message = gkt_last_error()
   call check(index(message, 'reference: must be') == 1, 'field named: ' // message)
+  deallocate (message)
 
   if (failures > 0) then
     print '(a, i0, a)', 'ternary_test: ', failures, ' check(s) failed'
