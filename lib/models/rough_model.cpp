@@ -160,23 +160,6 @@ constexpr int kMaxRoughOrder = 8;
 constexpr int kMaxRoughReferenceOrder = 4;
 constexpr int kMaxRoughReferenceDegree = kMaxRoughHcsOrder + 1;
 
-/// The Navier–Stokes columns of the higher-order solver (theory.md §19.16).
-constexpr std::array<const char*, 5> kSonineColumns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
-                                                    "density_heat_coefficient", "cooling_rate_first_order"};
-
-bool is_sonine_column(const std::string& name) {
-  return std::find(kSonineColumns.begin(), kSonineColumns.end(), name) != kSonineColumns.end();
-}
-
-/// Returns the column `name` of one order's values.
-double pick_transport(const RoughTransportValues& v, const std::string& name) {
-  if (name == "shear_viscosity") return v.shear_viscosity;
-  if (name == "bulk_viscosity") return v.bulk_viscosity;
-  if (name == "thermal_conductivity") return v.thermal_conductivity;
-  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
-  return v.cooling_rate_first_order;
-}
-
 /// The tables of one (d, α, β, κ) and the values of every order solved so far.
 struct RoughSonineEntry {
   std::unique_ptr<RoughSonineTransport> transport;
@@ -340,14 +323,14 @@ class RoughModel final : public TransportModel {
                                       std::to_string(kMaxRoughHcsOrder) + ", got " + std::to_string(order.order));
         continue;
       }
-      if (cumulant_reference && (is_sonine_column(name) || is_critical(name))) {
+      if (cumulant_reference && (is_rough_sonine_column(name) || is_critical(name))) {
         if (!order.tolerance && order.order > kMaxRoughReferenceOrder)
           throw std::invalid_argument("order: " + name +
                                       " of model rough with reference_state = \"hcs\" takes orders 1 to " +
                                       std::to_string(kMaxRoughReferenceOrder) + ", got " + std::to_string(order.order));
         continue;
       }
-      if (!first && !is_sonine_column(name) && !is_critical(name))
+      if (!first && !is_rough_sonine_column(name) && !is_critical(name))
         throw std::invalid_argument("coefficients: " + name +
                                     " of model rough is computed at order 1 only; use order = 1 without tolerance, "
                                     "or ask for the HCS columns or shear_viscosity, bulk_viscosity, "
@@ -387,8 +370,9 @@ class RoughModel final : public TransportModel {
     const int fixed_degree = static_cast<int>(SchemaPoint(specs, point).number("hcs_order").to_double());
     const std::optional<Rational> tolerance = order.tolerance ? order.tolerance : order.row_tolerance;
     const bool wants_reference =
-        cumulant_reference && std::any_of(coefficients.begin(), coefficients.end(),
-                                          [&](const std::string& c) { return is_sonine_column(c) || is_critical(c); });
+        cumulant_reference && std::any_of(coefficients.begin(), coefficients.end(), [&](const std::string& c) {
+          return is_rough_sonine_column(c) || is_critical(c);
+        });
     const bool scan_degree = wants_reference && tolerance && !point.numbers.contains("hcs_order");
     std::array<bool, kMaxRoughReferenceDegree + 1> hcs_settled{};
     int closest_hcs_degree = 2;                      // the K of smallest HCS step, used when no K settles the HCS
@@ -411,7 +395,7 @@ class RoughModel final : public TransportModel {
       }
       // theory.md §19.16 about the Sonine HCS; the stability values from its θ, ζ* and those coefficients (§19.15,
       // (19.33)), with the same error: (6.1) on the value itself plus the step from the next lower cumulant degree.
-      if (cumulant_reference && (is_sonine_column(name) || is_critical(name))) {
+      if (cumulant_reference && (is_rough_sonine_column(name) || is_critical(name))) {
         const int tables = order.tolerance ? kMaxRoughReferenceOrder + 2 : order.order + 2;
         const auto at_degree = [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int k) {
           return choose_order(order, kMaxRoughReferenceOrder, [&](int n) {
@@ -438,13 +422,13 @@ class RoughModel final : public TransportModel {
         out.push_back(*chosen);
         continue;
       }
-      if (!first && is_sonine_column(name)) {  // theory.md §19.16, error (6.3) from orders N + 1, N + 2 (N + 3)
+      if (!first && is_rough_sonine_column(name)) {  // theory.md §19.16, error (6.3) from orders N + 1, N + 2 (N + 3)
         // Tables to N + 2 for a fixed order; a tolerance scan starts at 3 and then takes the cap + 2 at once.
         const int tables = order.tolerance ? kMaxRoughOrder + 2 : order.order + 2;
         out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
           const auto at = [&](int m) {
             if (m > kMaxRoughOrder + 2) return std::numeric_limits<double>::quiet_NaN();  // past the tables' cap
-            return pick_transport(transport_values(d, alpha, beta, kappa, m, tables), name);
+            return rough_sonine_column(transport_values(d, alpha, beta, kappa, m, tables), name);
           };
           return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
         }));
@@ -659,7 +643,7 @@ class RoughModel final : public TransportModel {
   double reference_column(int d, const Rational& alpha, const Rational& beta, const Rational& kappa, bool linear,
                           const std::string& name, int degree, int n, int tables) {
     const RoughTransportValues v = reference_values(d, alpha, beta, kappa, linear, degree, n, tables);
-    if (is_sonine_column(name)) return pick_transport(v, name);
+    if (is_rough_sonine_column(name)) return rough_sonine_column(v, name);
     double theta = 0, zeta = 0;
     if (degree == 1) {
       RoughReferenceEntry& entry = reference_[reference_key(d, alpha, beta, kappa, linear)];

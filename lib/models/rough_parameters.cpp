@@ -1,5 +1,7 @@
 #include "models/rough_parameters.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -63,6 +65,20 @@ CoefficientValue rough_stability_value(const HcsStability& s, const std::string&
     v.infinite = true;
   }
   return v;
+}
+
+bool is_rough_sonine_column(const std::string& name) {
+  static constexpr std::array<const char*, 5> columns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
+                                                      "density_heat_coefficient", "cooling_rate_first_order"};
+  return std::find(columns.begin(), columns.end(), name) != columns.end();
+}
+
+double rough_sonine_column(const RoughTransportValues& v, const std::string& name) {
+  if (name == "shear_viscosity") return v.shear_viscosity;
+  if (name == "bulk_viscosity") return v.bulk_viscosity;
+  if (name == "thermal_conductivity") return v.thermal_conductivity;
+  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
+  return v.cooling_rate_first_order;
 }
 
 }  // namespace gkt::detail

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gkt/evolution/hcs_stability.hpp"
+#include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "models/models.hpp"
 
 namespace gkt::detail {
@@ -38,5 +39,14 @@ CoefficientValue rough_stability_value(const HcsStability& s, const std::string&
 /// Returns x as a first approximation: order 1, no error estimate, undefined (and not converged)
 /// where x is not finite (θ = inf where the spin decouples, NaN where a scheme has no root).
 CoefficientValue first_approximation(double x);
+
+/// Returns true if `name` is one of the five Navier–Stokes columns the rough Sonine solvers give at any order
+/// (shear_viscosity, bulk_viscosity, thermal_conductivity, density_heat_coefficient, cooling_rate_first_order;
+/// theory.md §19.16, §19.20).
+bool is_rough_sonine_column(const std::string& name);
+
+/// Returns the Navier–Stokes column `name` (is_rough_sonine_column) of one order's values, reduced as
+/// RoughTransportValues holds it.
+double rough_sonine_column(const RoughTransportValues& v, const std::string& name);
 
 }  // namespace gkt::detail

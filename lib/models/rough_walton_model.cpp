@@ -38,23 +38,6 @@ const std::vector<std::string> kWaltonTableColumns{"rotational_temperature_ratio
 /// elements stop at order 4 (10–25 s of CPU there; order 5 would take minutes, docs/performance.md).
 constexpr int kMaxWaltonOrder = 2;
 
-/// The Navier–Stokes columns of the higher-order solver (theory.md §19.20).
-constexpr std::array<const char*, 5> kWaltonSonineColumns{"shear_viscosity", "bulk_viscosity", "thermal_conductivity",
-                                                          "density_heat_coefficient", "cooling_rate_first_order"};
-
-bool is_walton_sonine_column(const std::string& name) {
-  return std::find(kWaltonSonineColumns.begin(), kWaltonSonineColumns.end(), name) != kWaltonSonineColumns.end();
-}
-
-/// Returns the column `name` of one order's values.
-double walton_transport_column(const RoughTransportValues& v, const std::string& name) {
-  if (name == "shear_viscosity") return v.shear_viscosity;
-  if (name == "bulk_viscosity") return v.bulk_viscosity;
-  if (name == "thermal_conductivity") return v.thermal_conductivity;
-  if (name == "density_heat_coefficient") return v.density_heat_coefficient;
-  return v.cooling_rate_first_order;
-}
-
 /// Returns the HCS stability of the Walton gas from its Maxwellian θ, ζ* and first-Sonine coefficients
 /// (theory.md §19.15); NaN everywhere where the spin decouples (no HCS of the spin, §19.10).
 HcsStability walton_stability(int d, const RoughWaltonState& s) {
@@ -164,7 +147,7 @@ class RoughWaltonModel final : public TransportModel {
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
     if (!first)
       for (const auto& name : coefficients)
-        if (!is_walton_sonine_column(name))
+        if (!is_rough_sonine_column(name))
           throw std::invalid_argument("coefficients: " + name +
                                       " of model rough-walton is computed at order 1 only; use order = 1 without "
                                       "tolerance, or ask for shear_viscosity, bulk_viscosity, thermal_conductivity, "
@@ -180,7 +163,7 @@ class RoughWaltonModel final : public TransportModel {
           // Orders past the solved ones (N + 3 beyond the library's cap 4) are nan: an unconfirmed sign change.
           const auto at = [&](int m) {
             return m > static_cast<int>(v.size()) ? std::nan("")
-                                                  : walton_transport_column(v[static_cast<std::size_t>(m - 1)], name);
+                                                  : rough_sonine_column(v[static_cast<std::size_t>(m - 1)], name);
           };
           return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
         }));
