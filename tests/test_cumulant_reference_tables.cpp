@@ -29,19 +29,10 @@ gkt::Mixture binary(int d, double m2, double s2, double x1, double alpha) {
   return gkt::make_mixture(d, {{1.0, 1.0, x1, "1"}, {m2, s2, 1 - x1, "2"}}, alpha);
 }
 
-/// The 18 reduced values the binary table interpolates, from a direct solve (ζ*, γ_i, η*, λ*, D_ij*, D^T_i*, D^p_i*,
+/// The 18 reduced values the binary table interpolates, from a direct solve (ζ*, η*, λ*, γ_i, D_ij*, D^T_i*, D^p_i*,
 /// D''_j*).
 std::vector<double> direct(const gkt::Mixture& m, int order, const gkt::MixtureReference& reference) {
-  const gkt::MixtureNavierStokes ns(m, order, reference);
-  const auto v = ns.coefficients(order);
-  const auto& hcs = ns.cooling_state();
-  std::vector<double> out{hcs.cooling_rate, v.shear_viscosity, v.thermal_conductivity};
-  out.insert(out.end(), hcs.temperature_ratio.begin(), hcs.temperature_ratio.end());
-  out.insert(out.end(), v.mutual_diffusion.begin(), v.mutual_diffusion.end());
-  out.insert(out.end(), v.thermal_diffusion.begin(), v.thermal_diffusion.end());
-  out.insert(out.end(), v.pressure_diffusion.begin(), v.pressure_diffusion.end());
-  out.insert(out.end(), v.dufour.begin(), v.dufour.end());
-  return out;
+  return gkt::test::table_values(gkt::MixtureNavierStokes(m, order, reference), order);
 }
 
 /// The same values from a binary table's physical set at (x_1, n = 1, T = 1), divided by the reference gas of

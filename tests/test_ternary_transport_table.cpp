@@ -15,6 +15,7 @@
 #include "gkt/transport/mixture/mixture_navier_stokes.hpp"
 #include "gkt/transport/mixture/mixture_transport_table.hpp"
 #include "gkt/transport/mixture/ternary_transport_table.hpp"
+#include "mixture_test_helpers.hpp"
 #include "sanitizer.hpp"
 
 namespace {
@@ -46,15 +47,7 @@ std::vector<double> flat(const gkt::TernaryTransport& t) {
 
 /// The same coefficients from a direct solve at (x_1, x_2).
 std::vector<double> direct(double x1, double x2, int order) {
-  const gkt::MixtureNavierStokes ns(ternary(x1, x2), order);
-  const auto v = ns.coefficients(order);
-  std::vector<double> out{ns.cooling_state().cooling_rate, v.shear_viscosity, v.thermal_conductivity};
-  out.insert(out.end(), ns.cooling_state().temperature_ratio.begin(), ns.cooling_state().temperature_ratio.end());
-  out.insert(out.end(), v.mutual_diffusion.begin(), v.mutual_diffusion.end());
-  out.insert(out.end(), v.thermal_diffusion.begin(), v.thermal_diffusion.end());
-  out.insert(out.end(), v.pressure_diffusion.begin(), v.pressure_diffusion.end());
-  out.insert(out.end(), v.dufour.begin(), v.dufour.end());
-  return out;
+  return gkt::test::table_values(gkt::MixtureNavierStokes(ternary(x1, x2), order), order);
 }
 
 }  // namespace
@@ -82,7 +75,7 @@ TEST(TernaryTransportTable, EqualsDirectSolvesAndTheBinaryOnItsEdge) {
     const std::vector<double> exact = direct(x1, x2, 1), interpolated = flat(t.evaluate_reduced(x1, x2));
     ASSERT_EQ(exact.size(), interpolated.size());
     for (std::size_t c = 0; c < exact.size(); ++c)
-      worst = std::max(worst, std::abs(interpolated[c] - exact[c]) / std::max(1.0, std::abs(exact[c])));
+      worst = std::max(worst, gkt::test::relative(interpolated[c], exact[c]));
     const double n = 1.7, temperature = 0.6, x3 = 1 - x1 - x2;
     const double mbar = x1 * kMass[0] + x2 * kMass[1] + x3 * kMass[2];
     const double sbar = x1 * kDiameter[0] + x2 * kDiameter[1] + x3 * kDiameter[2];
@@ -187,7 +180,7 @@ TEST(TernaryTransportTable, DenseEqualsDirectSolves) {
                         {reduced.pressure, reduced.bulk_viscosity, reduced.cooling_rate_first_order});
     ASSERT_EQ(exact.size(), interpolated.size());
     for (std::size_t c = 0; c < exact.size(); ++c)
-      worst = std::max(worst, std::abs(interpolated[c] - exact[c]) / std::max(1.0, std::abs(exact[c])));
+      worst = std::max(worst, gkt::test::relative(interpolated[c], exact[c]));
     // Physical: n from φ = n v_d Σ x_i σ_i^d.
     const double x3 = 1 - x1 - x2, temperature = 0.8;
     double volume = 0;
