@@ -143,10 +143,12 @@ struct OrderValue {
   bool infinite = false;  ///< +∞ at this order and the next two (estimate: value and error 0)
 };
 
-/// Returns the inexact value v_N with its error from v_{N+1}, v_{N+2} (estimate_truncation of the
-/// nearest rationals). +∞ at all three orders is an exact +∞ (critical_length of a gas that never
-/// clusters: conventions.md); any other non-finite value leaves it undefined (printed nan, error inf).
-inline OrderValue estimate_from_doubles(double v_n, double v_n1, double v_n2) {
+/// Returns the inexact value v_N with the error `estimate` gives from the nearest rationals of v_N, v_{N+1},
+/// v_{N+2}. +∞ at all three orders is an exact +∞ (critical_length of a gas that never clusters:
+/// conventions.md); any other non-finite value leaves it undefined (printed nan, error inf) and `estimate` is not
+/// called.
+template <class Estimate>
+OrderValue order_value_from_doubles(double v_n, double v_n1, double v_n2, Estimate&& estimate) {
   OrderValue v{{Rational(0), Rational(0), false}, true, false};
   if (std::isinf(v_n) && v_n > 0 && v_n1 == v_n && v_n2 == v_n) {
     v.estimate = {Rational(0), Rational(0), true};
@@ -155,9 +157,16 @@ inline OrderValue estimate_from_doubles(double v_n, double v_n1, double v_n2) {
   }
   v.defined = std::isfinite(v_n) && std::isfinite(v_n1) && std::isfinite(v_n2);
   if (v.defined)
-    v.estimate =
-        estimate_truncation(Rational::from_double(v_n), Rational::from_double(v_n1), Rational::from_double(v_n2));
+    v.estimate = estimate(Rational::from_double(v_n), Rational::from_double(v_n1), Rational::from_double(v_n2));
   return v;
+}
+
+/// Returns the inexact value v_N with its error from v_{N+1}, v_{N+2} (estimate_truncation, (6.1)), as
+/// order_value_from_doubles does.
+inline OrderValue estimate_from_doubles(double v_n, double v_n1, double v_n2) {
+  return order_value_from_doubles(v_n, v_n1, v_n2, [](const Rational& a, const Rational& b, const Rational& c) {
+    return estimate_truncation(a, b, c);
+  });
 }
 
 /// Returns estimate_from_doubles(v_n, v_n1, v_n2) with the turning-point check of theory.md (6.3): where the
@@ -166,14 +175,12 @@ inline OrderValue estimate_from_doubles(double v_n, double v_n1, double v_n2) {
 /// estimates its error here.
 template <class Next>
 OrderValue estimate_from_doubles_confirmed(double v_n, double v_n1, double v_n2, Next&& next) {
-  OrderValue v = estimate_from_doubles(v_n, v_n1, v_n2);
-  if (!v.defined || v.infinite) return v;
-  v.estimate = estimate_truncation_checked(
-      Rational::from_double(v_n), Rational::from_double(v_n1), Rational::from_double(v_n2), [&] {
-        const double v_n3 = next();
-        return std::isfinite(v_n3) ? std::optional<Rational>(Rational::from_double(v_n3)) : std::nullopt;
-      });
-  return v;
+  return order_value_from_doubles(v_n, v_n1, v_n2, [&](const Rational& a, const Rational& b, const Rational& c) {
+    return estimate_truncation_checked(a, b, c, [&] {
+      const double v_n3 = next();
+      return std::isfinite(v_n3) ? std::optional<Rational>(Rational::from_double(v_n3)) : std::nullopt;
+    });
+  });
 }
 
 /// Applies an OrderRequest: the fixed order, or the smallest order whose estimate converges
