@@ -850,8 +850,9 @@ TEST(CliRoughEvolve, RelaxesToTheTableAndRefusesBadInput) {
            {"rotational_temperature=0", "rotational_temperature: must be a number > 0"},
            {"translational_temperature=-1", "translational_temperature: must be a number > 0"},
            {"order=4", "order: must be an integer in [1, 3], got 4"},
-           {"order=2 --set 'hcs=\"maxwellian\"'", "order: the trajectory at order 2 needs hcs = \"linear\""},
-           {"'hcs=\"nonlinear\"'", "hcs: must be one of"},
+           {"order=2 --set 'hcs=\"maxwellian\"'", "order: must be 1 with hcs = \"maxwellian\""},
+           {"'hcs=\"cubic\"'", "hcs: must be one of"},
+           {"dimension=2 --set 'hcs=\"nonlinear-oriented\"'", "hcs: \"nonlinear-oriented\" needs dimension = 3"},
            {"alpha=0.5 --set beta=0", "hcs: the linear scheme has no root at dimension = 3, alpha = 0.5, beta = 0"}}) {
     const CliRun bad = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;

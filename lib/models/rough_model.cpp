@@ -241,16 +241,17 @@ class RoughModel final : public TransportModel {
   }
   [[nodiscard]] std::vector<ParameterSpec> evolution_parameters() const override {
     auto specs = parameters();
-    // The trajectory integrates the linear scheme's balances at Sonine order `order` (theory.md §19.13, (19.25b)): no
-    // nonlinear scheme there; for spheres the linear scheme may carry the orientation terms b_pq P S_p S_q
-    // ("linear-oriented", §19.14).
+    // The trajectory integrates the linear or nonlinear scheme's balances at Sonine order `order` (theory.md §19.13,
+    // (19.25b), §19.24); for spheres either may carry the orientation terms b_pq P S_p S_q ("linear-oriented",
+    // "nonlinear-oriented", §19.14).
     for (auto& spec : specs)
       if (spec.name == "hcs") {
-        spec.choices = {"linear", "maxwellian", "linear-or-maxwellian", "linear-oriented"};
+        spec.choices = {"linear",          "maxwellian", "linear-or-maxwellian",
+                        "linear-oriented", "nonlinear",  "nonlinear-oriented"};
         spec.description +=
             "; gkt evolve: linear-oriented = the linear scheme with the orientation term b00 "
             "((c.w)^2 - c^2 w^2/3), spheres only, columns b00 and orientation_correlation (with order N > 1 "
-            "every b_pq, p + q <= N - 1)";
+            "every b_pq, p + q <= N - 1); nonlinear-oriented the same with every product of cumulants kept";
       }
     specs = rough_evolution_parameters(specs, {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
     for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));

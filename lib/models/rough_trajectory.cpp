@@ -1,8 +1,9 @@
 // What `gkt evolve` asks the "rough" model for: the free cooling of rough spheres or disks from
 // Maxwellians at T_t(0), T_r(0), in the Maxwellian or the linear first-Sonine scheme, the latter for spheres
 // optionally with the orientation term b00 P (hcs = "linear-oriented"), or the linear scheme at Sonine order 2–3
-// with every a_pq (and b_pq) (`order`, (19.25b)) (rough_cooling_evolution.hpp; docs/theory.md §19.13,
-// conventions.md), and of the Walton gas in the Maxwellian approximation.
+// or the nonlinear one at orders 1–3 (hcs = "nonlinear", "nonlinear-oriented") with every a_pq (and b_pq) (`order`,
+// (19.25b), §19.24) (rough_cooling_evolution.hpp; docs/theory.md §19.13, conventions.md), and of the Walton gas in the
+// Maxwellian approximation.
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -30,30 +31,34 @@ std::string indexed_column(char letter, const std::array<int, 2>& pq) {
   return std::string(1, letter) + static_cast<char>('0' + pq[0]) + static_cast<char>('0' + pq[1]);
 }
 
-/// Returns the trajectory of the linear scheme at Sonine order N > 1 (theory.md §19.13, (19.25b)–(19.25c)): hcs =
-/// "linear" the isotropic ansatz (a_pq), "linear-oriented" (spheres) with the b_pq; columns as the order-1 ones, then
-/// the higher a_pq (by p + q, then q), then b00 … and orientation_correlation (oriented); spin cumulants nan at β = −1.
+/// Returns the trajectory of the Sonine scheme at order N (theory.md §19.13, (19.25b)–(19.25c), §19.24): hcs =
+/// "linear" (N > 1) or "nonlinear" the isotropic ansatz (a_pq), "linear-oriented" (N > 1) or "nonlinear-oriented"
+/// (spheres) with the b_pq; columns as the order-1 ones, then the higher a_pq (by p + q, then q), then b00 … and
+/// orientation_correlation (oriented); spin cumulants nan at β = −1.
 Trajectory rough_sonine_trajectory(const SchemaPoint& p, int d, const Rational& alpha, const Rational& beta,
                                    const Rational& kappa, const std::string& scheme, int order,
                                    const RoughCumulants& initial, const std::vector<double>& times) {
-  if (scheme != "linear" && scheme != "linear-oriented")
-    throw std::invalid_argument("order: the trajectory at order " + std::to_string(order) +
-                                " needs hcs = \"linear\" or \"linear-oriented\" (the Sonine cumulants), got hcs = \"" +
-                                scheme + "\"");
-  const bool oriented = scheme == "linear-oriented";
+  const bool nonlinear = scheme == "nonlinear" || scheme == "nonlinear-oriented";
+  if (!nonlinear && scheme != "linear" && scheme != "linear-oriented")
+    throw std::invalid_argument("order: must be 1 with hcs = \"" + scheme + "\" (orders 1-3 need hcs = \"linear\", " +
+                                "\"linear-oriented\", \"nonlinear\" or \"nonlinear-oriented\"), got " +
+                                std::to_string(order));
+  const bool oriented = scheme == "linear-oriented" || scheme == "nonlinear-oriented";
   if (oriented && d != 3)
-    throw std::invalid_argument("hcs: \"linear-oriented\" needs dimension = 3 (disks have c.w = 0)");
+    throw std::invalid_argument("hcs: \"" + scheme + "\" needs dimension = 3 (disks have c.w = 0)");
   if (oriented && beta == Rational(-1))
-    throw std::invalid_argument("hcs: \"linear-oriented\" needs beta > -1 (at -1 the spin decouples)");
+    throw std::invalid_argument("hcs: \"" + scheme + "\" needs beta > -1 (at -1 the spin decouples)");
   check_rough_initial_cumulants(d, initial);
   const RoughSonineAnsatz ansatz = oriented ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic;
-  // A steady state to relax to: the linear HCS of this order (theory.md §19.14).
-  if (!rough_sonine_cooling_state(d, alpha, beta, kappa, order, RoughSonineScheme::linear, ansatz).solved)
+  const RoughSonineScheme sonine_scheme = nonlinear ? RoughSonineScheme::nonlinear : RoughSonineScheme::linear;
+  // A steady state to relax to: the HCS of this order and scheme (theory.md §19.14).
+  if (!rough_sonine_cooling_state(d, alpha, beta, kappa, order, sonine_scheme, ansatz).solved)
     throw std::invalid_argument("hcs: the " + std::string(oriented ? "oriented " : "") +
-                                "linear scheme has no root at order " + std::to_string(order) +
-                                ", dimension = " + std::to_string(d) + ", alpha = " + alpha.to_decimal_string() +
-                                ", beta = " + beta.to_decimal_string() + " (theory.md §19.14); use a lower order");
-  const RoughSonineCoolingRates rates(d, alpha, beta, kappa, order, ansatz);
+                                (nonlinear ? "nonlinear" : "linear") + " scheme has no root at order " +
+                                std::to_string(order) + ", dimension = " + std::to_string(d) +
+                                ", alpha = " + alpha.to_decimal_string() + ", beta = " + beta.to_decimal_string() +
+                                " (theory.md §19.14); use a lower order");
+  const RoughSonineCoolingRates rates(d, alpha, beta, kappa, order, ansatz, sonine_scheme);
   const RoughEvolutionResult result = evolve_rough_sonine_cooling(
       rates, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(), times,
       p.number("rtol").to_double(), p.number("atol").to_double(), initial);
@@ -117,11 +122,11 @@ std::vector<ParameterSpec> rough_initial_cumulant_parameters() {
   };
   // Var c² >= 0: a20 >= -2/(d+2) (-1/2 for disks); Var w² >= 0: a02 >= -2/(d_r+2) (-2/3 for disks).
   return {cumulant("a20", Rational(-1, 2),
-                   "initial a20(0), hcs = \"linear\" only: >= -2/(d+2) (Var c^2 >= 0, theory.md (19.24a))"),
+                   "initial a20(0), not with hcs = \"maxwellian\": >= -2/(d+2) (Var c^2 >= 0, theory.md (19.24a))"),
           cumulant("a02", Rational(-2, 3),
-                   "initial a02(0), hcs = \"linear\" only: >= -2/(d_r+2) (Var w^2 >= 0, theory.md (19.24a))"),
+                   "initial a02(0), not with hcs = \"maxwellian\": >= -2/(d_r+2) (Var w^2 >= 0, theory.md (19.24a))"),
           cumulant("a11", -ParameterSpec::unbounded(),
-                   "initial a11(0), hcs = \"linear\" only: d d_r a11^2 <= (2 + (d+2) a20)(2 + (d_r+2) a02) "
+                   "initial a11(0), not with hcs = \"maxwellian\": d d_r a11^2 <= (2 + (d+2) a20)(2 + (d_r+2) a02) "
                    "(Cauchy-Schwarz, theory.md (19.24a))")};
 }
 
@@ -136,8 +141,9 @@ ParameterSpec rough_evolution_order_parameter() {
           true,
           true,
           Rational(1),
-          "Sonine order N of the trajectory, hcs = \"linear\" or \"linear-oriented\": the cumulants a_pq with p + q "
-          "<= N + 1 (and, linear-oriented, b_pq with p + q <= N - 1) of the linear scheme (theory.md (19.25b))",
+          "Sonine order N of the trajectory, hcs = \"linear\", \"linear-oriented\", \"nonlinear\" or "
+          "\"nonlinear-oriented\": the cumulants a_pq with p + q <= N + 1 (and, oriented, b_pq with p + q <= N - 1) of "
+          "the linear or nonlinear scheme (theory.md (19.25b), §19.24); 1 with the other hcs",
           {}};
 }
 
@@ -148,7 +154,8 @@ Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const Traj
   const std::string scheme = p.choice("hcs");
   const RoughCumulants initial{p.number("a20").to_double(), p.number("a02").to_double(), p.number("a11").to_double()};
   const int order = static_cast<int>(p.number("order").to_double());
-  if (order > 1) return rough_sonine_trajectory(p, d, alpha, beta, kappa, scheme, order, initial, request.times);
+  if (order > 1 || scheme == "nonlinear" || scheme == "nonlinear-oriented")
+    return rough_sonine_trajectory(p, d, alpha, beta, kappa, scheme, order, initial, request.times);
   if (scheme == "linear-oriented") {
     // The linear scheme with the orientation term b00 P (theory.md §19.13, (19.26a) at order 1): spheres, and a
     // steady state to relax to.

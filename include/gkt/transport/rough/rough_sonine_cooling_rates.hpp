@@ -1,10 +1,10 @@
-// The collisional rates of the rough gas's moments at Sonine order N in the linear scheme (docs/theory.md §19.13,
-// (19.25b)–(19.25c); the balances of §19.14): for the distribution
+// The collisional rates of the rough gas's moments at Sonine order N in the linear or the nonlinear scheme
+// (docs/theory.md §19.13, (19.25b)–(19.25c), §19.24; the balances of §19.14): for the distribution
 //   φ = φ_M(c) φ_M(ŵ) [1 + Σ_{2 ≤ p+q ≤ N+1} a_pq S_p(x) S_q(y) (+ Σ_{p+q ≤ N−1} b_pq P S_p^(5/2)(x) S_q^(5/2)(y))],
 // the cooling rates z_t, z_r and the steady balances G_t = (k + l) z_t⟨ψ_t⟩ + R[ψ_t] of the tests ψ_t = x^k y^l
-// (and P x^k y^l), products of the unknowns dropped, as functions of τ = θ/κ and the unknowns. The steady solution
-// is rough_sonine_cooling_state(d, α, β, κ, N, linear, ansatz); the time evolution (rough_cooling_evolution.hpp)
-// integrates the same balances away from it.
+// (and P x^k y^l), products of the unknowns dropped (linear) or all kept (nonlinear: R quadratic, z⟨ψ⟩ cubic,
+// (19.27)), as functions of τ = θ/κ and the unknowns. The steady solution is rough_sonine_cooling_state(d, α, β, κ,
+// N, scheme, ansatz); the time evolution (rough_cooling_evolution.hpp) integrates the same balances away from it.
 #pragma once
 
 #include <array>
@@ -21,18 +21,20 @@ namespace gkt {
 struct RoughSonineRates {
   double translational_rate = 0;  ///< z_t = ζ_t/(nσ^{d−1}v_t ν) = −(2/d) R[x], linear in the unknowns
   double rotational_rate = 0;     ///< z_r = ζ_r/(nσ^{d−1}v_t ν) = −(2/d_r) R[y] (0 at β = −1: no torque)
-  /// G_t = (k + l) z_t⟨ψ_t⟩ + R[ψ_t] of each unknown's test, in the order of the unknowns (products dropped).
+  /// G_t = (k + l) z_t⟨ψ_t⟩ + R[ψ_t] of each unknown's test, in the order of the unknowns (linear scheme: products
+  /// dropped).
   std::vector<double> residual;
 };
 
-/// The rates of rough spheres or disks at Sonine order N, linear scheme, isotropic or (3D, β > −1) oriented ansatz.
+/// The rates of rough spheres or disks at Sonine order N, linear or nonlinear scheme, isotropic or (3D, β > −1)
+/// oriented ansatz.
 class RoughSonineCoolingRates {
  public:
-  /// Builds the exact tables (those of the linear Sonine HCS solver of the same order and ansatz, plus the collision
-  /// averages ⟨x1^i⟩ of the collision count). Throws std::invalid_argument naming the field for d ∉ {2, 3},
-  /// α ∉ (0, 1], β ∉ [−1, 1], κ ∉ (0, 1] or order < 1.
+  /// Builds the exact tables (those of the Sonine HCS solver of the same order, scheme and ansatz, plus the collision
+  /// averages ⟨x1^i⟩ — nonlinear: ⟨x1^i x2^j⟩ — of the collision count). Throws std::invalid_argument naming the field
+  /// for d ∉ {2, 3}, α ∉ (0, 1], β ∉ [−1, 1], κ ∉ (0, 1] or order < 1.
   RoughSonineCoolingRates(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa, int order,
-                          RoughSonineAnsatz ansatz);
+                          RoughSonineAnsatz ansatz, RoughSonineScheme scheme = RoughSonineScheme::linear);
   ~RoughSonineCoolingRates();
   /// Takes the tables (copying is deleted).
   RoughSonineCoolingRates(RoughSonineCoolingRates&&) noexcept;
@@ -59,7 +61,8 @@ class RoughSonineCoolingRates {
   /// (k z_t + l z_r)⟨ψ⟩ from the scaling alone.
   [[nodiscard]] const std::vector<int>& spin_degrees() const;
   /// Returns the collision frequency over the Maxwellian one at the same T_t, 1 + 2 Σ_p a_p0 ⟨S_p(x1)⟩ over
-  /// collisions (linear in the a_p0; the spin and orientation terms average out of |c12·σ̂|).
+  /// collisions, nonlinear scheme + Σ_pq a_p0 a_q0 ⟨S_p(x1) S_q(x2)⟩ (the spin and orientation terms average out of
+  /// |c12·σ̂|; theory.md (19.25c), (19.110)).
   [[nodiscard]] double collision_frequency_factor(std::span<const double> unknowns) const;
   /// Returns C − 1/3 per unit b_pq, in the order of orientation_indices() (theory.md (19.28)).
   [[nodiscard]] const std::vector<double>& correlation_weights() const;
@@ -71,6 +74,8 @@ class RoughSonineCoolingRates {
   [[nodiscard]] double kappa() const;
   /// Returns the Sonine order N.
   [[nodiscard]] int order() const;
+  /// Returns the scheme (products of unknowns dropped or kept).
+  [[nodiscard]] RoughSonineScheme scheme() const;
 
  private:
   struct Impl;
