@@ -1049,6 +1049,33 @@ TEST(CliRoughEvolve, SonineOrderTwoRelaxesToTheTable) {
   }
 }
 
+// The nonlinear scheme in `gkt evolve` (theory.md §19.24): the last row is `gkt table`'s nonlinear HCS (order 1,
+// isotropic), not the linear one's, and the columns are those of the linear scheme.
+TEST(CliRoughEvolve, NonlinearSchemeRelaxesToTheNonlinearTable) {
+  const CliRun evolve = run_gkt("evolve " + scene_path("rough_evolve.toml") + " --set 'hcs=\"nonlinear\"'");
+  const std::string keys =
+      " --set 'alpha=[0.9]' --set order=1 --set 'coefficients=[\"rotational_temperature_ratio\", "
+      "\"cooling_rate\", \"a20\", \"a02\", \"a11\"]'";
+  const CliRun table = run_gkt("table " + scene_path("rough_hcs.toml") + keys + " --set 'hcs=\"nonlinear\"'");
+  const CliRun linear = run_gkt("table " + scene_path("rough_hcs.toml") + keys + " --set 'hcs=\"linear\"'");
+  ASSERT_EQ(evolve.status, 0) << evolve.err;
+  ASSERT_EQ(table.status, 0) << table.err;
+  ASSERT_EQ(linear.status, 0) << linear.err;
+  const auto et = parse_csv(evolve.out), tt = parse_csv(table.out), lt = parse_csv(linear.out);
+  ASSERT_EQ(et[0],
+            (std::vector<std::string>{"time", "collisions", "translational_temperature", "rotational_temperature",
+                                      "rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11"}));
+  for (const std::string name : {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11"}) {
+    const auto e = static_cast<std::size_t>(std::find(et[0].begin(), et[0].end(), name) - et[0].begin());
+    const auto t = static_cast<std::size_t>(std::find(tt[0].begin(), tt[0].end(), name) - tt[0].begin());
+    ASSERT_LT(t, tt[0].size()) << name;
+    EXPECT_NEAR(std::stod(et.back()[e]), std::stod(tt[1][t]), 1e-8) << name;
+    if (name == "rotational_temperature_ratio") {
+      EXPECT_GT(std::abs(std::stod(et.back()[e]) - std::stod(lt[1][t])), 1e-5);  // not the linear HCS
+    }
+  }
+}
+
 // `gkt stability` about the Sonine HCS (reference_state = "hcs", theory.md (19.33)): values with error columns (the
 // Sonine and cumulant-degree steps), moved from the Maxwellian first approximation (disks, (0.9, 0.5)).
 TEST(CliRoughStability, AboutTheSonineHcs) {

@@ -168,8 +168,9 @@ std::array<std::vector<double>, 2> at_collisions(const RoughEvolutionResult& run
 // RoughSonineEvolution.EarlySpinCumulantAgainstDsmc (four runs of 20000 particles, snapshots every 0.1 collisions per
 // particle): the oriented nonlinear and linear trajectories of orders 1 and 2 against a02 and θ at 0.5 … 3 collisions.
 // theory.md §19.24 records the χ² of each; the test asserts what holds there: the nonlinear order 2 within 4σ
-// everywhere, θ of every trajectory within 4σ, and at order 1 the nonlinear scheme's a02 closer to the DSMC than the
-// linear one's (χ² smaller).
+// everywhere, θ of every trajectory within 4σ, the order resolved (χ² of a02 at N = 1 over 4× that at N = 2, both
+// schemes) and the scheme not: at the same order the nonlinear and linear a02 differ by less than 0.1σ of the DSMC at
+// every point (measured: 3e-4 against σ = 0.003–0.026), so this DSMC cannot tell which scheme is closer.
 TEST(RoughNonlinearEvolution, EarlySpinCumulantAgainstDsmc) {
   const Rational alpha(9, 10), beta(1, 2), kappa(2, 5);
   const double theta0 = 0.01;
@@ -214,6 +215,9 @@ TEST(RoughNonlinearEvolution, EarlySpinCumulantAgainstDsmc) {
       for (int n = 0; n < 2; ++n) {
         EXPECT_NEAR(traj[s][n][1][b], mt, 4 * et) << collisions[b] << " scheme " << s << " N=" << n + 1;
         chi2_a[s][n] += std::pow((traj[s][n][0][b] - m) / e, 2);
+        if (s == 1) {
+          EXPECT_LT(std::abs(traj[1][n][0][b] - traj[0][n][0][b]), 0.1 * e) << collisions[b];
+        }
         chi2_t[s][n] += std::pow((traj[s][n][1][b] - mt) / et, 2);
       }
   }
@@ -221,7 +225,7 @@ TEST(RoughNonlinearEvolution, EarlySpinCumulantAgainstDsmc) {
               chi2_a[0][1], chi2_a[1][0], chi2_a[1][1]);
   std::printf("chi2 theta (6 points): linear N=1 %.2f N=2 %.2f, nonlinear N=1 %.2f N=2 %.2f\n", chi2_t[0][0],
               chi2_t[0][1], chi2_t[1][0], chi2_t[1][1]);
-  EXPECT_LT(chi2_a[1][0], chi2_a[0][0]);
+  for (int s = 0; s < 2; ++s) EXPECT_GT(chi2_a[s][0], 4 * chi2_a[s][1]) << s;
 }
 
 }  // namespace
