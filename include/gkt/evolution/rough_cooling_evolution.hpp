@@ -1,7 +1,7 @@
 // Time evolution of a freely cooling homogeneous gas of rough spheres or disks: the translational
 // and rotational temperatures T_t(τ), T_r(τ) and, in the linear first-Sonine scheme, the cumulants
 // a20, a02, a11 (and for spheres, optionally, the orientation coefficient b00), or at Sonine order N every a_pq
-// (and b_pq) of the linear scheme (docs/theory.md §19.13), integrated with
+// (and b_pq) of the linear or nonlinear scheme (docs/theory.md §19.13, §19.24), integrated with
 // SUNDIALS CVODE (BDF, dense, difference- quotient Jacobian). From any θ(0) = T_r(0)/T_t(0) the ratio relaxes to the
 // HCS value of rough_homogeneous_cooling_state (the same balances) and T_t then follows Haff's law.
 //
@@ -77,12 +77,14 @@ RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rate
                                                    double rotational0, const std::vector<double>& times, double rtol,
                                                    double atol, const RoughCumulants& initial_cumulants = {});
 
-/// Returns the trajectory of the linear scheme at the Sonine order N of `rates` (theory.md §19.13, (19.25b)–(19.25c)):
+/// Returns the trajectory of the scheme of `rates` (linear, or nonlinear with every product of the unknowns kept,
+/// theory.md (19.110)–(19.112)) at their Sonine order N (theory.md §19.13, (19.25b)–(19.25c), §19.24):
 /// every a_pq (p + q ≤ N + 1) and, with the oriented rates (3D), every b_pq (p + q ≤ N − 1), from a20, a02, a11 =
 /// `initial_cumulants` and the others 0 (realizable, check_rough_initial_cumulants; at β = −1 a02 = a11 = 0: the spin
-/// decouples). Its stationary point is rough_sonine_cooling_state(d, α, β, κ, N, linear, the rates' ansatz); at
-/// N = 1 it is the trajectory of evolve_rough_cooling (isotropic) or evolve_rough_oriented_cooling (oriented) from
-/// other engine tables. Otherwise as evolve_rough_cooling with linear = true.
+/// decouples). Its stationary point is rough_sonine_cooling_state(d, α, β, κ, N, the rates' scheme and ansatz); in
+/// the linear scheme at N = 1 it is the trajectory of evolve_rough_cooling (isotropic) or
+/// evolve_rough_oriented_cooling (oriented) from other engine tables. Otherwise as evolve_rough_cooling with linear =
+/// true.
 RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& rates, double translational0,
                                                  double rotational0, const std::vector<double>& times, double rtol,
                                                  double atol, const RoughCumulants& initial_cumulants = {});
