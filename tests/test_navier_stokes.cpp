@@ -3,10 +3,14 @@
 // convergence in Sonine order, and the plateau sum of the asymptotic series (theory.md (6.2)).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
+#include <span>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gkt/transport/common/sonine_solution.hpp"
 #include "gkt/transport/monodisperse/hard_spheres.hpp"
@@ -289,6 +293,48 @@ TEST(SonineTruncation, TurningPointIsNotReadAsAnAlternation) {
 // rough η* at 3D (α, β) = (0.9, 0.5), orders 7–9 (−3.16e-7, −4.70e-7: |r| = 1.49, (6.1) flags it with an error
 // 7.86e-7 below a tolerance of 1e-6), a turn whose tail grows, a turn without v_{N+3}; none where it
 // converges. estimate_truncation_checked reads v_{N+3} only at a sign change.
+// The window error of theory.md (19.100)–(19.101) on the rough ζ_U of 3D (α, β) = (0.9, 0.5), κ = 2/5, orders 3–10
+// (gkt_model_sequences, %.17g): (6.3) at order 3 reads the changes −9.8e-6, −2.4e-6 and claims 1.6e-5, but orders
+// 7–10 move by 3e-5 … 9e-5 more; the window widens the error to cover every later order and says why. On a geometric
+// sequence it stays within 1.6 times the true remainder, and with no order beyond N + 2 it is (6.3).
+TEST(SonineTruncation, WindowCoversLaterOrdersAndSaysWhy) {
+  auto r = [](double x) { return Rational::from_double(x); };
+  const std::vector<double> zeta{-0.045197284423644575, -0.045207096401211198, -0.045209499028991053,
+                                 -0.045206287114264443, -0.045173950210530375, -0.045127350614428997,
+                                 -0.045126714545294669, -0.045118999861036575};
+  std::vector<Rational> v;
+  for (const double x : zeta) v.push_back(r(x));
+  const auto base = gkt::estimate_truncation_confirmed(v[0], v[1], v[2], v[3]);
+  const auto window = gkt::estimate_truncation_windowed(v);
+  EXPECT_LT(base.error.to_double(), 2e-5);  // the old claim
+  double spread = 0;
+  for (const double x : zeta) spread = std::max(spread, std::abs(x - zeta[0]));
+  EXPECT_GT(spread, 4 * base.error.to_double());  // (6.3) refuted by the later orders
+  EXPECT_GE(window.error.to_double(), spread);
+  EXPECT_LT(window.error.to_double(), 1e-4);  // spread 7.8e-5 plus the small tail of order 8
+  EXPECT_TRUE(window.converging);
+  EXPECT_EQ(window.divergence, gkt::Divergence::wandering);
+  const std::string why = gkt::describe_divergence(window.divergence, 3);
+  EXPECT_NE(why.find("wanders"), std::string::npos) << why;
+  EXPECT_NE(why.find("orders 3–6"), std::string::npos) << why;
+  // Geometric, ratio 1/2 (limit 2): the remainder of v_N is 2^{-N}.
+  std::vector<Rational> geometric;
+  for (int n = 0; n <= 8; ++n) geometric.push_back(Rational(2) - Rational(1, 1 << n));
+  for (std::size_t n = 0; n + 3 < geometric.size(); ++n) {
+    const auto e = gkt::estimate_truncation_windowed(std::span<const Rational>(geometric).subspan(n));
+    const double actual = std::ldexp(1.0, -static_cast<int>(n));
+    EXPECT_TRUE(e.converging);
+    EXPECT_EQ(e.divergence, gkt::Divergence::none);
+    EXPECT_GE(e.error.to_double(), actual);
+    EXPECT_LE(e.error.to_double(), 1.6 * actual);
+  }
+  const std::vector<Rational> three(geometric.begin(), geometric.begin() + 3);
+  EXPECT_EQ(gkt::estimate_truncation_windowed(three).error,
+            gkt::estimate_truncation(three[0], three[1], three[2]).error);
+  EXPECT_THROW((void)gkt::estimate_truncation_windowed(std::span<const Rational>(three).first(2)),
+               std::invalid_argument);
+}
+
 TEST(SonineTruncation, NotConvergingSaysWhy) {
   auto r = [](double x) { return Rational::from_double(x); };
   const double v7 = 1.1114193904636045, v8 = 1.11141907457222;

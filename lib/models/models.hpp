@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -180,6 +181,20 @@ OrderValue estimate_from_doubles_confirmed(double v_n, double v_n1, double v_n2,
       const double v_n3 = next();
       return std::isfinite(v_n3) ? std::optional<Rational>(Rational::from_double(v_n3)) : std::nullopt;
     });
+  });
+}
+
+/// Returns the inexact v_N with the window error of theory.md (19.100)–(19.101) (estimate_truncation_windowed) from
+/// v = (v_N, …, v_H), the values of every order a scan computed; the window ends before the first non-finite value
+/// past v_{N+2}. Defined as order_value_from_doubles(v_N, v_{N+1}, v_{N+2}) is.
+inline OrderValue estimate_from_doubles_windowed(std::span<const double> v) {
+  return order_value_from_doubles(v[0], v[1], v[2], [&](const Rational&, const Rational&, const Rational&) {
+    std::vector<Rational> window;
+    for (const double x : v) {
+      if (!std::isfinite(x)) break;
+      window.push_back(Rational::from_double(x));
+    }
+    return estimate_truncation_windowed(window);
   });
 }
 

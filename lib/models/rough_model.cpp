@@ -423,26 +423,23 @@ class RoughModel final : public TransportModel {
         out.push_back(*chosen);
         continue;
       }
-      if (!first && is_rough_sonine_column(name)) {  // theory.md §19.16, error (6.3) from orders N + 1, N + 2 (N + 3)
-        // Tables to N + 2 for a fixed order; a tolerance scan starts at 3 and then takes the cap + 2 at once.
-        const int tables = order.tolerance ? kMaxRoughOrder + 2 : order.order + 2;
+      // About the Maxwellian HCS (theory.md §19.16; the stability values (19.33) from those coefficients, §19.15).
+      // A fixed order: error (6.3) from orders N + 1, N + 2 (N + 3), tables to N + 2. A tolerance (and the row pass
+      // at the order it chose): the tables to the cap + 2 at once and the window error (19.100)–(19.101) over every
+      // order to the cap + 2, since these sequences may settle and then wander (theory.md §19.23).
+      if (!first && (is_rough_sonine_column(name) || is_critical(name))) {
+        const bool windowed = order.tolerance || order.row_tolerance;
+        const int tables = windowed ? kMaxRoughOrder + 2 : order.order + 2;
         out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
           const auto at = [&](int m) {
             if (m > kMaxRoughOrder + 2) return std::numeric_limits<double>::quiet_NaN();  // past the tables' cap
-            return rough_sonine_column(transport_values(d, alpha, beta, kappa, m, tables), name);
+            return is_critical(name) ? reference_column(d, alpha, beta, kappa, true, name, 1, m, tables)
+                                     : rough_sonine_column(transport_values(d, alpha, beta, kappa, m, tables), name);
           };
-          return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
-        }));
-        continue;
-      }
-      if (!first && is_critical(name)) {  // about the Maxwellian HCS at order N (theory.md §19.15, (19.33))
-        const int tables = order.tolerance ? kMaxRoughOrder + 2 : order.order + 2;
-        out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
-          const auto at = [&](int m) {
-            if (m > kMaxRoughOrder + 2) return std::numeric_limits<double>::quiet_NaN();  // past the tables' cap
-            return reference_column(d, alpha, beta, kappa, true, name, 1, m, tables);
-          };
-          return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
+          if (!windowed) return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
+          std::vector<double> window;
+          for (int m = n; m <= kMaxRoughOrder + 2; ++m) window.push_back(at(m));
+          return estimate_from_doubles_windowed(window);
         }));
         continue;
       }

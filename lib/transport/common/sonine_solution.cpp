@@ -1,5 +1,6 @@
 #include "gkt/transport/common/sonine_solution.hpp"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <stdexcept>
@@ -66,6 +67,10 @@ std::string describe_divergence(Divergence divergence, int order) {
     case Divergence::turn_unconfirmed:  // (6.3) without v_{N+3}
       return "error estimate not confirmed: the changes change sign at order " + n1 + " and no order " + n3 +
              " exists to tell an alternation from a turn";
+    case Divergence::wandering:  // (19.101): a later order refutes (6.3)
+      return "error estimate widened: a later order (up to the scan's cap) differs from v" + n +
+             " by more than the estimate from orders " + n + "–" + n3 +
+             "; the sequence wanders and the error is the window's spread (theory.md §19.23)";
     case Divergence::none:
       break;
   }
@@ -91,6 +96,22 @@ TruncationEstimate estimate_truncation_confirmed(const Rational& v_n, const Rati
   const Rational q = third / second;
   if (q >= Rational(1)) return {v_n, first + second.abs() + third.abs(), false, Divergence::turn_growing};
   return {v_n, Rational(5, 4) * (first + second.abs() / (Rational(1) - q)), true};
+}
+
+TruncationEstimate estimate_truncation_windowed(std::span<const Rational> v) {
+  if (v.size() < 3) throw std::invalid_argument("estimate_truncation_windowed: needs v_N, v_{N+1}, v_{N+2}");
+  const std::optional<Rational> v3 = v.size() > 3 ? std::optional<Rational>(v[3]) : std::nullopt;
+  TruncationEstimate base = estimate_truncation_confirmed(v[0], v[1], v[2], v3);
+  if (v.size() == 3) return base;  // no order beyond those (6.3) reads
+  // theory.md (19.100): every later order computed must agree with v_N within the error; past the last one H the
+  // remainder of v_{H−2} by (6.1) (its magnitude-sum bound where (6.1) flags it).
+  Rational spread(0);
+  for (std::size_t m = 1; m < v.size(); ++m) spread = std::max(spread, (v[m] - v[0]).abs());
+  const std::size_t h = v.size() - 1;
+  const Rational widened = spread + estimate_truncation(v[h - 2], v[h - 1], v[h]).error;
+  if (spread > base.error && base.divergence == Divergence::none) base.divergence = Divergence::wandering;  // (19.101)
+  if (widened > base.error) base.error = widened;
+  return base;
 }
 
 bool alternates_on_plateau(const Rational& v_n, const Rational& v_n1, const Rational& v_n2) {

@@ -24,6 +24,9 @@ enum class Divergence {
   growing,           ///< (6.1): |Δ2| ≥ |Δ1|, the changes do not shrink
   turn_growing,      ///< (6.3): Δ1, Δ2 change sign and Δ3 follows Δ2 without shrinking (q ≥ 1)
   turn_unconfirmed,  ///< (6.3): Δ1, Δ2 change sign and no v_{N+3} exists to confirm an alternation
+  /// (19.101): a later order of the window differs from v_N by more than (6.3) claimed; the error was widened to
+  /// the window's spread (set with `converging` as (6.3) left it: it says why a missed tolerance was missed)
+  wandering,
 };
 
 /// A Sonine-order sequence value with its estimated truncation error.
@@ -31,7 +34,7 @@ struct TruncationEstimate {
   Rational value;                            ///< the value at the requested order N
   Rational error;                            ///< estimated |value − converged value|
   bool converging;                           ///< false if the next two corrections do not shrink
-  Divergence divergence = Divergence::none;  ///< why `converging` is false
+  Divergence divergence = Divergence::none;  ///< why `converging` is false (wandering: why the error was widened)
 };
 
 /// Returns the reason a value at Sonine order `order` is flagged not converging, in words naming the orders
@@ -66,6 +69,14 @@ TruncationEstimate estimate_truncation_checked(const Rational& v_n, const Ration
   if (!changes_sign(v_n, v_n1, v_n2)) return estimate_truncation(v_n, v_n1, v_n2);
   return estimate_truncation_confirmed(v_n, v_n1, v_n2, next());
 }
+
+/// Returns v_N with the window error of docs/theory.md (19.100)–(19.101), from the values v = (v_N, …, v_H) of
+/// every order up to the highest one H a scan computed: (6.3) from v_N … v_{N+3} (estimate_truncation_confirmed,
+/// v_{N+3} where H ≥ N + 3), widened to W + T if that is larger, W = max_{N<M≤H} |v_M − v_N| the window's spread
+/// and T the (6.1) error of v_{H−2} from v_{H−2}, v_{H−1}, v_H (its |Δ1| + |Δ2| where (6.1) flags it). Where W
+/// exceeds the (6.3) error the divergence is Divergence::wandering (`converging` as (6.3) says). With H ≤ N + 2
+/// it is (6.3). Throws std::invalid_argument if v has fewer than three values.
+TruncationEstimate estimate_truncation_windowed(std::span<const Rational> v);
 
 /// Returns true if v_N, v_{N+1}, v_{N+2} alternate as on the plateau of an asymptotic series: the
 /// signed ratio (v_{N+2} − v_{N+1})/(v_{N+1} − v_N) lies in [−2, −1/2] (docs/theory.md §6).
