@@ -82,14 +82,15 @@ TEST(RoughMixtureCoolingState, IdenticalSpeciesAreTheOneComponentGas) {
       const auto state = gkt::rough_mixture_cooling_state(binary(d, a, b, {alpha, alpha, alpha}, {beta, beta, beta}));
       const auto one = gkt::rough_homogeneous_cooling_state(d, alpha, beta, kappa, gkt::RoughHcsScheme::maxwellian);
       for (std::size_t i = 0; i < 2; ++i) {
-        EXPECT_NEAR(state.temperature_ratio[i], 1.0, 1e-10) << "d=" << d;
-        EXPECT_NEAR(state.rotational_ratio[i], one.temperature_ratio, 1e-10 * one.temperature_ratio) << "d=" << d;
+        EXPECT_NEAR(state.temperature_ratio[i], 1.0, 1e-12) << "d=" << d;
+        EXPECT_NEAR(state.rotational_ratio[i], one.temperature_ratio, 1e-12 * one.temperature_ratio) << "d=" << d;
       }
-      EXPECT_NEAR(state.cooling_rate, one.cooling_rate, 1e-10) << "d=" << d;
+      EXPECT_NEAR(state.cooling_rate, one.cooling_rate, 1e-12 * one.cooling_rate) << "d=" << d;
     }
 }
 
-// β = −1 on every pair: the translational rates are the smooth mixture's (16.4), at any temperatures.
+// β = −1 on every pair: the translational rates are the smooth mixture's (16.4), at any temperatures, and the
+// HCS's γ_i, ζ* the smooth mixture's Maxwellian HCS.
 TEST(RoughMixtureCoolingState, SmoothLimitTranslationalRatesAreTheSmoothMixture) {
   for (int d : {2, 3}) {
     const Rational alpha(3, 4);
@@ -112,7 +113,13 @@ TEST(RoughMixtureCoolingState, SmoothLimitTranslationalRatesAreTheSmoothMixture)
     EXPECT_NEAR(r[1], rates[1], 1e-12) << "d=" << d;
     EXPECT_EQ(r[2], 0.0);
     EXPECT_EQ(r[3], 0.0);
-    EXPECT_THROW(gkt::rough_mixture_cooling_state(rough), std::invalid_argument);
+    // The HCS: both spins decoupled (θ_i = +∞), γ_i and ζ* the smooth mixture's Maxwellian HCS (theory.md (19.130)).
+    const auto hcs = gkt::rough_mixture_cooling_state(rough);
+    const auto smooth_hcs = gkt::mixture_cooling_state(smooth, gkt::MixtureHcsScheme::maxwellian);
+    EXPECT_TRUE(std::isinf(hcs.rotational_ratio[0]) && std::isinf(hcs.rotational_ratio[1]));
+    EXPECT_NEAR(hcs.temperature_ratio[0], smooth_hcs.temperature_ratio[0], 1e-10) << "d=" << d;
+    EXPECT_NEAR(hcs.temperature_ratio[1], smooth_hcs.temperature_ratio[1], 1e-10) << "d=" << d;
+    EXPECT_NEAR(hcs.cooling_rate, smooth_hcs.cooling_rate, 1e-10 * smooth_hcs.cooling_rate) << "d=" << d;
   }
 }
 

@@ -19,6 +19,7 @@ using R = Reduction;
 
 const std::vector<std::string> kRough{"rough", "rough-walton"};
 const std::vector<std::string> kMixture{"mixture"};
+const std::vector<std::string> kRoughOnly{"rough"};
 const std::vector<std::string> kViscoelastic{"viscoelastic"};
 const std::vector<std::string> kAggregation{"aggregation"};
 const std::vector<std::string> kSmoothInelastic{"smooth-inelastic"};
@@ -28,6 +29,8 @@ std::vector<ColumnDescription> make_catalogue() {
   return {
       // Rough spheres and disks (theory.md §19): reduced at the translational temperature T_t.
       {"rotational_temperature_ratio", {}, "rough HCS: θ = T_r/T_t (theory.md §19.4)", "—", R::none},
+      {"rotational_temperature_ratio_<i>", kRoughOnly, "rough binary HCS: θ_i = T_r,i/T_t,i (theory.md §19.17)", "—",
+       R::none},
       {"translational_temperature", kRough, "gkt evolve: T_t(τ)/T_ref, T_t = m⟨v²⟩/d (theory.md §19.13)", "T_ref",
        R::other_reference},
       {"rotational_temperature", kRough, "gkt evolve: T_r(τ)/T_ref, T_r = I⟨ω²⟩/d_r (theory.md §19.13)", "T_ref",
