@@ -114,7 +114,8 @@ TEST(RoughMixtureModel, OneDecoupledSpin) {
 }
 
 // Tracer limit: x_2 = 0 is a state (species 2 meets only species 1), and x_2 → 0 approaches it linearly:
-// |v(x_2) − v(0)| / x_2 settles (the ratios at x_2 = 1e-4 and 1e-6 agree to 1 %), for every column, d = 2, 3.
+// |v(x_2) − v(0)| / x_2 settles (the ratios at x_2 = 1e-4 and 1e-6 agree to 1 %), for every column, d = 2, 3; at
+// x_2 = 0 species 1 is the one-gas rough model (theory.md (19.132)).
 TEST(RoughMixtureModel, TracerLimitIsContinuous) {
   auto rough = gkt::make_transport_model("rough");
   for (int d : {2, 3}) {
@@ -131,7 +132,17 @@ TEST(RoughMixtureModel, TracerLimitIsContinuous) {
       const double slope_small = (small[k] - tracer[k]) / 1e-4, slope_smaller = (smaller[k] - tracer[k]) / 1e-6;
       EXPECT_NEAR(slope_smaller, slope_small, 0.01 * std::abs(slope_small) + 1e-5) << kColumns[k] << " d=" << d;
     }
-    EXPECT_NEAR(tracer[0], 1.0, 1e-12);  // T = T_t,1 when species 2 is absent
+    // x_2 = 0: species 1 is the one rough gas (κ = 2/5; ν0 of m̄ = m_1, σ̄ = σ_1): γ_1 = 1, θ_1 and ζ* its own.
+    ParameterPoint one;
+    one.numbers = {{"dimension", Rational(d)},
+                   {"alpha", Rational(4, 5)},
+                   {"beta", Rational(1, 2)},
+                   {"moment_of_inertia", kLight.kappa}};
+    one.choices["hcs"] = "maxwellian";
+    const auto gas = values(*rough, one, {"rotational_temperature_ratio", "cooling_rate"});
+    EXPECT_NEAR(tracer[0], 1.0, 1e-12);
+    EXPECT_NEAR(tracer[2], gas[0], 1e-12 * gas[0]);
+    EXPECT_NEAR(tracer[4], gas[1], 1e-12 * gas[1]);
   }
 }
 
@@ -166,6 +177,12 @@ TEST(RoughMixtureModel, RefusesBadInput) {
   refuses(p, kColumns, "order", two);
   p.choices["hcs"] = "linear";
   refuses(p, kColumns, "hcs");
+  // A tracer heated by a host spin that does not cool (β_11 = −1, x_2 = 0, β_12 > −1): no HCS.
+  p = binary(3, kLight, kHeavy, Rational(9, 10), Rational(1, 2));
+  p.numbers["beta_1_1"] = Rational(-1);
+  p.numbers["fraction_1"] = Rational(1);
+  p.numbers["fraction_2"] = Rational(0);
+  refuses(p, kColumns, "beta");
   ParameterPoint one;
   one.numbers["mass_1"] = Rational(2);
   refuses(one, {"cooling_rate"}, "mass_1");

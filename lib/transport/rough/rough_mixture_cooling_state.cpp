@@ -185,6 +185,13 @@ RoughMixtureCoolingState rough_mixture_cooling_state(const RoughBinaryMixture& m
     kept[2 + k] = x[k].fraction * (1 + mixture.beta[pair_index(k, k)].to_double()) +
                       x[1 - k].fraction * (1 + mixture.beta[pair_index(k, 1 - k)].to_double()) >
                   0;
+  // A decoupled spin that still exchanges energy with a tracer partner (x_j = 0, β_ij > −1) heats it without
+  // cooling itself: T_t,j/T grows without bound, no HCS.
+  for (std::size_t k = 0; k < 2; ++k)
+    if (!kept[2 + k] && x[k].fraction > 0 && mixture.beta[pair_index(k, 1 - k)] > Rational(-1))
+      throw std::invalid_argument("beta: the spin of species " + std::to_string(k + 1) +
+                                  " does not cool (beta = -1 with itself) but heats the tracer species " +
+                                  std::to_string(2 - k) + " (beta_1_2 > -1, fraction 0): no cooling state");
   const PairTables tables = pair_tables(mixture);
   const auto mode_at = [&](double log_ratio) {
     const double rho = std::exp(log_ratio), t = x[0].fraction + x[1].fraction * rho;
