@@ -153,6 +153,25 @@ TEST(RoughMixtureCoolingState, FourRatesAreEqualAtTheHcs) {
   }
 }
 
+// One decoupled spin (β_11 = β_12 = −1, β_22 = 1/2; theory.md (19.130)): θ_1 = +∞ and at the state the three
+// remaining rates equal ζ* whatever T_r,1 (it enters no row), while T_r,1 itself does not change.
+TEST(RoughMixtureCoolingState, OneDecoupledSpinCoolsWithoutIt) {
+  for (int d : {2, 3}) {
+    const Rational a(9, 10), m1(-1);
+    const auto m = binary(d, kLight, kHeavy, {a, a, a}, {m1, m1, Rational(1, 2)});
+    const auto s = gkt::rough_mixture_cooling_state(m);
+    EXPECT_TRUE(std::isinf(s.rotational_ratio[0]));
+    ASSERT_TRUE(std::isfinite(s.rotational_ratio[1]));
+    const double t1 = s.temperature_ratio[0], t2 = s.temperature_ratio[1];
+    for (double tr1 : {0.1, 7.0}) {
+      const auto r = gkt::rough_mixture_cooling_rates(m, {t1, t2, tr1, s.rotational_ratio[1] * t2});
+      for (std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{3}})
+        EXPECT_NEAR(r[k], s.cooling_rate, 1e-10 * s.cooling_rate) << "d=" << d << " k=" << k;
+      EXPECT_EQ(r[2], 0.0);
+    }
+  }
+}
+
 // Santos's "mimicry" of polydisperse disks ([santos2018disks], abstract): with common α, β, κ and
 // masses m_i ∝ 2σ_i + ⟨σ⟩ a binary gas of disks has (nearly) the monodisperse θ = T_r/T_t in both
 // components. Here σ2/σ1 = 2, x_i = 1/2: masses 7/2 and 11/2 keep θ_i within 0.2 % of the
