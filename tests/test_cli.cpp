@@ -665,6 +665,49 @@ TEST(CliRough, SmoothLimitAndBadInput) {
   }
 }
 
+// The rough binary mixture through two [[species]] tables (theory.md §19.17, §19.26; golden files
+// rough_mixture_hcs*.csv; the limits in tests/test_rough_mixture_model.cpp): the CLI's values at the two states of
+// the test-side DSMC (tests/test_rough_mixture_cooling_state.cpp, AgainstDsmc: 600 + 1400 spheres, seed 20261202,
+// its means ± batch errors copied from theory.md §19.17) within that test's tolerances (γ 0.01, θ 4 %: the
+// Maxwellian approximation's own error), and bad input: exit 2, one line naming the key, no output.
+TEST(CliRough, BinaryMixture) {
+  const CliRun run =
+      run_gkt("table " + scene_path("rough_mixture_hcs.toml") + " --set 'alpha=[0.9]' --set 'beta=[0.5, 1]'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto t = parse_csv(run.out);
+  ASSERT_EQ(t.size(), 3u);
+  ASSERT_EQ(t[0][2], "temperature_ratio_1");
+  // DSMC (γ_1, γ_2, θ_1, θ_2) at β = 0.5 and β = 1 (α = 0.9 on all pairs).
+  const std::array<std::array<double, 4>, 2> dsmc{std::array<double, 4>{0.9146, 1.0366, 0.8057, 0.9577},
+                                                  std::array<double, 4>{0.9835, 1.0071, 1.1114, 1.1136}};
+  for (std::size_t row = 0; row < 2; ++row) {
+    for (std::size_t k = 0; k < 2; ++k) EXPECT_NEAR(std::stod(t[row + 1][2 + k]), dsmc[row][k], 0.01) << row;
+    for (std::size_t k = 2; k < 4; ++k) EXPECT_NEAR(std::stod(t[row + 1][2 + k]) / dsmc[row][k], 1.0, 0.04) << row;
+    EXPECT_NEAR(0.3 * std::stod(t[row + 1][2]) + 0.7 * std::stod(t[row + 1][3]), 1.0, 1e-14);
+  }
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"fraction_2=0.6", "fraction: the mole fractions x_1 + x_2 must sum to 1, got 0.9"},
+           {"mass_1=-1", "mass_1: must be a number in (0, 1000000000], got -1"},
+           {"beta_1_2=1.5", "beta_1_2: must be a number in [-1, 1], got 1.5"},
+           {"'beta=[[0.5, 0], [0.1, 0.5]]'", "beta: the restitution matrix must be symmetric"},
+           {"moment_of_inertia_2=0", "moment_of_inertia_2: must be a number in (0, 1], got 0"},
+           {"moment_of_inertia_1=1.5", "moment_of_inertia_1: must be a number in (0, 1], got 1.5"},
+           {"'hcs=\"linear\"'", "hcs: the rough binary mixture (species = 2) has the Maxwellian HCS only"},
+           {"order=2", "order: must be exactly 1, got 2"},
+           {"'coefficients=[\"a20\"]'", "coefficients: unknown coefficient 'a20'"}}) {
+    const CliRun bad = run_gkt("table " + scene_path("rough_mixture_hcs.toml") + " --set " + set);
+    EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+  // Per-species keys without the tables.
+  const CliRun one = run_gkt("table " + scene_path("rough_hcs.toml") + " --set mass_1=2");
+  EXPECT_EQ(one.status, 2) << one.err;
+  EXPECT_NE(one.err.find("mass_1: per-species keys need species = 2"), std::string::npos) << one.err;
+  EXPECT_TRUE(one.out.empty());
+}
+
 // The cumulant reference of the rough Navier-Stokes columns (theory.md §19.16, conventions.md `reference_state`,
 // `hcs_order`): with the keys order 1 comes from the Sonine solver about the HCS (an error estimate, another value);
 // bad combinations exit 2 with one line naming the key.

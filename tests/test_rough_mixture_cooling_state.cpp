@@ -82,14 +82,15 @@ TEST(RoughMixtureCoolingState, IdenticalSpeciesAreTheOneComponentGas) {
       const auto state = gkt::rough_mixture_cooling_state(binary(d, a, b, {alpha, alpha, alpha}, {beta, beta, beta}));
       const auto one = gkt::rough_homogeneous_cooling_state(d, alpha, beta, kappa, gkt::RoughHcsScheme::maxwellian);
       for (std::size_t i = 0; i < 2; ++i) {
-        EXPECT_NEAR(state.temperature_ratio[i], 1.0, 1e-10) << "d=" << d;
-        EXPECT_NEAR(state.rotational_ratio[i], one.temperature_ratio, 1e-10 * one.temperature_ratio) << "d=" << d;
+        EXPECT_NEAR(state.temperature_ratio[i], 1.0, 1e-12) << "d=" << d;
+        EXPECT_NEAR(state.rotational_ratio[i], one.temperature_ratio, 1e-12 * one.temperature_ratio) << "d=" << d;
       }
-      EXPECT_NEAR(state.cooling_rate, one.cooling_rate, 1e-10) << "d=" << d;
+      EXPECT_NEAR(state.cooling_rate, one.cooling_rate, 1e-12 * one.cooling_rate) << "d=" << d;
     }
 }
 
-// β = −1 on every pair: the translational rates are the smooth mixture's (16.4), at any temperatures.
+// β = −1 on every pair: the translational rates are the smooth mixture's (16.4), at any temperatures, and the
+// HCS's γ_i, ζ* the smooth mixture's Maxwellian HCS.
 TEST(RoughMixtureCoolingState, SmoothLimitTranslationalRatesAreTheSmoothMixture) {
   for (int d : {2, 3}) {
     const Rational alpha(3, 4);
@@ -112,7 +113,13 @@ TEST(RoughMixtureCoolingState, SmoothLimitTranslationalRatesAreTheSmoothMixture)
     EXPECT_NEAR(r[1], rates[1], 1e-12) << "d=" << d;
     EXPECT_EQ(r[2], 0.0);
     EXPECT_EQ(r[3], 0.0);
-    EXPECT_THROW(gkt::rough_mixture_cooling_state(rough), std::invalid_argument);
+    // The HCS: both spins decoupled (θ_i = +∞), γ_i and ζ* the smooth mixture's Maxwellian HCS (theory.md (19.130)).
+    const auto hcs = gkt::rough_mixture_cooling_state(rough);
+    const auto smooth_hcs = gkt::mixture_cooling_state(smooth, gkt::MixtureHcsScheme::maxwellian);
+    EXPECT_TRUE(std::isinf(hcs.rotational_ratio[0]) && std::isinf(hcs.rotational_ratio[1]));
+    EXPECT_NEAR(hcs.temperature_ratio[0], smooth_hcs.temperature_ratio[0], 1e-10) << "d=" << d;
+    EXPECT_NEAR(hcs.temperature_ratio[1], smooth_hcs.temperature_ratio[1], 1e-10) << "d=" << d;
+    EXPECT_NEAR(hcs.cooling_rate, smooth_hcs.cooling_rate, 1e-10 * smooth_hcs.cooling_rate) << "d=" << d;
   }
 }
 
@@ -143,6 +150,25 @@ TEST(RoughMixtureCoolingState, FourRatesAreEqualAtTheHcs) {
     EXPECT_GT(s.cooling_rate, 0);
     std::printf("rough mixture HCS d=%d: gamma = %.6f %.6f, theta = %.6f %.6f, zeta* = %.6f\n", d, t1, t2,
                 s.rotational_ratio[0], s.rotational_ratio[1], s.cooling_rate);
+  }
+}
+
+// One decoupled spin (β_11 = β_12 = −1, β_22 = 1/2; theory.md (19.130)): θ_1 = +∞ and at the state the three
+// remaining rates equal ζ* whatever T_r,1 (it enters no row), while T_r,1 itself does not change.
+TEST(RoughMixtureCoolingState, OneDecoupledSpinCoolsWithoutIt) {
+  for (int d : {2, 3}) {
+    const Rational a(9, 10), m1(-1);
+    const auto m = binary(d, kLight, kHeavy, {a, a, a}, {m1, m1, Rational(1, 2)});
+    const auto s = gkt::rough_mixture_cooling_state(m);
+    EXPECT_TRUE(std::isinf(s.rotational_ratio[0]));
+    ASSERT_TRUE(std::isfinite(s.rotational_ratio[1]));
+    const double t1 = s.temperature_ratio[0], t2 = s.temperature_ratio[1];
+    for (double tr1 : {0.1, 7.0}) {
+      const auto r = gkt::rough_mixture_cooling_rates(m, {t1, t2, tr1, s.rotational_ratio[1] * t2});
+      for (std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{3}})
+        EXPECT_NEAR(r[k], s.cooling_rate, 1e-10 * s.cooling_rate) << "d=" << d << " k=" << k;
+      EXPECT_EQ(r[2], 0.0);
+    }
   }
 }
 

@@ -19,6 +19,7 @@ using R = Reduction;
 
 const std::vector<std::string> kRough{"rough", "rough-walton"};
 const std::vector<std::string> kMixture{"mixture"};
+const std::vector<std::string> kRoughOnly{"rough"};
 const std::vector<std::string> kViscoelastic{"viscoelastic"};
 const std::vector<std::string> kAggregation{"aggregation"};
 const std::vector<std::string> kSmoothInelastic{"smooth-inelastic"};
@@ -28,6 +29,8 @@ std::vector<ColumnDescription> make_catalogue() {
   return {
       // Rough spheres and disks (theory.md §19): reduced at the translational temperature T_t.
       {"rotational_temperature_ratio", {}, "rough HCS: θ = T_r/T_t (theory.md §19.4)", "—", R::none},
+      {"rotational_temperature_ratio_<i>", kRoughOnly, "rough binary HCS: θ_i = T_r,i/T_t,i (theory.md §19.17)", "—",
+       R::none},
       {"translational_temperature", kRough, "gkt evolve: T_t(τ)/T_ref, T_t = m⟨v²⟩/d (theory.md §19.13)", "T_ref",
        R::other_reference},
       {"rotational_temperature", kRough, "gkt evolve: T_r(τ)/T_ref, T_r = I⟨ω²⟩/d_r (theory.md §19.13)", "T_ref",
@@ -59,7 +62,9 @@ std::vector<ColumnDescription> make_catalogue() {
        "rough spheres: C = ⟨cos²Θ⟩ of velocity and spin (theory.md §19.8)",
        "—",
        R::none},
-      {"cooling_rate", kRough, "HCS cooling rate ζ* = ζ/ν0(T_t), ν0 = nT_t/η0(T_t)", "ν0(T_t)", R::collision_frequency},
+      {"cooling_rate", kRough,
+       "HCS cooling rate ζ* = ζ/ν0(T_t), ν0 = nT_t/η0(T_t) (rough binary: ν0 = nT/η0(m̄, σ̄), T = Σ x_i T_t,i)",
+       "ν0(T_t)", R::collision_frequency},
       {"bulk_viscosity", kRough, "bulk viscosity η_b: nT_t − nτ_tT = −η_b∇·u (theory.md §19.9)", "η0(T_t)",
        R::viscosity},
       {"cooling_rate_first_order", kRough, "ζ_U in ζ = ζ⁽⁰⁾ + ζ_U∇·u (theory.md §19.9)", "dimensionless", R::none},
@@ -134,7 +139,7 @@ std::vector<ColumnDescription> make_catalogue() {
       // Mixtures (theory.md §16–18): the reference gas has m̄ = Σ x_i m_i, σ̄ = Σ x_i σ_i.
       {"cooling_rate", kMixture, "common HCS cooling rate ζ* = ζ/ν0, ν0 = nT/η0(m̄, σ̄)", "ν0(m̄, σ̄)",
        R::collision_frequency},
-      {"temperature_ratio_<i>", {}, "mixture HCS: T_i/T, T = Σ x_i T_i", "T", R::none},
+      {"temperature_ratio_<i>", {}, "mixture HCS: T_i/T, T = Σ x_i T_i (rough binary: T_t,i/T)", "T", R::none},
       {"tracer_diffusion_<i>",
        {},
        "tracer diffusion coefficient of species i in the other species (dilute binary)",

@@ -34,6 +34,7 @@
 #include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 #include "models/models.hpp"
+#include "models/rough_mixture_columns.hpp"
 #include "models/rough_parameters.hpp"
 
 namespace gkt::detail {
@@ -179,7 +180,9 @@ class RoughModel final : public TransportModel {
            "translation-rotation "
            "correlation (3D; first approximation at order 1, from the oriented Sonine HCS at orders 2-3); "
            "linear stability of the homogeneous cooling state (first Sonine about the Maxwellian HCS, or at order up "
-           "to 8, or 4 about the Sonine HCS with reference_state = hcs)";
+           "to 8, or 4 about the Sonine HCS with reference_state = hcs); a binary mixture (species = 2, two "
+           "[[species]] "
+           "tables): Maxwellian HCS T_t,i/T, T_r,i/T_t,i and the cooling rate";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto names = kRoughTableColumns;
@@ -194,12 +197,24 @@ class RoughModel final : public TransportModel {
         names.push_back(b);
       }
     for (const auto& c : stability_coefficient_names()) names.push_back(c);
+    for (const auto& c : rough_mixture_columns())  // cooling_rate is a column of both
+      if (std::find(names.begin(), names.end(), c) == names.end()) names.push_back(c);
+    return names;
+  }
+  /// A binary (species = 2, theory.md §19.17) has its Maxwellian-HCS columns only; one gas every other column.
+  [[nodiscard]] std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const override {
+    const auto binary = rough_mixture_columns();
+    if (is_rough_mixture_point(fixed)) return binary;
+    auto names = coefficient_names();
+    std::erase_if(names, [&binary](const std::string& c) {
+      return c != "cooling_rate" && std::find(binary.begin(), binary.end(), c) != binary.end();
+    });
     return names;
   }
   /// Without `coefficients` a scene gets the columns it had before the stability values and the
-  /// higher cumulants existed.
-  [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint&) const override {
-    return kRoughTableColumns;
+  /// higher cumulants existed (a binary: all of its columns).
+  [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const override {
+    return is_rough_mixture_point(fixed) ? rough_mixture_columns() : kRoughTableColumns;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     auto specs = rough_grain_parameters("beta", "tangential restitution coefficient (-1 smooth, +1 perfectly rough)");
@@ -231,6 +246,7 @@ class RoughModel final : public TransportModel {
                      "highest total degree p + q of the HCS cumulants a_pq carried into f0 (reference_state = hcs; "
                      "2: a20, a02, a11)",
                      {}});
+    for (auto& spec : rough_mixture_parameters()) specs.push_back(std::move(spec));
     return specs;
   }
   /// The HCS columns take orders 1 … kMaxRoughHcsOrder, the Navier–Stokes columns and the stability values
@@ -266,6 +282,9 @@ class RoughModel final : public TransportModel {
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {
     const auto specs = parameters();
+    // Two [[species]] tables: the Maxwellian HCS of the binary (theory.md §19.17).
+    if (is_rough_mixture_point(point)) return rough_mixture_values(specs, point, coefficients, order);
+    refuse_species_keys_for_one_gas(point);
     const auto [d, alpha, beta, kappa] = read_rough_grain(specs, point, "beta");
     const std::string scheme = SchemaPoint(specs, point).choice("hcs");
     // Order 1 asked for as such is the first approximation of §19.6–19.9 (error not estimated); order 1

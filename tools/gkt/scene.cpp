@@ -140,10 +140,39 @@ void check_row_count(const toml::table& table, const std::vector<ParameterSpec>&
   }
 }
 
+/// A restitution matrix `key = [[…], …]` (alpha; beta of rough grains) of k species becomes key_i_j (i ≤ j);
+/// a number or a sweep is left alone.
+void flatten_restitution_matrix(toml::table& scene, const std::string& key, int k) {
+  const auto* matrix = scene.get_as<toml::array>(key);
+  if (matrix == nullptr || matrix->empty() || !matrix->get(0)->is_array()) return;  // a number or a sweep
+  const std::string shape = key + ": a restitution matrix must be " + std::to_string(k) + " x " + std::to_string(k) +
+                            " (one row per species)";
+  if (static_cast<int>(matrix->size()) != k) throw error(shape);
+  std::vector<std::vector<const toml::node*>> rows;
+  for (const auto& row : *matrix) {
+    const auto* r = row.as_array();
+    if (r == nullptr || static_cast<int>(r->size()) != k) throw error(shape);
+    rows.emplace_back();
+    for (const auto& v : *r) rows.back().push_back(&v);
+  }
+  for (int i = 0; i < k; ++i)
+    for (int j = i; j < k; ++j) {
+      const std::string name = key + "_" + std::to_string(i + 1) + "_" + std::to_string(j + 1);
+      const Rational a = scene_number(*rows[i][j], name), b = scene_number(*rows[j][i], name);
+      if (a != b)
+        throw error(key + ": the restitution matrix must be symmetric, got " + key + "[" + std::to_string(i + 1) +
+                    "][" + std::to_string(j + 1) + "] = " + a.to_decimal_string() + " and " + key + "[" +
+                    std::to_string(j + 1) + "][" + std::to_string(i + 1) + "] = " + b.to_decimal_string());
+      if (!scene.contains(name)) scene.insert_or_assign(name, *rows[i][j]);
+    }
+  scene.erase(key);
+}
+
 }  // namespace
 
-/// Mixtures: the [[species]] tables become mass_k, diameter_k, fraction_k (k from 1) and the
-/// integer `species`; a restitution matrix `alpha = [[…], …]` becomes alpha_i_j (i ≤ j). Keys
+/// Mixtures: the [[species]] tables become mass_k, diameter_k, fraction_k (and moment_of_inertia_k of
+/// rough grains; k from 1) and the integer `species`; a restitution matrix `alpha = [[…], …]` becomes
+/// alpha_i_j (i ≤ j), and `beta = [[…], …]` beta_i_j. Keys
 /// given explicitly (e.g. --set mass_2=…) win over the tables.
 void flatten_mixture(toml::table& scene) {
   const toml::node* node = scene.get("species");
@@ -163,8 +192,8 @@ void flatten_mixture(toml::table& scene) {
         if (!value.is_string()) throw error(at + "name: must be a string");
         continue;
       }
-      if (field != "mass" && field != "diameter" && field != "fraction")
-        throw error(at + field + ": unknown key; valid keys: diameter, fraction, mass, name");
+      if (field != "mass" && field != "diameter" && field != "fraction" && field != "moment_of_inertia")
+        throw error(at + field + ": unknown key; valid keys: diameter, fraction, mass, moment_of_inertia, name");
       const std::string flat_key = field + "_" + std::to_string(k);
       if (!scene.contains(flat_key)) flat.insert_or_assign(flat_key, value);
     }
@@ -176,29 +205,7 @@ void flatten_mixture(toml::table& scene) {
   for (const auto& [key, value] : flat) scene.insert_or_assign(key, value);
   scene.insert_or_assign("species", static_cast<int64_t>(k));
 
-  const auto* alpha = scene.get_as<toml::array>("alpha");
-  if (alpha == nullptr || alpha->empty() || !alpha->get(0)->is_array()) return;  // a number or a sweep
-  const std::string shape =
-      "alpha: a restitution matrix must be " + std::to_string(k) + " x " + std::to_string(k) + " (one row per species)";
-  if (static_cast<int>(alpha->size()) != k) throw error(shape);
-  std::vector<std::vector<const toml::node*>> rows;
-  for (const auto& row : *alpha) {
-    const auto* r = row.as_array();
-    if (r == nullptr || static_cast<int>(r->size()) != k) throw error(shape);
-    rows.emplace_back();
-    for (const auto& v : *r) rows.back().push_back(&v);
-  }
-  for (int i = 0; i < k; ++i)
-    for (int j = i; j < k; ++j) {
-      const std::string name = "alpha_" + std::to_string(i + 1) + "_" + std::to_string(j + 1);
-      const Rational a = scene_number(*rows[i][j], name), b = scene_number(*rows[j][i], name);
-      if (a != b)
-        throw error("alpha: the restitution matrix must be symmetric, got alpha[" + std::to_string(i + 1) + "][" +
-                    std::to_string(j + 1) + "] = " + a.to_decimal_string() + " and alpha[" + std::to_string(j + 1) +
-                    "][" + std::to_string(i + 1) + "] = " + b.to_decimal_string());
-      if (!scene.contains(name)) scene.insert_or_assign(name, *rows[i][j]);
-    }
-  scene.erase("alpha");
+  for (const std::string restitution : {"alpha", "beta"}) flatten_restitution_matrix(scene, restitution, k);
 }
 
 /// Returns the keys with their species/pair indices collapsed: mass_1 … mass_4 become mass_i,

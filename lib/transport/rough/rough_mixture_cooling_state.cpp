@@ -1,7 +1,9 @@
 #include "gkt/transport/rough/rough_mixture_cooling_state.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -67,19 +69,29 @@ Eigen::Matrix4d cooling_matrix(const RoughBinaryMixture& m, const PairTables& ta
 
 struct PerronMode {
   double eigenvalue;
-  Eigen::Vector4d vector;  // positive, T_t,1 = 1
+  Eigen::Vector4d vector;  // positive, T_t,1 = 1; +∞ in the slot of a decoupled spin
 };
 
 /// Returns the eigenvalue of largest real part (Perron: A has non-negative off-diagonal entries)
-/// and its eigenvector.
-PerronMode perron_mode(const Eigen::Matrix4d& a) {
-  Eigen::EigenSolver<Eigen::Matrix4d> solver(a);
+/// and its eigenvector, on the slots `kept` only (a decoupled spin's row and column of A vanish: its
+/// T_r stays constant, the eigenvalue 0 is not the cooling mode; theory.md (19.130)).
+PerronMode perron_mode(const Eigen::Matrix4d& a, const std::array<bool, 4>& kept) {
+  std::vector<Eigen::Index> slots;
+  for (Eigen::Index k = 0; k < 4; ++k)
+    if (kept[static_cast<std::size_t>(k)]) slots.push_back(k);
+  const auto n = static_cast<Eigen::Index>(slots.size());
+  Eigen::MatrixXd reduced(n, n);
+  for (Eigen::Index r = 0; r < n; ++r)
+    for (Eigen::Index c = 0; c < n; ++c)
+      reduced(r, c) = a(slots[static_cast<std::size_t>(r)], slots[static_cast<std::size_t>(c)]);
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(reduced);
   Eigen::Index best = 0;
-  for (Eigen::Index k = 1; k < 4; ++k)
+  for (Eigen::Index k = 1; k < n; ++k)
     if (solver.eigenvalues()[k].real() > solver.eigenvalues()[best].real()) best = k;
-  Eigen::Vector4d v = solver.eigenvectors().col(best).real();
-  v /= v(0);
-  return {solver.eigenvalues()[best].real(), v};
+  const Eigen::VectorXd v = solver.eigenvectors().col(best).real();
+  Eigen::Vector4d out = Eigen::Vector4d::Constant(std::numeric_limits<double>::infinity());
+  for (Eigen::Index r = 0; r < n; ++r) out(slots[static_cast<std::size_t>(r)]) = v(r) / v(0);
+  return {solver.eigenvalues()[best].real(), out};
 }
 
 }  // namespace
@@ -166,19 +178,24 @@ std::array<double, 4> rough_mixture_cooling_rates(const RoughBinaryMixture& mixt
 RoughMixtureCoolingState rough_mixture_cooling_state(const RoughBinaryMixture& mixture) {
   mixture.validate();
   const auto& x = mixture.species;
-  for (std::size_t k = 0; k < 2; ++k) {
-    // The spin of species k is coupled iff some pair it collides with has β > −1.
-    const double coupling = x[k].fraction * (1 + mixture.beta[pair_index(k, k)].to_double()) +
-                            x[1 - k].fraction * (1 + mixture.beta[pair_index(k, 1 - k)].to_double());
-    if (coupling == 0)
-      throw std::invalid_argument("beta: the spin of species " + std::to_string(k) +
-                                  " is decoupled (beta = -1 for every pair it collides in): its rotational "
-                                  "temperature has no cooling state");
-  }
+  // The spin of species k is coupled iff some pair it collides with has β > −1; a decoupled spin keeps
+  // its T_r (θ_k = +∞ in the HCS) and drops out of the translational dynamics (theory.md (19.130)).
+  std::array<bool, 4> kept{true, true, true, true};
+  for (std::size_t k = 0; k < 2; ++k)
+    kept[2 + k] = x[k].fraction * (1 + mixture.beta[pair_index(k, k)].to_double()) +
+                      x[1 - k].fraction * (1 + mixture.beta[pair_index(k, 1 - k)].to_double()) >
+                  0;
+  // A decoupled spin that still exchanges energy with a tracer partner (x_j = 0, β_ij > −1) heats it without
+  // cooling itself: T_t,j/T grows without bound, no HCS.
+  for (std::size_t k = 0; k < 2; ++k)
+    if (!kept[2 + k] && x[k].fraction > 0 && mixture.beta[pair_index(k, 1 - k)] > Rational(-1))
+      throw std::invalid_argument("beta: the spin of species " + std::to_string(k + 1) +
+                                  " does not cool (beta = -1 with itself) but heats the tracer species " +
+                                  std::to_string(2 - k) + " (beta_1_2 > -1, fraction 0): no cooling state");
   const PairTables tables = pair_tables(mixture);
   const auto mode_at = [&](double log_ratio) {
     const double rho = std::exp(log_ratio), t = x[0].fraction + x[1].fraction * rho;
-    return perron_mode(cooling_matrix(mixture, tables, {1 / t, rho / t}));
+    return perron_mode(cooling_matrix(mixture, tables, {1 / t, rho / t}), kept);
   };
   // h(ln ρ) = ln(T_t,2/T_t,1 of the Perron vector) − ln ρ: the vector's ratio stays bounded as ρ → 0, ∞.
   const auto h = [&](double log_ratio) { return std::log(mode_at(log_ratio).vector(1)) - log_ratio; };
@@ -197,7 +214,12 @@ RoughMixtureCoolingState rough_mixture_cooling_state(const RoughBinaryMixture& m
   const double t = x[0].fraction * mode.vector(0) + x[1].fraction * mode.vector(1);
   out.temperature_ratio = {mode.vector(0) / t, mode.vector(1) / t};
   out.rotational_ratio = {mode.vector(2) / mode.vector(0), mode.vector(3) / mode.vector(1)};
-  out.cooling_rate = -mode.eigenvalue;
+  // α = 1 and β = ±1 on every pair lose no energy ((19.51)): ζ* = 0 exactly, where the eigenvalue may leave 1e-16.
+  const bool conservative =
+      std::all_of(mixture.alpha.begin(), mixture.alpha.end(), [](const Rational& a) { return a == Rational(1); }) &&
+      std::all_of(mixture.beta.begin(), mixture.beta.end(),
+                  [](const Rational& b) { return b == Rational(1) || b == Rational(-1); });
+  out.cooling_rate = conservative ? 0.0 : -mode.eigenvalue;
   return out;
 }
 

@@ -55,14 +55,14 @@ std::array<double, 4> rough_mixture_cooling_rates(const RoughBinaryMixture& mixt
 /// The Maxwellian HCS of a rough binary mixture.
 struct RoughMixtureCoolingState {
   std::array<double, 2> temperature_ratio{};  ///< γ_i = T_t,i/T, T = Σx_i T_t,i (Σ x_i γ_i = 1)
-  std::array<double, 2> rotational_ratio{};   ///< θ_i = T_r,i/T_t,i
+  std::array<double, 2> rotational_ratio{};   ///< θ_i = T_r,i/T_t,i (+∞ for a decoupled spin)
   double cooling_rate = 0;                    ///< the common ζ* = ζ/ν0(T)
 };
 
 /// Returns the Maxwellian HCS: the positive eigenvector of the linear cooling dynamics at fixed
-/// T_t,2/T_t,1, made consistent with that ratio by bisection (theory.md §19.17). Throws
-/// std::invalid_argument on bad input and when a species' spin is decoupled (β = −1 for all its
-/// pairs: its T_r has no cooling state).
+/// T_t,2/T_t,1, made consistent with that ratio by bisection (theory.md §19.17). A species whose spin
+/// is decoupled (β = −1 on every pair it meets with non-zero weight x_j) keeps its T_r: θ_i = +∞, and
+/// γ_i, ζ* are the translational ones (theory.md (19.130)). Throws std::invalid_argument on bad input.
 RoughMixtureCoolingState rough_mixture_cooling_state(const RoughBinaryMixture& mixture);
 
 }  // namespace gkt

@@ -1,0 +1,38 @@
+// Private: the binary mixture of rough grains inside the "rough" model (`species = 2`, from two
+// [[species]] tables): its keys, its columns and their values from the Maxwellian HCS of
+// rough_mixture_cooling_state.hpp (docs/theory.md §19.17, §19.26).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "models/models.hpp"
+
+namespace gkt::detail {
+
+/// Returns the keys a rough binary mixture adds to the rough model's schema: `species` (1 = one gas,
+/// default; 2 = the binary), mass_i, diameter_i, fraction_i, moment_of_inertia_i (i = 1, 2) and the
+/// pair restitutions alpha_i_j, beta_i_j (i ≤ j; default: the scalar alpha, beta).
+std::vector<ParameterSpec> rough_mixture_parameters();
+
+/// Returns the rough binary mixture's columns: temperature_ratio_i (T_t,i/T), rotational_temperature_ratio_i
+/// (T_r,i/T_t,i) for i = 1, 2 and cooling_rate (ζ/ν0(m̄, σ̄); theory.md (19.55)).
+std::vector<std::string> rough_mixture_columns();
+
+/// Returns true if the point describes a binary mixture (species = 2).
+bool is_rough_mixture_point(const ParameterPoint& point);
+
+/// Returns the Maxwellian-HCS values of `coefficients` (rough_mixture_columns) of the binary of `point`,
+/// validated against `schema` (the rough model's); first approximation, order 1 only. Throws
+/// std::invalid_argument naming the key for a one-gas key the binary does not take, another order, hcs other than
+/// "maxwellian", fractions not summing to 1 and any column the binary does not have.
+std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSpec>& schema,
+                                                   const ParameterPoint& point,
+                                                   const std::vector<std::string>& coefficients,
+                                                   const OrderRequest& order);
+
+/// Throws std::invalid_argument naming the first per-species key (mass_i, …, beta_i_j) that `point` gives
+/// while it describes one gas (species = 1).
+void refuse_species_keys_for_one_gas(const ParameterPoint& point);
+
+}  // namespace gkt::detail
