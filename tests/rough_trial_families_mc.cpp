@@ -440,8 +440,8 @@ int main(int argc, char** argv) {
       for (int p = 0; p < m; ++p)
         for (int q = 0; q < m; ++q) {
           l[p * m + q] = ex.element(rank, p, q, tau);
-          nn[p * m + q] = ex.maxwell_product(rank, p, q);
-          gg[p * m + q] = ex.maxwell_scaling_product(rank, p, q);
+          nn[p * m + q] = ex.maxwell_product_at(rank, p, q);
+          gg[p * m + q] = ex.maxwell_scaling_product_at(rank, p, q);
         }
     };
     fill(2, nt, elt, Nt, Gt);

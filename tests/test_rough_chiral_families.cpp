@@ -5,8 +5,10 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "rough_monte_carlo.hpp"
 #include "transport/rough/rough_chiral_families.hpp"
 
@@ -81,7 +83,7 @@ TEST(RoughChiralFamilies, ElementsAgainstMonteCarlo) {
     const RoughChiralFamilyElements exact(cs.d, cs.a, cs.b, cs.k);
     const double tau = cs.theta / cs.kappa, lambda = std::sqrt(tau);
     gkt::test::RoughCollisionSampler sampler(cs.d, cs.alpha, cs.beta, cs.kappa, cs.theta, 77 + cs.d);
-    const int nt = exact.count(2), nv = exact.count(1);
+    const int nt = exact.size(2), nv = exact.size(1);
     const std::size_t n = static_cast<std::size_t>(nt * nt + nv * nv);
     std::vector<double> swh(n, 0), sw2h2(n, 0), sw2h(n, 0);
     double w_sum = 0, w2_sum = 0;
@@ -139,14 +141,14 @@ TEST(RoughChiralFamilies, TimeReversalAtPidduck) {
     const RoughChiralFamilyElements exact(d, Rational(1), Rational(1), kappa);
     // parities: tensor (cc)°, T1, T2 even, (c(c×ŵ))_sym and p(ŵ(c×ŵ))_sym (degree 5) odd; 2D ŵ(cc⊥)_sym odd;
     // vector: products and F odd, c × ŵ (ŵ c⊥) even; scalars even.
-    const std::array<std::vector<int>, 3> parity{std::vector<int>(static_cast<std::size_t>(exact.count(0)), 1),
+    const std::array<std::vector<int>, 3> parity{std::vector<int>(static_cast<std::size_t>(exact.size(0)), 1),
                                                  d == 3 ? std::vector<int>{-1, -1, -1, 1} : std::vector<int>{-1, -1, 1},
                                                  d == 3 ? std::vector<int>{1, 1, 1, -1, -1} : std::vector<int>{1, -1}};
     double largest_antisymmetric = 0;
     const double tau = 1 / kappa.to_double();  // equilibrium: T_r = T_t, θ = 1
     for (int rank = 0; rank <= 2; ++rank)
-      for (int i = 0; i < exact.count(rank); ++i)
-        for (int j = 0; j < exact.count(rank); ++j) {
+      for (int i = 0; i < exact.size(rank); ++i)
+        for (int j = 0; j < exact.size(rank); ++j) {
           const double eps = parity[static_cast<std::size_t>(rank)][static_cast<std::size_t>(i)] *
                              parity[static_cast<std::size_t>(rank)][static_cast<std::size_t>(j)];
           const double a = exact.element(rank, i, j, tau), b = exact.element(rank, j, i, tau);
@@ -154,5 +156,39 @@ TEST(RoughChiralFamilies, TimeReversalAtPidduck) {
           if (eps < 0) largest_antisymmetric = std::max(largest_antisymmetric, std::abs(a));
         }
     EXPECT_GT(largest_antisymmetric, 0.01) << "d " << d;
+  }
+}
+
+// RoughTrialSpace::full at N = 1 (its product block from RoughCollisionElements, its families from
+// RoughChiralFamilyElements' second list, the library's solve): the changes over the product space against §19.21's
+// Monte Carlo table ("aligned + chiral", 3D κ = 2/5; "chiral alone", 2D κ = 1/2: no aligned family there), within 3σ.
+TEST(RoughChiralFamilies, FullSpaceReproducesTheMonteCarloTable) {
+  struct Row {
+    int d;
+    Rational alpha, beta;
+    double eta, eta_error, kappa, kappa_error, mu, mu_error;
+  };
+  const std::vector<Row> rows{{3, Rational(1), Rational(1), 0.0502, 0.0016, 0.108, 0.011, 0, 0.001},
+                              {3, Rational(9, 10), Rational(1, 2), 0.0229, 0.0009, 0.071, 0.012, 0.049, 0.009},
+                              {3, Rational(1, 2), Rational(1, 2), 0.0137, 0.0010, 0.118, 0.026, 0.122, 0.029},
+                              {2, Rational(1), Rational(1), -0.0151, 0.0009, -0.066, 0.008, 0, 0.001},
+                              {2, Rational(9, 10), Rational(1, 2), -0.0060, 0.0008, -0.055, 0.007, -0.047, 0.007}};
+  // The same systems assembled and solved by gkt_rough_trial_families_mc ... exact (its own product block and solve,
+  // theory.md §19.22's table): Pidduck's gas 3D η* = 1.101724, κ* = 1.641475; 2D η* = 1.271179, κ* = 1.463505.
+  const gkt::RoughSonineTransport spheres(3, Rational(1), Rational(1), Rational(2, 5), 1, gkt::RoughTrialSpace::full);
+  EXPECT_NEAR(spheres.at_maxwellian_state(1).shear_viscosity, 1.101724, 1e-6);
+  EXPECT_NEAR(spheres.at_maxwellian_state(1).thermal_conductivity, 1.641475, 1e-6);
+  const gkt::RoughSonineTransport disks(2, Rational(1), Rational(1), Rational(1, 2), 1, gkt::RoughTrialSpace::full);
+  EXPECT_NEAR(disks.at_maxwellian_state(1).shear_viscosity, 1.271179, 1e-6);
+  EXPECT_NEAR(disks.at_maxwellian_state(1).thermal_conductivity, 1.463505, 1e-6);
+  for (const Row& r : rows) {
+    const Rational kappa = r.d == 3 ? Rational(2, 5) : Rational(1, 2);
+    const gkt::RoughSonineTransport products(r.d, r.alpha, r.beta, kappa, 1);
+    const gkt::RoughSonineTransport full(r.d, r.alpha, r.beta, kappa, 1, gkt::RoughTrialSpace::full);
+    const auto p = products.at_maxwellian_state(1), f = full.at_maxwellian_state(1);
+    const std::string where = "d " + std::to_string(r.d) + " alpha " + r.alpha.to_string();
+    EXPECT_NEAR(f.shear_viscosity - p.shear_viscosity, r.eta, 3 * r.eta_error) << where;
+    EXPECT_NEAR(f.thermal_conductivity - p.thermal_conductivity, r.kappa, 3 * r.kappa_error) << where;
+    EXPECT_NEAR(f.density_heat_coefficient - p.density_heat_coefficient, r.mu, 3 * r.mu_error) << where;
   }
 }

@@ -128,7 +128,77 @@ struct Family {
   std::vector<std::tuple<Poly, Item, Item>> tensor;
   Poly scalar;
   bool chiral = false;
+  bool product = false;
 };
+
+/// Returns Σ s_i X^i Σ l_j Y^j on the slot (X = c·c, Y = ŵ·ŵ).
+Poly multiplier(const std::vector<Rational>& s, const std::vector<Rational>& l, const Poly& x, const Poly& y) {
+  Poly sx, ly, power = constant(Rational(1));
+  for (const Rational& c : s) {
+    sx = sx + scaled(power, c);
+    power = power * x;
+  }
+  power = constant(Rational(1));
+  for (const Rational& c : l) {
+    ly = ly + scaled(power, c);
+    power = power * y;
+  }
+  return sx * ly;
+}
+
+/// Returns f with every coefficient multiplied by m.
+Family times(Family f, const Poly& m) {
+  for (auto& [c, i] : f.vector) c = c * m;
+  for (auto& [c, i, j] : f.tensor) c = c * m;
+  if (!f.scalar.empty()) f.scalar = f.scalar * m;
+  return f;
+}
+
+/// Returns the functions of RoughTrialSpace::full of rank r on slot a (first) or b: products of p + q ≤ top, the
+/// aligned families (3D) times S_p L_q of p + q < members, the lowest chiral families (theory.md §19.22).
+std::vector<Family> full_functions(int d, int rank, bool first, int top, int members) {
+  const int c = first ? kCa : kCb, w = first ? kWa : kWb;
+  const Item ci{false, c, c}, wi{false, w, w}, cw{true, c, w};
+  const Poly x = dot(c, c), y = dot(w, w), p = dot(c, w), one = constant(Rational(1));
+  std::vector<Family> out;
+  const auto member = [&](int pp, int qq) {
+    const RoughTrialFunction f = rough_sonine_function(d, rank, pp, qq);
+    return multiplier(f.s, f.l, x, y);
+  };
+  Family t_r;
+  if (rank == 2) t_r.tensor = {{one, ci, ci}};
+  if (rank == 1) t_r.vector = {{one, ci}};
+  if (rank == 0) t_r.scalar = one;
+  for (int pp = 0; pp <= top; ++pp)
+    for (int qq = 0; pp + qq <= top; ++qq) {
+      Family f = times(t_r, member(pp, qq));
+      f.product = true;
+      out.push_back(std::move(f));
+    }
+  std::vector<Family> aligned;
+  if (d == 3) {
+    if (rank == 2) {
+      aligned.push_back({{}, {{one, wi, wi}}, {}, false, false});
+      aligned.push_back({{}, {{p, ci, wi}, {scaled(y, Rational(-1, 3)), ci, ci}}, {}, false, false});
+    } else if (rank == 1) {
+      aligned.push_back({{{p, wi}, {scaled(y, Rational(-1, 3)), ci}}, {}, {}, false, false});
+    } else {
+      aligned.push_back({{}, {}, p * p + scaled(x * y, Rational(-1, 3)), false, false});
+    }
+  }
+  for (const Family& f : aligned)
+    for (int pp = 0; pp < members; ++pp)
+      for (int qq = 0; pp + qq < members; ++qq) out.push_back(times(f, member(pp, qq)));
+  if (rank == 2 && d == 3) {
+    out.push_back({{}, {{one, ci, cw}}, {}, true, false});
+    out.push_back({{}, {{p, wi, cw}}, {}, true, false});
+  } else if (rank == 2) {
+    out.push_back({{}, {{scaled(one, Rational(-1)), ci, cw}}, {}, true, false});
+  } else if (rank == 1) {
+    out.push_back({{{scaled(one, Rational(d == 3 ? 1 : -1)), cw}}, {}, {}, true, false});
+  }
+  return out;
+}
 
 /// Returns the families of rank r on slot a (first = true) or b, in gkt_rough_trial_families_mc's order.
 std::vector<Family> families(int d, int rank, bool first) {
@@ -260,22 +330,35 @@ class PairAverages {
 
 RoughChiralFamilyElements::RoughChiralFamilyElements(int dimension, const Rational& alpha, const Rational& beta,
                                                      const Rational& kappa)
-    : dimension_(dimension) {
+    : RoughChiralFamilyElements(dimension, alpha, beta, kappa, 0, 1) {}
+
+RoughChiralFamilyElements::RoughChiralFamilyElements(int dimension, const Rational& alpha, const Rational& beta,
+                                                     const Rational& kappa, int highest_order, int aligned_order)
+    : dimension_(dimension), highest_order_(highest_order) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  if (highest_order < 0) throw std::invalid_argument("order: must be an integer >= 1");
+  if (aligned_order < 1) throw std::invalid_argument("aligned_order: must be an integer >= 1");
   const auto parameters = rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa);
   const int d = dimension;
+  const bool full = highest_order > 0;
   PairAverages post(S::v1, S::w1, S::v1_post, S::w1_post), other(S::v2, S::w2, S::v1, S::w1),
       other_post(S::v2, S::w2, S::v1_post, S::w1_post);
   std::array<std::vector<Poly>, 3> polys;
   for (int rank = 0; rank <= 2; ++rank) {
     const auto r = static_cast<std::size_t>(rank);
-    const auto trials = families(d, rank, true), tests = families(d, rank, false);
+    const int top = rank == 2 ? highest_order - 1 : highest_order;
+    const auto trials = full ? full_functions(d, rank, true, top, aligned_order) : families(d, rank, true);
+    const auto tests = full ? full_functions(d, rank, false, top, aligned_order) : families(d, rank, false);
     count_[r] = static_cast<int>(trials.size());
-    for (const Family& f : trials) chiral_[r].push_back(f.chiral);
+    for (const Family& f : trials) {
+      chiral_[r].push_back(f.chiral);
+      if (full && f.product) ++products_[r];
+    }
     for (const Family& test : tests)
       for (const Family& trial : trials) {
-        Poly poly = contraction(d, rank, trial, test);
+        // RoughTrialSpace::full: the product block comes from RoughCollisionElements.
+        Poly poly = full && test.product && trial.product ? Poly{} : contraction(d, rank, trial, test);
         Rational n(0), g(0);
         for (const auto& [e, c] : poly) {
           if (c.is_zero()) continue;
@@ -327,18 +410,45 @@ RoughChiralFamilyElements::RoughChiralFamilyElements(int dimension, const Ration
 
 std::size_t RoughChiralFamilyElements::at(int rank, int i, int j) const {
   if (rank < 0 || rank > 2) throw std::out_of_range("RoughChiralFamilyElements: rank must be 0, 1 or 2");
-  const int n = count_[static_cast<std::size_t>(rank)];
+  const int n = size(rank);
   if (i < 0 || j < 0 || i >= n || j >= n) throw std::out_of_range("RoughChiralFamilyElements: no such family");
   return static_cast<std::size_t>(i * n + j);
 }
 
-int RoughChiralFamilyElements::count(int rank) const {
+int RoughChiralFamilyElements::size(int rank) const {
   if (rank < 0 || rank > 2) throw std::out_of_range("RoughChiralFamilyElements: rank must be 0, 1 or 2");
   return count_[static_cast<std::size_t>(rank)];
 }
 
+int RoughChiralFamilyElements::count(int rank) const { return size(rank) - products_[static_cast<std::size_t>(rank)]; }
+
 bool RoughChiralFamilyElements::chiral(int rank, int i) const {
-  return chiral_[static_cast<std::size_t>(rank)][at(rank, i, 0) / static_cast<std::size_t>(count(rank))];
+  return chiral_[static_cast<std::size_t>(rank)][at(rank, i, 0) / static_cast<std::size_t>(size(rank))];
+}
+
+int RoughChiralFamilyElements::function_index(int rank, int p, int q) const {
+  if (p < 0) {
+    if (q < 1 || q > count(rank)) throw std::out_of_range("RoughChiralFamilyElements: no such appended function");
+    return products_[static_cast<std::size_t>(rank)] + q - 1;
+  }
+  const int top = rank == 2 ? highest_order_ - 1 : highest_order_;
+  if (q < 0 || p + q > top) throw std::out_of_range("RoughChiralFamilyElements: Sonine index above the table");
+  int i = 0;  // products ordered by p, then q ≤ top − p (as RoughAlignedFamilyElements)
+  for (int pp = 0; pp < p; ++pp) i += top - pp + 1;
+  return i + q;
+}
+
+double RoughChiralFamilyElements::element(int rank, int p_test, int q_test, int p_trial, int q_trial,
+                                          double tau) const {
+  return element(rank, function_index(rank, p_test, q_test), function_index(rank, p_trial, q_trial), tau);
+}
+
+double RoughChiralFamilyElements::maxwell_product(int rank, int i, int j) const {
+  return maxwell_product_at(rank, function_index(rank, -1, i), function_index(rank, -1, j));
+}
+
+double RoughChiralFamilyElements::maxwell_scaling_product(int rank, int i, int j) const {
+  return maxwell_scaling_product_at(rank, function_index(rank, -1, i), function_index(rank, -1, j));
 }
 
 double RoughChiralFamilyElements::element(int rank, int test, int trial, double tau) const {
@@ -355,11 +465,11 @@ double RoughChiralFamilyElements::element(int rank, int test, int trial, double 
   return static_cast<double>(value * std::pow(lambda, -static_cast<long double>(shift_)));
 }
 
-double RoughChiralFamilyElements::maxwell_product(int rank, int i, int j) const {
+double RoughChiralFamilyElements::maxwell_product_at(int rank, int i, int j) const {
   return product_[static_cast<std::size_t>(rank)][at(rank, i, j)];
 }
 
-double RoughChiralFamilyElements::maxwell_scaling_product(int rank, int i, int j) const {
+double RoughChiralFamilyElements::maxwell_scaling_product_at(int rank, int i, int j) const {
   return scaling_[static_cast<std::size_t>(rank)][at(rank, i, j)];
 }
 

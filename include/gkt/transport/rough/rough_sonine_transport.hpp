@@ -32,6 +32,8 @@ struct RoughTransportValues {
 enum class RoughTrialSpace {
   product,  ///< the translation × spin Sonine products of (19.40) only (the default)
   aligned,  ///< 3D: the products plus the lowest aligned-spin families (ŵŵ)°, (c·ŵ)(cŵ)°, (ŵŵ)°·c, (c·ŵ)² − c²ŵ²/3
+  full,  ///< the products, the aligned families (3D) and the lowest chiral ones (c(c×ŵ))_sym, (c·ŵ)(ŵ(c×ŵ))_sym, c×ŵ
+         ///< (2D: ŵ(c c⊥)_sym, ŵ c⊥), theory.md §19.22
 };
 
 /// The exact collision tables of one (d, α, β, κ) up to a highest Sonine order, with θ symbolic; each call
