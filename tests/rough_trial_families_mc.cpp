@@ -8,6 +8,8 @@
 // cannot give (single triple products).
 //   build-dev/bin/gkt_rough_trial_families_mc d alpha beta kappa collisions [seed]
 //   e.g. gkt_rough_trial_families_mc 3 0.9 0.5 0.4 400000 11   (about 10 s)
+// With a last argument `exact` the same systems are also solved with every element, N and G exact
+// (RoughChiralFamilyElements, docs/theory.md §19.22) and printed as "exact" rows beside the Monte Carlo ones.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +17,7 @@
 #include <string>
 #include <vector>
 #include "rough_monte_carlo.hpp"
+#include "transport/rough/rough_chiral_families.hpp"
 using namespace gkt::test;
 using M3 = std::array<std::array<double, 3>, 3>;
 static double dd;
@@ -103,6 +106,7 @@ int main(int argc, char** argv) {
   long n = atol(argv[5]);
   int nb = 40;
   unsigned long seed = argc > 6 ? atol(argv[6]) : 7;
+  const bool exact_too = std::string(argv[argc - 1]) == "exact";
   const double dr = (D == 3 ? 3 : 1);
   // Maxwellian θ: (2/d)<Δc²> = (2/(d_r τ))<Δw²>
   double etat = (1 + beta) * kappa / (2 * (1 + kappa));
@@ -427,6 +431,29 @@ int main(int argc, char** argv) {
       }
     }
     printf("\n");
+  }
+  if (exact_too) {
+    const gkt::detail::RoughChiralFamilyElements ex(D, gkt::Rational::parse(argv[2]), gkt::Rational::parse(argv[3]),
+                                                    gkt::Rational::parse(argv[4]));
+    std::vector<double> elt(nt * nt), elv(nv * nv), els(ns * ns);
+    const auto fill = [&](int rank, int m, std::vector<double>& l, std::vector<double>& nn, std::vector<double>& gg) {
+      for (int p = 0; p < m; ++p)
+        for (int q = 0; q < m; ++q) {
+          l[p * m + q] = ex.element(rank, p, q, tau);
+          nn[p * m + q] = ex.maxwell_product_at(rank, p, q);
+          gg[p * m + q] = ex.maxwell_scaling_product_at(rank, p, q);
+        }
+    };
+    fill(2, nt, elt, Nt, Gt);
+    fill(1, nv, elv, Nv, Gv);
+    fill(0, ns, els, Ns, Gs);
+    const auto base = evaluate(elt, elv, els, cases[0].t, cases[0].v, cases[0].s);
+    for (auto& cs : cases) {
+      const auto e = evaluate(elt, elv, els, cs.t, cs.v, cs.s);
+      printf("exact %-12s", cs.name);
+      for (int k = 0; k < 4; ++k) printf(" %s=%.6f (d%+.6f)", col[k], e[k], e[k] - base[k]);
+      printf("\n");
+    }
   }
   // print the L matrices (full average) for inspection
   auto lt = avg(Lt, -1), lv = avg(Lv, -1), ls = avg(Ls, -1);

@@ -739,6 +739,39 @@ TEST(CliRough, CumulantReferenceKeys) {
   }
 }
 
+// trial_space (theory.md §19.21, §19.22, conventions.md): the default is the product space; "aligned" adds the
+// aligned-spin families (η*, κ* rise at (0.9, 0.5)), "full" also the chiral ones (κ* falls back below the aligned
+// value); bad values and combinations exit 2 with one line naming the key.
+TEST(CliRough, TrialSpaceKey) {
+  const std::string base = "table " + scene_path("rough_hcs.toml") +
+                           " --set 'alpha=[0.9]' --set order=2 --set "
+                           "'coefficients=[\"shear_viscosity\", \"thermal_conductivity\"]'";
+  const CliRun plain = run_gkt(base);
+  const CliRun products = run_gkt(base + " --set 'trial_space=\"products\"'");
+  const CliRun aligned = run_gkt(base + " --set 'trial_space=\"aligned\"'");
+  const CliRun full = run_gkt(base + " --set 'trial_space=\"full\"'");
+  for (const CliRun* r : {&plain, &products, &aligned, &full}) ASSERT_EQ(r->status, 0) << r->err;
+  EXPECT_EQ(plain.out, products.out);
+  const auto p = parse_csv(products.out), a = parse_csv(aligned.out), f = parse_csv(full.out);
+  ASSERT_EQ(p.size(), 2u);
+  ASSERT_EQ(a.size(), 2u);
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_GT(std::stod(a[1][1]), std::stod(p[1][1]) + 0.01);  // η*: +2 % with the aligned families
+  EXPECT_GT(std::stod(a[1][2]), std::stod(p[1][2]) + 0.05);  // κ*: +7 %
+  EXPECT_LT(std::stod(f[1][2]), std::stod(a[1][2]) - 0.03);  // the chiral families lower κ*
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"'trial_space=\"chiral\"'", "trial_space: must be one of"},
+           {"'trial_space=\"aligned\"' --set dimension=2", "trial_space: \"aligned\" needs dimension = 3"},
+           {"'trial_space=\"full\"' --set order=1", "trial_space: \"full\" needs a Sonine order"},
+           {"'trial_space=\"full\"' --set 'reference_state=\"hcs\"'", "is built about Maxwellians only"}}) {
+    const CliRun bad = run_gkt(base + " --set " + set);
+    EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+}
+
 // Order N > 1 of the rough Navier-Stokes columns (theory.md §19.16): the order-2 error column is (6.3) from the
 // order-2 … 5 values printed by the CLI itself ((6.1) unless the changes flip sign; then order 5 tells an
 // alternation from a turn); order 1 stays the first approximation with a nan error.

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "collision/power_product_series.hpp"
+#include "collision/rough_gaussian_blocks.hpp"
 
 namespace gkt {
 
@@ -20,52 +21,9 @@ using Box = detail::ExponentVector<N>;
 template <class Ring, std::size_t N>
 using Poly = detail::SmallPolynomial<Ring, N>;
 template <class Ring, std::size_t N>
-using PolyMatrix4 = std::array<std::array<Poly<Ring, N>, 4>, 4>;
-
-/// Returns det of the submatrix m[rows][cols] by the Leibniz formula, truncated to the box.
-template <class Ring, std::size_t N>
-Poly<Ring, N> determinant(const PolyMatrix4<Ring, N>& m, const std::vector<int>& rows, const std::vector<int>& cols,
-                          const Box<N>& box) {
-  std::vector<int> perm(cols.size());
-  for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = static_cast<int>(i);
-  Poly<Ring, N> det;
-  do {
-    int inversions = 0;
-    for (std::size_t i = 0; i < perm.size(); ++i)
-      for (std::size_t j = i + 1; j < perm.size(); ++j)
-        if (perm[i] > perm[j]) ++inversions;
-    Poly<Ring, N> term = m[rows[0]][cols[perm[0]]];
-    for (std::size_t i = 1; i < perm.size() && !term.terms.empty(); ++i)
-      term = detail::truncated_product(term, m[rows[i]][cols[perm[i]]], box);
-    det = inversions % 2 == 0 ? det + term : det - term;
-  } while (std::next_permutation(perm.begin(), perm.end()));
-  return det;
-}
-
-/// Returns det(A + iB) (real for A symmetric, B antisymmetric: a Hermitian matrix) by Leibniz.
-template <class Ring, std::size_t N>
-Poly<Ring, N> hermitian_determinant(const PolyMatrix4<Ring, N>& a, const PolyMatrix4<Ring, N>& b, const Box<N>& box) {
-  std::array<int, 4> perm{0, 1, 2, 3};
-  Poly<Ring, N> det;
-  do {
-    int inversions = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        if (perm[i] > perm[j]) ++inversions;
-    Poly<Ring, N> re = a[0][perm[0]], im = b[0][perm[0]];
-    for (int i = 1; i < 4; ++i) {
-      const Poly<Ring, N>& x = a[i][perm[i]];
-      const Poly<Ring, N>& y = b[i][perm[i]];
-      Poly<Ring, N> next_re = detail::truncated_product(re, x, box) - detail::truncated_product(im, y, box);
-      Poly<Ring, N> next_im = detail::truncated_product(re, y, box) + detail::truncated_product(im, x, box);
-      re = std::move(next_re);
-      im = std::move(next_im);
-    }
-    det = inversions % 2 == 0 ? det + re : det - re;
-  } while (std::next_permutation(perm.begin(), perm.end()));
-  return det;
-}
-
+using PolyMatrix4 = detail::PolyMatrix4<Ring, N>;
+using detail::determinant;
+using detail::hermitian_determinant;
 /// Returns the Taylor coefficients of the rough integral J (theory.md (19.5), (19.5a)) along the forms, in N ≥ the
 /// number of forms variables, over the box (the forms past their number at degree 0) and the kept set, in the index
 /// order of the box (the first form slowest).
@@ -76,50 +34,11 @@ std::vector<Ring> rough_taylor_coefficients(const RoughCollisionMap<Ring>& rows,
   const int d = rows.dimension;
   Box<N> box{};
   for (std::size_t v = 0; v < N; ++v) box[v] = full_box[v];
-  // Normal block over (v1n, v2n, ŵ1n, ŵ2n) (the spin part only for d = 3), tangential block A over
-  // (v1t, v2t, ŝ1, ŝ2) and, for forms coupling v and w, its rotation part B (theory.md (19.5a)).
-  PolyMatrix4<Ring, N> mn, mt, mb;
-  // The reference Gaussians exp(−Σ width_r x_r²) (theory.md §19.2, (19.52)).
-  for (int r = 0; r < 4; ++r) {
-    if (rows.width[r].sign() <= 0) throw std::invalid_argument("RoughCollisionMoments: Gaussian widths must be > 0");
-    mn[r][r].add(Box<N>{}, Ring(rows.width[r]));
-    mt[r][r].add(Box<N>{}, Ring(rows.width[r]));
-  }
-  bool mixed = false;
-  // exp(+Σ x_v F_v): each form subtracts x_v Σ_ab F_ab (row_a row_bᵀ) from the blocks.
-  for (std::size_t v = 0; v < forms.size(); ++v) {
-    Box<N> e{};
-    e[v] = 1;
-    for (int a = 0; a < 8; ++a)
-      for (int b = 0; b < 8; ++b) {
-        const Rational& f = forms[v][a][b];
-        if (f.is_zero()) continue;
-        const bool spin_a = is_spin_slot(static_cast<RoughSlot>(a)), spin_b = is_spin_slot(static_cast<RoughSlot>(b));
-        if (spin_a != spin_b && d == 2)
-          throw std::invalid_argument(
-              "RoughCollisionMoments: v·w vanishes for disks (the spin is normal to the plane)");
-        const Ring c(-f);
-        const int oa = spin_a ? 2 : 0, ob = spin_b ? 2 : 0;
-        for (int r = 0; r < 2; ++r)
-          for (int s = 0; s < 2; ++s) mn[oa + r][ob + s].add(e, c * rows.normal[a][r] * rows.normal[b][s]);
-        if (spin_a == spin_b) {
-          for (int r = 0; r < 4; ++r)
-            for (int s = 0; s < 4; ++s) mt[r][s].add(e, c * rows.tangential[a][r] * rows.tangential[b][s]);
-          continue;
-        }
-        // v_t·w_t = v_t·(σ̂ × s): X_rᵀ J X_s with J the rotation by +π/2 (sign − when w comes first);
-        // only the antisymmetric part in (r, s) survives.
-        mixed = true;
-        Ring half = spin_a ? -c : c;
-        detail::divide(half, Rational(2));
-        for (int r = 0; r < 4; ++r)
-          for (int s = 0; s < 4; ++s) {
-            const Ring k = half * rows.tangential[a][r] * rows.tangential[b][s];
-            mb[r][s].add(e, k);
-            mb[s][r].add(e, -k);
-          }
-      }
-  }
+  const detail::RoughBlocks<Ring, N> blocks = detail::assemble_rough_blocks<Ring, N>(rows, forms);
+  const PolyMatrix4<Ring, N>& mn = blocks.normal;
+  const PolyMatrix4<Ring, N>& mt = blocks.tangential;
+  const PolyMatrix4<Ring, N>& mb = blocks.rotation;
+  const bool mixed = blocks.mixed;
   std::vector<detail::PowerFactor<Ring, N>> factors;
   const Ring two(2L);
   if (!mixed) {

@@ -231,6 +231,12 @@ class RoughModel final : public TransportModel {
                     "cooling rate and cumulants a_pq, p + q <= hcs_order; the error adds the change from "
                     "hcs_order - 1 (2: from the Maxwellian reference)",
                     {"maxwellian", "hcs"}));
+    specs.push_back(choice_spec("trial_space",
+                                "trial functions of the Navier-Stokes columns at a Sonine order (order >= 2 or a "
+                                "tolerance; about Maxwellians): the translation x spin Sonine products (default), "
+                                "plus the aligned-spin families (spheres), or plus those and the lowest chiral "
+                                "families (theory.md 19.21, 19.22)",
+                                {"products", "aligned", "full"}));
     specs.push_back(choice_spec("rotational_temperature_closure",
                                 "stability columns: T_rot slaved to T in the normal solution (Navier-Stokes, "
                                 "default), or T_rot a fourth field relaxing at the Maxwellian rate (first "
@@ -307,6 +313,26 @@ class RoughModel final : public TransportModel {
           "reference_state: \"hcs\" needs hcs = \"linear\" or \"nonlinear\" (the Sonine HCS "
           "whose cumulants f0 carries), got hcs = \"" +
           scheme + "\"");
+    // trial_space (theory.md §19.21, §19.22): the Sonine solver's space about Maxwellians; order 1 alone is the
+    // product space's first approximation, so the families need a Sonine order.
+    const std::string space = SchemaPoint(specs, point).choice("trial_space");
+    trial_space_ = space == "aligned" ? RoughTrialSpace::aligned
+                   : space == "full"  ? RoughTrialSpace::full
+                                      : RoughTrialSpace::product;
+    if (trial_space_ != RoughTrialSpace::product) {
+      if (trial_space_ == RoughTrialSpace::aligned && d != 3)
+        throw std::invalid_argument(
+            "trial_space: \"aligned\" needs dimension = 3 (c.w vanishes for disks; \"full\" has their chiral "
+            "families)");
+      if (cumulant_reference)
+        throw std::invalid_argument("trial_space: \"" + space +
+                                    "\" is built about Maxwellians only (reference_state = \"maxwellian\")");
+      if (first && std::any_of(coefficients.begin(), coefficients.end(),
+                               [](const std::string& c) { return is_rough_sonine_column(c); }))
+        throw std::invalid_argument("trial_space: \"" + space +
+                                    "\" needs a Sonine order (order >= 2 or a tolerance); order = 1 alone is the "
+                                    "first approximation in the product space");
+    }
     const auto& critical = stability_coefficient_names();
     const auto is_critical = [&critical](const std::string& c) {
       return std::find(critical.begin(), critical.end(), c) != critical.end();
@@ -564,13 +590,15 @@ class RoughModel final : public TransportModel {
   RoughTransportValues transport_values(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
                                         int n, int tables) {
     if (sonine_.size() > 64) sonine_.clear();  // bound memory in long sweeps (never mid-evaluation)
-    const std::string key =
-        std::to_string(d) + "|" + alpha.to_string() + "|" + beta.to_string() + "|" + kappa.to_string();
+    const std::string key = std::to_string(d) + "|" + alpha.to_string() + "|" + beta.to_string() + "|" +
+                            kappa.to_string() + "|" + std::to_string(static_cast<int>(trial_space_));
     RoughSonineEntry& entry = sonine_[key];
     if (const auto it = entry.values.find(n); it != entry.values.end()) return it->second;
     if (!entry.transport || entry.transport->highest_order() < n) {
       const int k = n <= 3 ? 3 : std::max(n, tables);
-      entry.transport = std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k);
+      entry.transport = trial_space_ == RoughTrialSpace::product
+                            ? std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k)
+                            : std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k, trial_space_);
     }
     return entry.values[n] = entry.transport->at_maxwellian_state(n);
   }
@@ -701,6 +729,7 @@ class RoughModel final : public TransportModel {
 
   std::map<std::string, RoughSonineEntry> sonine_;
   std::map<std::string, RoughReferenceEntry> reference_;
+  RoughTrialSpace trial_space_ = RoughTrialSpace::product;  ///< of the evaluation under way (trial_space)
 };
 
 }  // namespace

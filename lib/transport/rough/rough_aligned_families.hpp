@@ -14,11 +14,12 @@
 #include "gkt/algebra/rational.hpp"
 #include "gkt/algebra/rational_polynomial.hpp"
 #include "gkt/collision/rough_collision_rule.hpp"
+#include "transport/rough/rough_family_elements.hpp"
 
 namespace gkt::detail {
 
 /// The exact collision elements between the aligned-spin families and the products T_r S_p L_q (3D).
-class RoughAlignedFamilyElements {
+class RoughAlignedFamilyElements : public RoughFamilyElements {
  public:
   /// Builds the elements with the products of p + q ≤ K (K − 1 for rank 2), K = highest_order, for the aligned
   /// families times S_p(x) L_q(y), p + q ≤ aligned_order − 1 (1: the four families of (19.48) alone). Throws
@@ -27,15 +28,15 @@ class RoughAlignedFamilyElements {
   RoughAlignedFamilyElements(const RoughCollisionParameters<RationalPolynomial>& parameters, int highest_order,
                              int aligned_order = 1);
   /// Returns the number of aligned functions of rank r: (2 tensor families, 1 vector, 1 scalar) × the members.
-  [[nodiscard]] int count(int rank) const;
+  [[nodiscard]] int count(int rank) const override;
   /// Returns ⟨φ, 𝓛ψ⟩ at τ = θ/κ for test φ and trial ψ of rank r, each a product (p, q) or, when p < 0, the aligned
   /// function number q (1 … count; normalisation of theory.md (5.2), as RoughCollisionElements::element).
-  [[nodiscard]] double element(int rank, int p_test, int q_test, int p_trial, int q_trial, double tau) const;
+  [[nodiscard]] double element(int rank, int p_test, int q_test, int p_trial, int q_trial, double tau) const override;
   /// Returns the Maxwellian product N = ⟨φ_i:φ_j⟩ of aligned functions i, j (1 … count) of rank r (exact; 0 with
   /// every product).
-  [[nodiscard]] double maxwell_product(int rank, int i, int j) const;
+  [[nodiscard]] double maxwell_product(int rank, int i, int j) const override;
   /// Returns G = ⟨φ_j C·∂_C φ_i⟩ over the Maxwellians of aligned functions i, j of rank r (the cooling term's G).
-  [[nodiscard]] double maxwell_scaling_product(int rank, int i, int j) const;
+  [[nodiscard]] double maxwell_scaling_product(int rank, int i, int j) const override;
   /// Returns K.
   [[nodiscard]] int highest_order() const { return k_; }
 

@@ -82,7 +82,7 @@ std::vector<RoughTrialFunction> sonine_basis(const RoughModeState& state, int ra
 /// Appends the aligned-spin functions of the basis's rank to s (theory.md (19.49)): their collision rows and columns
 /// with every product and with each other; N and G vanish between an aligned function and a product (orthogonal, and
 /// C·∂_C maps each set into itself).
-void append_aligned_families(RoughGalerkinSystem& s, const RoughAlignedFamilyElements& aligned, double tau) {
+void append_aligned_families(RoughGalerkinSystem& s, const RoughFamilyElements& aligned, double tau) {
   const int rank = s.basis.front().rank, m = aligned.count(rank);
   const std::size_t n = s.basis.size(), total = n + static_cast<std::size_t>(m);
   for (RoughMatrix* x : {&s.collision, &s.cooling, &s.product}) {

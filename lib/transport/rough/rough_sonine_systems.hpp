@@ -100,7 +100,7 @@ struct RoughGalerkinSystem {
 };
 
 class RoughWeightedCollisionElements;
-class RoughAlignedFamilyElements;
+class RoughFamilyElements;
 
 /// The cumulants of the reference state f0 = f_M [1 + Σ a_pq S_p(x) S_q(y) (+ Σ b_pq P S_p S_q, (19.26a))] and its
 /// cooling rate: the Sonine HCS carried into the Chapman–Enskog equations (theory.md §19.16, "Cumulant reference").
@@ -124,7 +124,7 @@ struct RoughModeState {
   /// The aligned-spin families (3D, theory.md §19.21) appended to every mode's basis after the products (null: the
   /// products only). Their rows and columns follow the products' in the matrices; `basis` lists the products only,
   /// and every source, flux and constraint of an aligned family is 0 (each is orthogonal to every product).
-  const RoughAlignedFamilyElements* aligned = nullptr;
+  const RoughFamilyElements* aligned = nullptr;
 };
 
 /// Returns the shear system of order N: (c c)° S_p L_q, p + q ≤ N − 1 (theory.md (19.41)).

@@ -7,6 +7,7 @@
 
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "transport/rough/rough_aligned_families.hpp"
+#include "transport/rough/rough_chiral_families.hpp"
 #include "transport/rough/rough_sonine_systems.hpp"
 #include "transport/rough/rough_weighted_elements.hpp"
 
@@ -19,7 +20,7 @@ struct RoughSonineTransport::Tables {
   Rational kappa;
   detail::RoughCollisionElements elements;
   std::unique_ptr<detail::RoughWeightedCollisionElements> weighted;  ///< null without cumulant tables
-  std::unique_ptr<detail::RoughAlignedFamilyElements> aligned;       ///< null for the product space
+  std::unique_ptr<detail::RoughFamilyElements> aligned;  ///< null for the product space (aligned or full otherwise)
 };
 
 RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
@@ -37,6 +38,11 @@ RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha,
                                            int aligned_order)
     : RoughSonineTransport(dimension, alpha, beta, kappa, highest_order) {
   if (space == RoughTrialSpace::product) return;
+  if (space == RoughTrialSpace::full) {
+    tables_->aligned = std::make_unique<detail::RoughChiralFamilyElements>(dimension, alpha, beta, kappa, highest_order,
+                                                                           aligned_order);
+    return;
+  }
   if (dimension != 3)
     throw std::invalid_argument("trial_space: the aligned-spin families need dimension = 3 (c.w vanishes for disks)");
   tables_->aligned = std::make_unique<detail::RoughAlignedFamilyElements>(

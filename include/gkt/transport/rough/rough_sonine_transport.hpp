@@ -32,6 +32,8 @@ struct RoughTransportValues {
 enum class RoughTrialSpace {
   product,  ///< the translation × spin Sonine products of (19.40) only (the default)
   aligned,  ///< 3D: the products plus the lowest aligned-spin families (ŵŵ)°, (c·ŵ)(cŵ)°, (ŵŵ)°·c, (c·ŵ)² − c²ŵ²/3
+  full,  ///< the products, the aligned families (3D) and the lowest chiral ones (c(c×ŵ))_sym, (c·ŵ)(ŵ(c×ŵ))_sym, c×ŵ
+         ///< (2D: ŵ(c c⊥)_sym, ŵ c⊥), theory.md §19.22
 };
 
 /// The exact collision tables of one (d, α, β, κ) up to a highest Sonine order, with θ symbolic; each call
@@ -52,8 +54,9 @@ class RoughSonineTransport {
   /// As the first constructor, with the trial space `space`: RoughTrialSpace::aligned appends to each mode the
   /// aligned-spin families (theory.md §19.21) times S_p(x) L_q(y), p + q ≤ aligned_order − 1 (1: the lowest members
   /// alone), exact elements with the products of every order, about Maxwellians only (at, at_maxwellian_state).
-  /// Throws std::invalid_argument naming `trial_space` for aligned with d = 2 (no c·ŵ for disks) and
-  /// `aligned_order` below 1.
+  /// RoughTrialSpace::full appends the same aligned members (3D) and then the lowest chiral families (theory.md
+  /// §19.22; 2D: the chiral ones alone). Throws std::invalid_argument naming `trial_space` for aligned with d = 2
+  /// (no c·ŵ for disks) and `aligned_order` below 1.
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                        int highest_order, RoughTrialSpace space, int aligned_order = 1);
   ~RoughSonineTransport();
