@@ -178,8 +178,8 @@ class RoughWaltonModel final : public TransportModel {
       std::vector<CoefficientValue> out;
       for (const auto& name : coefficients) {
         if (is_walton_hcs_column(name)) {
-          out.push_back(sonine_hcs_value(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"),
-                                         scheme, name, order));
+          out.push_back(sonine_hcs_value(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"), scheme,
+                                         name, order));
           continue;
         }
         out.push_back(choose_order(order, kMaxWaltonOrder, [&](int n) {
@@ -268,8 +268,8 @@ class RoughWaltonModel final : public TransportModel {
                                     const Rational& friction, const std::string& scheme, const std::string& name,
                                     const OrderRequest& order) {
     const int highest = order.tolerance ? kMaxWaltonHcsOrder : order.order;
-    const std::vector<RoughWaltonSonineState>& states = hcs_values(
-        d, alpha.to_double(), beta0.to_double(), kappa.to_double(), friction.to_double(), highest);
+    const std::vector<RoughWaltonSonineState>& states =
+        hcs_values(d, alpha.to_double(), beta0.to_double(), kappa.to_double(), friction.to_double(), highest);
     const auto column = [&](const RoughWaltonSonineState& s) {
       if (name == "rotational_temperature_ratio") return s.temperature_ratio;
       if (name == "cooling_rate") return s.cooling_rate;
@@ -304,8 +304,8 @@ class RoughWaltonModel final : public TransportModel {
   }
 
   /// Returns the linear-scheme Walton HCS at orders 1 … highest (rough_walton_sonine_cooling_states), cached per state.
-  const std::vector<RoughWaltonSonineState>& hcs_values(int d, double alpha, double beta0, double kappa, double friction,
-                                                        int highest) {
+  const std::vector<RoughWaltonSonineState>& hcs_values(int d, double alpha, double beta0, double kappa,
+                                                        double friction, int highest) {
     if (hcs_cache_.size() > 64) hcs_cache_.clear();
     auto& entry = hcs_cache_[{static_cast<double>(d), alpha, beta0, kappa, friction}];
     if (static_cast<int>(entry.size()) < highest)

@@ -271,7 +271,6 @@ void RoughSonineBalances::build_structure(bool oriented) {
     }
     projection_.push_back(std::move(row));
   }
-
 }
 
 RoughSonineBalances::Productions RoughSonineBalances::productions(double tau, bool linear) const {

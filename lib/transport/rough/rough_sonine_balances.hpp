@@ -91,8 +91,8 @@ class RoughSonineBalances {
   [[nodiscard]] Productions productions(double tau, bool linear) const;
   /// A collision average ⟨x1^i y1^j x2^k y2^l x1'^m y1'^n⟩/⟨1⟩ (y = ŵ², the scaled spin) of the linear scheme, from
   /// the exponents (i, j, ·) of partner 1's weight, (k, l, ·) of partner 2's and (m, n, ·) of the test at 1'.
-  using MonomialAverage = std::function<double(const std::array<int, 3>&, const std::array<int, 3>&,
-                                               const std::array<int, 3>&)>;
+  using MonomialAverage =
+      std::function<double(const std::array<int, 3>&, const std::array<int, 3>&, const std::array<int, 3>&)>;
   /// Returns the linear-scheme averages (isotropic ansatz) from `gain` (the average above) and `loss`
   /// (⟨x1^{i+m} y1^{j+n} x2^k y2^l⟩/⟨1⟩, called with the same three exponent triples): the Walton gas's
   /// quadratures (theory.md §19.25) in place of the engine's tables.

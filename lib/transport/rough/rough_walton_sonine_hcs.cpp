@@ -111,8 +111,8 @@ double RoughWaltonSonineState::cumulant(int p, int q) const {
 }
 
 std::vector<RoughWaltonSonineState> rough_walton_sonine_cooling_states(int dimension, double alpha, double beta0,
-                                                                       double kappa, double friction,
-                                                                       int highest_order, int panels) {
+                                                                       double kappa, double friction, int highest_order,
+                                                                       int panels) {
   detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   if (highest_order < 1 || highest_order > kWaltonHcsHighestOrder)
     throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(kWaltonHcsHighestOrder) +

@@ -17,9 +17,9 @@ inline constexpr int kWaltonHcsHighestOrder = 3;
 
 /// The linear-scheme Walton HCS at one Sonine order.
 struct RoughWaltonSonineState {
-  int order = 1;                  ///< Sonine order N (cumulants to p + q = N + 1)
-  double temperature_ratio = 0;   ///< θ = T_r/T_t (+inf where the spin decouples; NaN where not solved)
-  double cooling_rate = 0;        ///< ζ* = ζ/ν0(T_t), ν0 = nT_t/η0(T_t) (NaN where not solved)
+  int order = 1;                            ///< Sonine order N (cumulants to p + q = N + 1)
+  double temperature_ratio = 0;             ///< θ = T_r/T_t (+inf where the spin decouples; NaN where not solved)
+  double cooling_rate = 0;                  ///< ζ* = ζ/ν0(T_t), ν0 = nT_t/η0(T_t) (NaN where not solved)
   std::vector<std::array<int, 2>> indices;  ///< (p, q) of the cumulants, 2 ≤ p + q ≤ N + 1
   std::vector<double> cumulants;            ///< a_pq in the order of `indices` (theory.md (19.26))
   double maxwellian_temperature_ratio = 0;  ///< θ of the Maxwellian approximation (rough_walton.hpp), the order-0 value
@@ -38,7 +38,7 @@ struct RoughWaltonSonineState {
 /// order N's τ by the secant method in ln τ from order N − 1's root (order 1 from rough_walton_linear_cooling_state's)
 /// to 1e-12 (theory.md §19.25). Throws std::invalid_argument naming the field.
 std::vector<RoughWaltonSonineState> rough_walton_sonine_cooling_states(int dimension, double alpha, double beta0,
-                                                                       double kappa, double friction,
-                                                                       int highest_order, int panels = 8);
+                                                                       double kappa, double friction, int highest_order,
+                                                                       int panels = 8);
 
 }  // namespace gkt
