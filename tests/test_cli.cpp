@@ -1055,6 +1055,36 @@ TEST(CliRoughWalton, SonineOrdersOfTheCoolingState) {
   }
 }
 
+// rough-walton's Navier–Stokes columns about the first-Sonine Walton HCS (reference_state = "hcs", theory.md §19.25):
+// for disks at friction = 10⁶ the rough model's values about its linear HCS of degree 2 (to 1e-6: the grazing sliding
+// of a finite μ_f; spheres differ: the rough model's reference carries the orientation terms b_pq, §19.16, the Walton
+// one does not); order 2 and the HCS columns are refused with one line (exit 2).
+TEST(CliRoughWalton, TransportAboutTheCumulantHcs) {
+  const std::string columns =
+      " --set 'coefficients=[\"shear_viscosity\", \"thermal_conductivity\", \"bulk_viscosity\"]'";
+  const CliRun walton = run_gkt("table " + scene_path("rough_walton.toml") + columns +
+                                " --set 'alpha=[0.9]' --set 'friction=[1000000]' --set beta0=0.5 --set "
+                                "'reference_state=\"hcs\"' --set dimension=2 --set moment_of_inertia=0.5");
+  const CliRun rough = run_gkt("table " + scene_path("rough_hcs.toml") + columns +
+                               " --set 'alpha=[0.9]' --set order=1 --set 'reference_state=\"hcs\"' --set hcs_order=2"
+                               " --set dimension=2 --set moment_of_inertia=0.5");
+  ASSERT_EQ(walton.status, 0) << walton.err;
+  ASSERT_EQ(rough.status, 0) << rough.err;
+  const auto w = parse_csv(walton.out), r = parse_csv(rough.out);
+  const auto column = [](const std::vector<std::string>& header, const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  for (const char* name : {"shear_viscosity", "thermal_conductivity", "bulk_viscosity"})
+    EXPECT_NEAR(std::stod(w[1][column(w[0], name)]), std::stod(r[1][column(r[0], name)]), 1e-6) << name;
+  for (const std::string& bad : {std::string(" --set order=2"), std::string(" --set 'coefficients=[\"a20\"]'")}) {
+    const CliRun refused = run_gkt("table " + scene_path("rough_walton.toml") + columns +
+                                   " --set 'alpha=[0.9]' --set 'friction=[0.5]' --set 'reference_state=\"hcs\"'" + bad);
+    EXPECT_EQ(refused.status, 2) << bad;
+    EXPECT_TRUE(refused.out.empty());
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  }
+}
+
 // `gkt evolve` at Sonine order 2 (theory.md §19.13, (19.25b)–(19.25c)): the oriented trajectory's last row equals
 // `gkt table` at order 2 (the oriented linear HCS) in θ, ζ*, a20, a02, a11, a03, b00, b01 and C; its columns add the
 // cubic cumulants and b10, b01 after the order-1 ones.

@@ -11,7 +11,9 @@
 
 #include "dsmc_rough.hpp"
 #include "gkt/transport/rough/rough_sonine_cooling_state.hpp"
+#include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "gkt/transport/rough/rough_walton_cumulants.hpp"
+#include "gkt/transport/rough/rough_walton_sonine.hpp"
 #include "gkt/transport/rough/rough_walton_sonine_hcs.hpp"
 
 using gkt::Rational;
@@ -112,4 +114,40 @@ TEST(RoughWaltonSonineHcs, DecoupledSpinAndBadInput) {
   EXPECT_THROW((void)gkt::rough_walton_sonine_cooling_states(3, 0.9, 1.0, 0.4, 0.5, 0), std::invalid_argument);
   EXPECT_THROW((void)gkt::rough_walton_sonine_cooling_states(3, 1.5, 1.0, 0.4, 0.5, 1), std::invalid_argument);
   EXPECT_THROW((void)gkt::rough_walton_sonine_cooling_states(3, 0.9, 1.0, 0.4, -1.0, 1), std::invalid_argument);
+}
+
+// Navier–Stokes about the cumulant HCS (theory.md §19.25, (19.127)): at μ_f = ∞ the Walton elements weighted by
+// Φ = Σ a_pq S_p S_q (quadrature, products of up to 2K + 4 forms) and the sources over f0 give the constant-β
+// solver's values about its first-Sonine linear HCS (exact weighted engine tables, RoughSonineTransport::
+// at_cooling_state) to 1e-8 at orders 1, 2, d = 2, 3; with sliding (0.9, 1, 0.5) the cumulant reference moves every
+// column away from the Maxwellian reference (by more than 1e-3 relative).
+TEST(RoughWaltonSonineHcs, TransportAboutTheCumulantHcs) {
+  for (int d : {3, 2}) {
+    const Rational alpha(9, 10), beta(1, 2), kappa = d == 3 ? Rational(2, 5) : Rational(1, 2);
+    const auto hcs = gkt::rough_walton_sonine_cooling_states(d, 0.9, 0.5, kappa.to_double(), kInf, 1);
+    const auto w = gkt::rough_walton_sonine_transport_about_hcs(d, 0.9, 0.5, kappa.to_double(), kInf, hcs[0], 2);
+    const gkt::RoughSonineTransport t(d, alpha, beta, kappa, 2, 2);
+    const auto e = gkt::rough_sonine_cooling_state(d, alpha, beta, kappa, 1, gkt::RoughSonineScheme::linear);
+    for (int n = 1; n <= 2; ++n) {
+      const auto v = t.at_cooling_state(n, e);
+      const auto& x = w[static_cast<std::size_t>(n - 1)];
+      EXPECT_NEAR(x.shear_viscosity, v.shear_viscosity, 1e-8) << d << " " << n;
+      EXPECT_NEAR(x.thermal_conductivity, v.thermal_conductivity, 1e-8) << d << " " << n;
+      EXPECT_NEAR(x.density_heat_coefficient, v.density_heat_coefficient, 1e-8) << d << " " << n;
+      EXPECT_NEAR(x.bulk_viscosity, v.bulk_viscosity, 1e-8) << d << " " << n;
+      EXPECT_NEAR(x.cooling_rate_first_order, v.cooling_rate_first_order, 1e-8) << d << " " << n;
+    }
+  }
+  const auto hcs = gkt::rough_walton_sonine_cooling_states(3, 0.9, 1.0, 0.4, 0.5, 1);
+  const auto about = gkt::rough_walton_sonine_transport_about_hcs(3, 0.9, 1.0, 0.4, 0.5, hcs[0], 1);
+  const auto maxwellian =
+      gkt::rough_walton_sonine_transport(3, 0.9, 1.0, 0.4, 0.5, hcs[0].maxwellian_temperature_ratio, 1);
+  for (const auto& [x, y] : {std::pair{about[0].shear_viscosity, maxwellian[0].shear_viscosity},
+                             std::pair{about[0].thermal_conductivity, maxwellian[0].thermal_conductivity},
+                             std::pair{about[0].bulk_viscosity, maxwellian[0].bulk_viscosity}})
+    EXPECT_GT(std::abs(x - y), 1e-3 * std::abs(y));
+  auto unsolved = hcs[0];
+  unsolved.solved = false;
+  EXPECT_THROW((void)gkt::rough_walton_sonine_transport_about_hcs(3, 0.9, 1.0, 0.4, 0.5, unsolved, 1),
+               std::invalid_argument);
 }

@@ -114,6 +114,12 @@ class RoughWaltonModel final : public TransportModel {
                                 "(cumulants nan) where the linear scheme has no root; the transport and stability "
                                 "columns stay at the Maxwellian theta",
                                 {"maxwellian", "linear", "linear-or-maxwellian"}));
+    specs.push_back(
+        choice_spec("reference_state",
+                    "f0 of the Navier-Stokes columns: Maxwellians at the Maxwellian theta (default), or the "
+                    "first-Sonine linear Walton HCS with its theta, cooling rate and a20, a02, a11 (order = 1 "
+                    "only; the error adds the change from the Maxwellian reference)",
+                    {"maxwellian", "hcs"}));
     return specs;
   }
   [[nodiscard]] int max_order() const override { return std::max(kMaxWaltonOrder, kMaxWaltonHcsOrder); }
@@ -149,6 +155,9 @@ class RoughWaltonModel final : public TransportModel {
     // tolerance, the five Navier–Stokes columns come from the Sonine solver of §19.20 about the Maxwellian HCS with
     // the error (6.3) from orders N + 1 … N + 3 (theory.md §6); every other column exists at order 1 only.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
+    if (SchemaPoint(specs, point).choice("reference_state") == "hcs")
+      return about_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"), coefficients,
+                                 order);
     // With hcs = "linear" (or "linear-or-maxwellian") the HCS columns exist at orders 1 … 3 (theory.md §19.25).
     const std::string scheme = SchemaPoint(specs, point).choice("hcs");
     const bool sonine_hcs = scheme != "maxwellian";
@@ -260,6 +269,54 @@ class RoughWaltonModel final : public TransportModel {
   }
 
  private:
+  /// Returns the five Navier–Stokes columns at order 1 about the first-Sonine linear Walton HCS (theory.md §19.25,
+  /// (19.127)) with the error (6.1) from orders 2, 3 about it plus the reference step |v_1(hcs) − v_1(Maxwellian)|
+  /// ((19.46)); every other column, other orders and a tolerance are refused (one line): order 2 would need the
+  /// weighted tables of order 4, twelve forms, minutes per state.
+  std::vector<CoefficientValue> about_cooling_state(int d, const Rational& alpha, const Rational& beta0,
+                                                    const Rational& kappa, const Rational& friction,
+                                                    const std::vector<std::string>& coefficients,
+                                                    const OrderRequest& order) {
+    for (const auto& name : coefficients)
+      if (!is_rough_sonine_column(name))
+        throw std::invalid_argument("coefficients: " + name +
+                                    " of model rough-walton is not computed with reference_state = \"hcs\"; ask for "
+                                    "shear_viscosity, bulk_viscosity, thermal_conductivity, density_heat_coefficient "
+                                    "or cooling_rate_first_order");
+    if (order.tolerance || order.row_tolerance || order.order != 1)
+      throw std::invalid_argument(
+          "order: rough-walton with reference_state = \"hcs\" is computed at order = 1 only (no tolerance)");
+    const double a = alpha.to_double(), b = beta0.to_double(), k = kappa.to_double(), f = friction.to_double();
+    const std::vector<RoughWaltonSonineState>& hcs = hcs_values(d, a, b, k, f, 1);
+    if (hcs[0].spin_decoupled) {  // no Walton HCS: every column NaN, as about the Maxwellian
+      std::vector<CoefficientValue> out;
+      for (std::size_t i = 0; i < coefficients.size(); ++i) out.push_back(first_approximation(std::nan("")));
+      return out;
+    }
+    if (!hcs[0].solved)
+      throw std::invalid_argument(
+          "reference_state: the linear scheme of the Walton gas has no root with realizable cumulants at dimension = " +
+          std::to_string(d) + ", alpha = " + alpha.to_decimal_string() + ", beta0 = " + beta0.to_decimal_string() +
+          ", moment_of_inertia = " + kappa.to_decimal_string() + ", friction = " + friction.to_decimal_string() +
+          " (docs/theory.md section 19.19); use reference_state = \"maxwellian\"");
+    const std::vector<RoughTransportValues> v = rough_walton_sonine_transport_about_hcs(d, a, b, k, f, hcs[0], 3);
+    const std::vector<RoughTransportValues>& m = sonine_values(d, a, b, k, f, 3);
+    std::vector<CoefficientValue> out;
+    for (const auto& name : coefficients) {
+      const OrderValue ov = estimate_from_doubles(rough_sonine_column(v[0], name), rough_sonine_column(v[1], name),
+                                                  rough_sonine_column(v[2], name));
+      CoefficientValue c{ov.estimate.value, ov.estimate.error, 1, ov.defined && ov.estimate.converging, false,
+                         ov.defined};
+      c.divergence = ov.estimate.divergence;
+      if (ov.defined) {
+        const double step = std::abs(rough_sonine_column(v[0], name) - rough_sonine_column(m[0], name));
+        c.error = c.error + Rational::from_double(step);  // (19.46): the reference step
+      }
+      out.push_back(c);
+    }
+    return out;
+  }
+
   /// Returns one HCS column (θ, ζ*, a20, a02, a11) of the order-N linear-scheme Walton HCS (theory.md §19.25) with
   /// the error |v_N − v_{N−1}| (v_0 the Maxwellian θ, ζ* and cumulants 0), at `order` or the smallest N ≤ 3 whose
   /// error is below the tolerance; `hcs = "linear"` refuses (one line) a state the linear scheme cannot solve at the

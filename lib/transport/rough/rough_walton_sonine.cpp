@@ -22,7 +22,8 @@ namespace gkt {
 namespace detail {
 
 RoughCollisionElements rough_walton_collision_elements(int dimension, double alpha, double beta0, double kappa,
-                                                       double friction, double tau, int highest_order, int panels) {
+                                                       double friction, double tau, int highest_order, int panels,
+                                                       const std::vector<WaltonWeightTerm>* weight) {
   check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   if (!(tau > 0) || !std::isfinite(tau)) throw std::invalid_argument("temperature_ratio: must be > 0 and finite");
   if (highest_order < 1 || highest_order > kWaltonHighestOrder)
@@ -35,19 +36,26 @@ RoughCollisionElements rough_walton_collision_elements(int dimension, double alp
   // (rough_sonine_systems.cpp): trial powers (i, j) of slot a, test powers (a, b) of slot b, the tensor part
   // (c_a·c_b)² − X_a X_b/d for rank 2. Each entry a list of (coefficient, moment index).
   using Combination = std::vector<std::pair<double, int>>;
-  const auto product = [&](int dot, int r, int xa, int i, int ya, int j, int xb, int a, int yb, int b) {
+  const auto product = [&](int dot, int r, int xa, int i, int ya, int j, int xb, int a, int yb, int b, int xc, int m,
+                           int yc, int l) {
     std::vector<int> f;
     f.insert(f.end(), static_cast<std::size_t>(r), dot);
     f.insert(f.end(), static_cast<std::size_t>(i), xa);
     f.insert(f.end(), static_cast<std::size_t>(j), ya);
     f.insert(f.end(), static_cast<std::size_t>(a), xb);
     f.insert(f.end(), static_cast<std::size_t>(b), yb);
+    f.insert(f.end(), static_cast<std::size_t>(m), xc);
+    f.insert(f.end(), static_cast<std::size_t>(l), yc);
     return moments.moment(f);
   };
+  // Without a weight: the plain L. With one (theory.md (19.44), (19.127)): Φ(2) on the pairs (1, 1), (1, 1') and
+  // Φ(1) on (2, 1), (2, 1'), Φ = Σ c x^m y^l.
+  const std::vector<WaltonWeightTerm> unit{{0, 0, 1.0}};
+  const std::vector<WaltonWeightTerm>& terms = weight ? *weight : unit;
   std::array<std::vector<Combination>, 3> table;
   for (int rank = 0; rank <= 2; ++rank) {
     const int top = rank == 2 ? k - 1 : k;
-    const double weight = rough_contraction_weight(d, rank).to_double();
+    const double contraction = rough_contraction_weight(d, rank).to_double();
     table[static_cast<std::size_t>(rank)].assign(static_cast<std::size_t>(n * n * n * n), {});
     for (int i = 0; i <= top; ++i)
       for (int j = 0; i + j <= top; ++j)
@@ -55,14 +63,19 @@ RoughCollisionElements rough_walton_collision_elements(int dimension, double alp
           for (int b = 0; a + b <= top; ++b) {
             Combination& e =
                 table[static_cast<std::size_t>(rank)][static_cast<std::size_t>(((i * n + j) * n + a) * n + b)];
-            e.push_back({weight, product(kX1, 0, kX1, rank + i + a, kY1, j + b, kX1, 0, kY1, 0)});
-            // (slot a, slot b, sign): (1, 1') −, (2, 1) +, (2, 1') −.
-            const std::array<std::array<int, 6>, 3> pairs{
-                {{kD11p, kX1, kY1, kX1p, kY1p, -1}, {kD21, kX2, kY2, kX1, kY1, 1}, {kD21p, kX2, kY2, kX1p, kY1p, -1}}};
-            for (const auto& [dot, xa, ya, xb, yb, sign] : pairs) {
-              e.push_back({sign, product(dot, rank, xa, i, ya, j, xb, a, yb, b)});
-              if (rank == 2)
-                e.push_back({-sign / static_cast<double>(d), product(dot, 0, xa, i + 1, ya, j, xb, a + 1, yb, b)});
+            for (const WaltonWeightTerm& t : terms) {
+              e.push_back({t.c * contraction,
+                           product(kX1, 0, kX1, rank + i + a, kY1, j + b, kX1, 0, kY1, 0, kX2, t.x, kY2, t.y)});
+              // (slot a, slot b, sign, weight slot): (1, 1') −, (2, 1) +, (2, 1') −.
+              const std::array<std::array<int, 8>, 3> pairs{{{kD11p, kX1, kY1, kX1p, kY1p, -1, kX2, kY2},
+                                                             {kD21, kX2, kY2, kX1, kY1, 1, kX1, kY1},
+                                                             {kD21p, kX2, kY2, kX1p, kY1p, -1, kX1, kY1}}};
+              for (const auto& [dot, xa, ya, xb, yb, sign, xc, yc] : pairs) {
+                e.push_back({t.c * sign, product(dot, rank, xa, i, ya, j, xb, a, yb, b, xc, t.x, yc, t.y)});
+                if (rank == 2)
+                  e.push_back({-t.c * sign / static_cast<double>(d),
+                               product(dot, 0, xa, i + 1, ya, j, xb, a + 1, yb, b, xc, t.x, yc, t.y)});
+              }
             }
           }
   }
@@ -116,6 +129,46 @@ std::vector<RoughTransportValues> rough_walton_sonine_transport(int dimension, d
   for (int order = 1; order <= highest_order; ++order)
     out.push_back(detail::solve_rough_navier_stokes(
         elements, state, order, decoupled ? std::numeric_limits<double>::infinity() : temperature_ratio));
+  return out;
+}
+
+std::vector<RoughTransportValues> rough_walton_sonine_transport_about_hcs(int dimension, double alpha, double beta0,
+                                                                          double kappa, double friction,
+                                                                          const RoughWaltonSonineState& hcs,
+                                                                          int highest_order, int panels) {
+  detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
+  if (!hcs.solved || hcs.spin_decoupled || !std::isfinite(hcs.temperature_ratio))
+    throw std::invalid_argument("hcs: the Walton HCS is not solved (no realizable root, or the spin decouples)");
+  const double tau = hcs.temperature_ratio / kappa;
+  // Φ = Σ a_pq S_p(x) S_q(y) as monomials (the HCS's polynomials, theory.md (19.26)).
+  int top = 0;
+  for (const auto& [p, q] : hcs.indices) top = std::max(top, p + q);
+  const auto sx = sonine_table(sonine_twice_m(dimension, 0), top),
+             sy = sonine_table(detail::rough_rotational_dimension(dimension) - 2, top);
+  std::map<std::pair<int, int>, double> monomials;
+  for (std::size_t w = 0; w < hcs.indices.size(); ++w) {
+    const auto [p, q] = hcs.indices[w];
+    for (int i = 0; i <= p; ++i)
+      for (int j = 0; j <= q; ++j)
+        monomials[{i, j}] += hcs.cumulants[w] *
+                             sx[static_cast<std::size_t>(p)][static_cast<std::size_t>(i)].to_double() *
+                             sy[static_cast<std::size_t>(q)][static_cast<std::size_t>(j)].to_double();
+  }
+  std::vector<detail::WaltonWeightTerm> weight;
+  for (const auto& [e, c] : monomials) weight.push_back({e.first, e.second, c});
+  const detail::RoughCollisionElements elements =
+      detail::rough_walton_collision_elements(dimension, alpha, beta0, kappa, friction, tau, highest_order, panels);
+  const detail::RoughCollisionElements weighted = detail::rough_walton_collision_elements(
+      dimension, alpha, beta0, kappa, friction, tau, highest_order, panels, &weight);
+  detail::RoughCumulantReference reference;
+  reference.indices = hcs.indices;
+  reference.cumulants = hcs.cumulants;
+  reference.cooling_rate = hcs.cooling_rate;
+  reference.weighted_sum = &weighted;
+  const detail::RoughModeState state{dimension, tau, false, &reference};
+  std::vector<RoughTransportValues> out;
+  for (int order = 1; order <= highest_order; ++order)
+    out.push_back(detail::solve_rough_navier_stokes(elements, state, order, hcs.temperature_ratio));
   return out;
 }
 
