@@ -1114,6 +1114,71 @@ TEST(CliRoughWalton, LinearHcsColumns) {
   EXPECT_EQ(f[1][column(f[0], "a02")], "nan");
 }
 
+// rough-walton's HCS columns at Sonine orders 2, 3 (theory.md §19.25): the error printed at order N is the step
+// from order N − 1 (the order-2 and order-1 rows), θ moves by less than that step's predecessor; order 4, and the
+// Navier–Stokes columns at order 3, are refused with one line (exit 2) and no output.
+TEST(CliRoughWalton, SonineOrdersOfTheCoolingState) {
+  const std::string hcs =
+      " --set 'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\", \"a20\", "
+      "\"a02\", \"a11\"]' --set 'alpha=[0.9]' --set 'friction=[0.5]' --set 'hcs=\"linear\"'";
+  std::vector<std::vector<std::vector<std::string>>> rows;
+  for (int n = 1; n <= 3; ++n) {
+    const CliRun run = run_gkt("table " + scene_path("rough_walton.toml") + hcs + " --set order=" + std::to_string(n));
+    ASSERT_EQ(run.status, 0) << run.err;
+    rows.push_back(parse_csv(run.out));
+  }
+  const auto& header = rows[0][0];
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  for (const char* name : {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11"})
+    for (std::size_t n = 1; n < 3; ++n) {
+      const double step = std::abs(std::stod(rows[n][1][column(name)]) - std::stod(rows[n - 1][1][column(name)]));
+      EXPECT_NEAR(std::stod(rows[n][1][column(std::string(name) + "_error")]), step, 0.01 * step + 1e-12) << name;
+    }
+  const auto theta = [&](std::size_t n) { return std::stod(rows[n][1][column("rotational_temperature_ratio")]); };
+  EXPECT_LT(std::abs(theta(2) - theta(1)), std::abs(theta(1) - theta(0)));
+  EXPECT_NEAR(theta(2), 0.89423, 1e-5);  // theory.md §19.25
+  for (const std::string& bad :
+       {hcs + " --set order=4", hcs + " --set order=3 --set 'coefficients=[\"shear_viscosity\"]'"}) {
+    const CliRun refused = run_gkt("table " + scene_path("rough_walton.toml") + bad);
+    EXPECT_EQ(refused.status, 2) << bad;
+    EXPECT_TRUE(refused.out.empty());
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+    EXPECT_NE(refused.err.find("order: "), std::string::npos) << refused.err;
+  }
+}
+
+// rough-walton's Navier–Stokes columns about the first-Sonine Walton HCS (reference_state = "hcs", theory.md §19.25):
+// for disks at friction = 10⁶ the rough model's values about its linear HCS of degree 2 (to 1e-6: the grazing sliding
+// of a finite μ_f; spheres differ: the rough model's reference carries the orientation terms b_pq, §19.16, the Walton
+// one does not); order 2 and the HCS columns are refused with one line (exit 2).
+TEST(CliRoughWalton, TransportAboutTheCumulantHcs) {
+  const std::string columns =
+      " --set 'coefficients=[\"shear_viscosity\", \"thermal_conductivity\", \"bulk_viscosity\"]'";
+  const CliRun walton = run_gkt("table " + scene_path("rough_walton.toml") + columns +
+                                " --set 'alpha=[0.9]' --set 'friction=[1000000]' --set beta0=0.5 --set "
+                                "'reference_state=\"hcs\"' --set dimension=2 --set moment_of_inertia=0.5");
+  const CliRun rough = run_gkt("table " + scene_path("rough_hcs.toml") + columns +
+                               " --set 'alpha=[0.9]' --set order=1 --set 'reference_state=\"hcs\"' --set hcs_order=2"
+                               " --set dimension=2 --set moment_of_inertia=0.5");
+  ASSERT_EQ(walton.status, 0) << walton.err;
+  ASSERT_EQ(rough.status, 0) << rough.err;
+  const auto w = parse_csv(walton.out), r = parse_csv(rough.out);
+  const auto column = [](const std::vector<std::string>& header, const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  for (const char* name : {"shear_viscosity", "thermal_conductivity", "bulk_viscosity"})
+    EXPECT_NEAR(std::stod(w[1][column(w[0], name)]), std::stod(r[1][column(r[0], name)]), 1e-6) << name;
+  for (const std::string& bad : {std::string(" --set order=2"), std::string(" --set 'coefficients=[\"a20\"]'")}) {
+    const CliRun refused = run_gkt("table " + scene_path("rough_walton.toml") + columns +
+                                   " --set 'alpha=[0.9]' --set 'friction=[0.5]' --set 'reference_state=\"hcs\"'" + bad);
+    EXPECT_EQ(refused.status, 2) << bad;
+    EXPECT_TRUE(refused.out.empty());
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  }
+}
+
 // `gkt evolve` at Sonine order 2 (theory.md §19.13, (19.25b)–(19.25c)): the oriented trajectory's last row equals
 // `gkt table` at order 2 (the oriented linear HCS) in θ, ζ*, a20, a02, a11, a03, b00, b01 and C; its columns add the
 // cubic cumulants and b10, b01 after the order-1 ones.
@@ -1275,7 +1340,7 @@ TEST(CliRoughWalton, ConstantBetaLimitAndBadInput) {
            {"beta0=1.5", "beta0: must be a number in [-1, 1], got 1.5"},
            {"moment_of_inertia=0", "moment_of_inertia: must be a number in (0, 1], got 0"},
            {"beta=0.5", "beta: unknown key for model \"rough-walton\""},
-           {"order=3", "order: must be 1 or 2, got 3"},
+           {"order=4", "order: must be an integer in [1, 3], got 4"},
            {"order=2",
             "coefficients: rotational_temperature_ratio of model rough-walton is computed at order 1 only"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_walton.toml") + " --set " + set);

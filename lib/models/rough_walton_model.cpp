@@ -17,6 +17,7 @@
 #include "gkt/transport/rough/rough_walton.hpp"
 #include "gkt/transport/rough/rough_walton_cumulants.hpp"
 #include "gkt/transport/rough/rough_walton_sonine.hpp"
+#include "gkt/transport/rough/rough_walton_sonine_hcs.hpp"
 #include "models/models.hpp"
 #include "models/rough_parameters.hpp"
 
@@ -37,6 +38,9 @@ const std::vector<std::string> kWaltonTableColumns{"rotational_temperature_ratio
 /// confirm a sign change, theory.md (6.3); past the cap such a change stays unconfirmed and flagged), and the Walton
 /// elements stop at order 4 (10–25 s of CPU there; order 5 would take minutes, docs/performance.md).
 constexpr int kMaxWaltonOrder = 2;
+
+/// Highest Sonine order of the HCS columns with `hcs = "linear"` (theory.md §19.25; order 4 would cost ~15× order 3).
+constexpr int kMaxWaltonHcsOrder = kWaltonHcsHighestOrder;
 
 /// Returns the HCS stability of the Walton gas from its Maxwellian θ, ζ* and first-Sonine coefficients
 /// (theory.md §19.15); NaN everywhere where the spin decouples (no HCS of the spin, §19.10).
@@ -110,9 +114,15 @@ class RoughWaltonModel final : public TransportModel {
                                 "(cumulants nan) where the linear scheme has no root; the transport and stability "
                                 "columns stay at the Maxwellian theta",
                                 {"maxwellian", "linear", "linear-or-maxwellian"}));
+    specs.push_back(
+        choice_spec("reference_state",
+                    "f0 of the Navier-Stokes columns: Maxwellians at the Maxwellian theta (default), or the "
+                    "first-Sonine linear Walton HCS with its theta, cooling rate and a20, a02, a11 (order = 1 "
+                    "only; the error adds the change from the Maxwellian reference)",
+                    {"maxwellian", "hcs"}));
     return specs;
   }
-  [[nodiscard]] int max_order() const override { return kMaxWaltonOrder; }
+  [[nodiscard]] int max_order() const override { return std::max(kMaxWaltonOrder, kMaxWaltonHcsOrder); }
   [[nodiscard]] bool supports(Capability capability) const override {
     return capability == Capability::table || capability == Capability::evolve || capability == Capability::stability;
   }
@@ -145,20 +155,42 @@ class RoughWaltonModel final : public TransportModel {
     // tolerance, the five Navier–Stokes columns come from the Sonine solver of §19.20 about the Maxwellian HCS with
     // the error (6.3) from orders N + 1 … N + 3 (theory.md §6); every other column exists at order 1 only.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
+    if (SchemaPoint(specs, point).choice("reference_state") == "hcs")
+      return about_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"), coefficients,
+                                 order);
+    // With hcs = "linear" (or "linear-or-maxwellian") the HCS columns exist at orders 1 … 3 (theory.md §19.25).
+    const std::string scheme = SchemaPoint(specs, point).choice("hcs");
+    const bool sonine_hcs = scheme != "maxwellian";
     if (!first)
-      for (const auto& name : coefficients)
+      for (const auto& name : coefficients) {
+        if (sonine_hcs && is_walton_hcs_column(name)) continue;
         if (!is_rough_sonine_column(name))
           throw std::invalid_argument("coefficients: " + name +
                                       " of model rough-walton is computed at order 1 only; use order = 1 without "
                                       "tolerance, or ask for shear_viscosity, bulk_viscosity, thermal_conductivity, "
-                                      "density_heat_coefficient or cooling_rate_first_order");
+                                      "density_heat_coefficient or cooling_rate_first_order" +
+                                      (is_walton_hcs_column(name) ? " (or hcs = \"linear\", orders 1 to 3)" : ""));
+        if (!order.tolerance && order.order > kMaxWaltonOrder)
+          throw std::invalid_argument("order: " + name + " of model rough-walton is computed at orders 1 to " +
+                                      std::to_string(kMaxWaltonOrder) + ", got " + std::to_string(order.order) +
+                                      " (only the HCS columns with hcs = \"linear\" reach order 3)");
+      }
     if (!first) {
       const double friction = SchemaPoint(specs, point).number("friction").to_double();
+      const bool any_transport = std::any_of(coefficients.begin(), coefficients.end(),
+                                             [](const std::string& c) { return is_rough_sonine_column(c); });
+      const std::vector<RoughTransportValues> empty;
       const std::vector<RoughTransportValues>& v =
-          sonine_values(d, alpha.to_double(), beta0.to_double(), kappa.to_double(), friction,
-                        order.tolerance ? kMaxWaltonOrder + 2 : order.order + 2);
+          any_transport ? sonine_values(d, alpha.to_double(), beta0.to_double(), kappa.to_double(), friction,
+                                        order.tolerance ? kMaxWaltonOrder + 2 : order.order + 2)
+                        : empty;
       std::vector<CoefficientValue> out;
-      for (const auto& name : coefficients)
+      for (const auto& name : coefficients) {
+        if (is_walton_hcs_column(name)) {
+          out.push_back(sonine_hcs_value(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"), scheme,
+                                         name, order));
+          continue;
+        }
         out.push_back(choose_order(order, kMaxWaltonOrder, [&](int n) {
           // Orders past the solved ones (N + 3 beyond the library's cap 4) are nan: an unconfirmed sign change.
           const auto at = [&](int m) {
@@ -167,10 +199,10 @@ class RoughWaltonModel final : public TransportModel {
           };
           return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
         }));
+      }
       return out;
     }
     // The HCS columns of `hcs` (theory.md §19.19); the transport and stability columns use the Maxwellian θ, ζ*.
-    const std::string scheme = SchemaPoint(specs, point).choice("hcs");
     std::optional<RoughWaltonCumulantState> linear;
     if (scheme != "maxwellian" && std::any_of(coefficients.begin(), coefficients.end(), is_walton_hcs_column)) {
       linear = rough_walton_linear_cooling_state(d, alpha.to_double(), beta0.to_double(), kappa.to_double(),
@@ -237,6 +269,108 @@ class RoughWaltonModel final : public TransportModel {
   }
 
  private:
+  /// Returns the five Navier–Stokes columns at order 1 about the first-Sonine linear Walton HCS (theory.md §19.25,
+  /// (19.127)) with the error (6.1) from orders 2, 3 about it plus the reference step |v_1(hcs) − v_1(Maxwellian)|
+  /// ((19.46)); every other column, other orders and a tolerance are refused (one line): order 2 would need the
+  /// weighted tables of order 4, twelve forms, minutes per state.
+  std::vector<CoefficientValue> about_cooling_state(int d, const Rational& alpha, const Rational& beta0,
+                                                    const Rational& kappa, const Rational& friction,
+                                                    const std::vector<std::string>& coefficients,
+                                                    const OrderRequest& order) {
+    for (const auto& name : coefficients)
+      if (!is_rough_sonine_column(name))
+        throw std::invalid_argument("coefficients: " + name +
+                                    " of model rough-walton is not computed with reference_state = \"hcs\"; ask for "
+                                    "shear_viscosity, bulk_viscosity, thermal_conductivity, density_heat_coefficient "
+                                    "or cooling_rate_first_order");
+    if (order.tolerance || order.row_tolerance || order.order != 1)
+      throw std::invalid_argument(
+          "order: rough-walton with reference_state = \"hcs\" is computed at order = 1 only (no tolerance)");
+    const double a = alpha.to_double(), b = beta0.to_double(), k = kappa.to_double(), f = friction.to_double();
+    const std::vector<RoughWaltonSonineState>& hcs = hcs_values(d, a, b, k, f, 1);
+    if (hcs[0].spin_decoupled) {  // no Walton HCS: every column NaN, as about the Maxwellian
+      std::vector<CoefficientValue> out;
+      for (std::size_t i = 0; i < coefficients.size(); ++i) out.push_back(first_approximation(std::nan("")));
+      return out;
+    }
+    if (!hcs[0].solved)
+      throw std::invalid_argument(
+          "reference_state: the linear scheme of the Walton gas has no root with realizable cumulants at dimension = " +
+          std::to_string(d) + ", alpha = " + alpha.to_decimal_string() + ", beta0 = " + beta0.to_decimal_string() +
+          ", moment_of_inertia = " + kappa.to_decimal_string() + ", friction = " + friction.to_decimal_string() +
+          " (docs/theory.md section 19.19); use reference_state = \"maxwellian\"");
+    const std::vector<RoughTransportValues> v = rough_walton_sonine_transport_about_hcs(d, a, b, k, f, hcs[0], 3);
+    const std::vector<RoughTransportValues>& m = sonine_values(d, a, b, k, f, 3);
+    std::vector<CoefficientValue> out;
+    for (const auto& name : coefficients) {
+      const OrderValue ov = estimate_from_doubles(rough_sonine_column(v[0], name), rough_sonine_column(v[1], name),
+                                                  rough_sonine_column(v[2], name));
+      CoefficientValue c{ov.estimate.value, ov.estimate.error, 1, ov.defined && ov.estimate.converging, false,
+                         ov.defined};
+      c.divergence = ov.estimate.divergence;
+      if (ov.defined) {
+        const double step = std::abs(rough_sonine_column(v[0], name) - rough_sonine_column(m[0], name));
+        c.error = c.error + Rational::from_double(step);  // (19.46): the reference step
+      }
+      out.push_back(c);
+    }
+    return out;
+  }
+
+  /// Returns one HCS column (θ, ζ*, a20, a02, a11) of the order-N linear-scheme Walton HCS (theory.md §19.25) with
+  /// the error |v_N − v_{N−1}| (v_0 the Maxwellian θ, ζ* and cumulants 0), at `order` or the smallest N ≤ 3 whose
+  /// error is below the tolerance; `hcs = "linear"` refuses (one line) a state the linear scheme cannot solve at the
+  /// orders asked for, `"linear-or-maxwellian"` gives there the Maxwellian θ, ζ* and NaN cumulants.
+  CoefficientValue sonine_hcs_value(int d, const Rational& alpha, const Rational& beta0, const Rational& kappa,
+                                    const Rational& friction, const std::string& scheme, const std::string& name,
+                                    const OrderRequest& order) {
+    const int highest = order.tolerance ? kMaxWaltonHcsOrder : order.order;
+    const std::vector<RoughWaltonSonineState>& states =
+        hcs_values(d, alpha.to_double(), beta0.to_double(), kappa.to_double(), friction.to_double(), highest);
+    const auto column = [&](const RoughWaltonSonineState& s) {
+      if (name == "rotational_temperature_ratio") return s.temperature_ratio;
+      if (name == "cooling_rate") return s.cooling_rate;
+      return s.cumulant(name == "a20" ? 2 : name == "a11" ? 1 : 0, name == "a20" ? 0 : name == "a11" ? 1 : 2);
+    };
+    // A fixed order needs that order's root; a tolerance scans the solved orders (an unsolved one is undefined).
+    const RoughWaltonSonineState& top = states[static_cast<std::size_t>(order.tolerance ? 0 : highest - 1)];
+    if (!top.solved && !top.spin_decoupled) {
+      if (scheme == "linear")
+        throw std::invalid_argument(
+            "hcs: the linear scheme of the Walton gas at order " + std::to_string(highest) +
+            " has no root with realizable cumulants near the order below at dimension = " + std::to_string(d) +
+            ", alpha = " + alpha.to_decimal_string() + ", beta0 = " + beta0.to_decimal_string() +
+            ", moment_of_inertia = " + kappa.to_decimal_string() + ", friction = " + friction.to_decimal_string() +
+            " (docs/theory.md section 19.25); use a lower order, hcs = \"maxwellian\" or \"linear-or-maxwellian\"");
+      if (name == "rotational_temperature_ratio") return first_approximation(top.maxwellian_temperature_ratio);
+      if (name == "cooling_rate") return first_approximation(top.maxwellian_cooling_rate);
+      return first_approximation(std::nan(""));
+    }
+    if (top.spin_decoupled)  // no Walton HCS: θ = inf, the rest NaN (as at order 1)
+      return first_approximation(name == "rotational_temperature_ratio" ? top.temperature_ratio : std::nan(""));
+    const double maxwellian = name == "rotational_temperature_ratio" ? top.maxwellian_temperature_ratio
+                              : name == "cooling_rate"               ? top.maxwellian_cooling_rate
+                                                                     : 0.0;
+    return choose_order(order, highest, [&](int n) {
+      const double v = column(states[static_cast<std::size_t>(n - 1)]);
+      const double below = n == 1 ? maxwellian : column(states[static_cast<std::size_t>(n - 2)]);
+      OrderValue out{{Rational(0), Rational(0), true}, std::isfinite(v) && std::isfinite(below), false};
+      if (out.defined) out.estimate = {Rational::from_double(v), Rational::from_double(std::abs(v - below)), true};
+      return out;
+    });
+  }
+
+  /// Returns the linear-scheme Walton HCS at orders 1 … highest (rough_walton_sonine_cooling_states), cached per state.
+  const std::vector<RoughWaltonSonineState>& hcs_values(int d, double alpha, double beta0, double kappa,
+                                                        double friction, int highest) {
+    if (hcs_cache_.size() > 64) hcs_cache_.clear();
+    auto& entry = hcs_cache_[{static_cast<double>(d), alpha, beta0, kappa, friction}];
+    if (static_cast<int>(entry.size()) < highest)
+      entry = rough_walton_sonine_cooling_states(d, alpha, beta0, kappa, friction, highest);
+    return entry;
+  }
+  std::map<std::array<double, 5>, std::vector<RoughWaltonSonineState>> hcs_cache_;
+
   /// Returns the Navier–Stokes values of orders 1 … highest about the Maxwellian HCS (empty where the spin decouples:
   /// no Walton HCS, every column NaN as at order 1), cached per state.
   const std::vector<RoughTransportValues>& sonine_values(int d, double alpha, double beta0, double kappa,

@@ -104,83 +104,9 @@ RoughSonineBalances::RoughSonineBalances(int dimension, const Rational& alpha, c
   if (highest_degree < 2) throw std::invalid_argument("RoughSonineBalances: highest Sonine degree must be >= 2");
   // Disks: ŵ is normal to the plane of c, c·ŵ ≡ 0 and P ≡ −xy/3 adds nothing; at β = −1 no spin balance.
   const bool oriented = orientation && dimension == 3 && !decoupled_;
+  build_structure(oriented);
   const int m = highest_degree;
   const int spin_top = decoupled_ ? 0 : m;
-  for (int n = 2; n <= m; ++n)
-    for (int q = 0; q <= std::min(n, spin_top); ++q) cumulants_.push_back({n - q, q});
-  if (oriented)
-    for (int n = 0; n <= m - 2; ++n)
-      for (int q = 0; q <= n; ++q) orientations_.push_back({n - q, q});
-  tests_.push_back({1, {{{1, 0, 0}, Rational(1)}}});
-  tests_.push_back({1, {{{0, 1, 0}, Rational(1)}}});
-  for (const auto& c : cumulants_) tests_.push_back({c[0] + c[1], {{{c[0], c[1], 0}, Rational(1)}}});
-  // P x^k y^l = x^k y^l (c·ŵ)² − x^{k+1} y^{l+1}/3.
-  for (const auto& c : orientations_)
-    tests_.push_back({c[0] + c[1] + 2, {{{c[0], c[1], 1}, Rational(1)}, {{c[0] + 1, c[1] + 1, 0}, Rational(-1, 3)}}});
-  for (int i = 0; i <= m; ++i)
-    for (int j = 0; j <= std::min(m - i, spin_top); ++j) monomials_.push_back({i, j, 0});
-  if (oriented)
-    for (int i = 0; i <= m - 2; ++i)
-      for (int j = 0; i + j <= m - 2; ++j) monomials_.push_back({i, j, 1});
-  auto monomial_index = [&](const std::array<int, 3>& e) {
-    for (std::size_t k = 0; k < monomials_.size(); ++k)
-      if (monomials_[k] == e) return k;
-    throw std::logic_error("RoughSonineBalances: monomial outside the table");
-  };
-
-  // Sonine products as monomials, and the Maxwellian averages ⟨ψ_t⟩_M, ⟨ψ_t Φ⟩_M: with f = c·ŵ,
-  // ⟨x^i y^j f^{2e}⟩_M = ⟨x^{i+e}⟩⟨y^{j+e}⟩⟨cos^{2e}Θ⟩, ⟨cos²Θ⟩ = 1/3, ⟨cos⁴Θ⟩ = 1/5 (d = 3).
-  const long dt = dimension, dr = dimension == 3 ? 3 : 1;  // 2(m_t + 1), 2(m_r + 1)
-  auto moment_m = [&](const std::array<int, 3>& e) {
-    const Rational angular = e[2] == 0 ? Rational(1) : e[2] == 1 ? Rational(1, 3) : Rational(1, 5);
-    return Rational::rising_half(dt, static_cast<unsigned long>(e[0] + e[2])) *
-           Rational::rising_half(dr, static_cast<unsigned long>(e[1] + e[2])) * angular;
-  };
-  const std::size_t nw = cumulants_.size() + orientations_.size();
-  weight_terms_.resize(nw + 1);
-  weight_terms_[0].push_back({0, 1.0});
-  std::vector<std::vector<std::pair<std::array<int, 3>, Rational>>> exact_weights(nw);
-  for (std::size_t w = 0; w < cumulants_.size(); ++w) {
-    const auto sx = sonine_coefficients(dt, cumulants_[w][0]), sy = sonine_coefficients(dr, cumulants_[w][1]);
-    for (int i = 0; i <= cumulants_[w][0]; ++i)
-      for (int j = 0; j <= cumulants_[w][1]; ++j)
-        exact_weights[w].push_back({{i, j, 0}, sx[static_cast<std::size_t>(i)] * sy[static_cast<std::size_t>(j)]});
-  }
-  // P S_p^(5/2)(x) S_q^(5/2)(y): the rank-2 Sonine polynomials of (cc)°:(ŵŵ)°, orthogonal within the family.
-  for (std::size_t o = 0; o < orientations_.size(); ++o) {
-    auto& terms = exact_weights[cumulants_.size() + o];
-    const auto sx = sonine_coefficients(dt + 4, orientations_[o][0]),
-               sy = sonine_coefficients(dr + 4, orientations_[o][1]);
-    for (int i = 0; i <= orientations_[o][0]; ++i)
-      for (int j = 0; j <= orientations_[o][1]; ++j) {
-        const Rational c = sx[static_cast<std::size_t>(i)] * sy[static_cast<std::size_t>(j)];
-        terms.push_back({{i, j, 1}, c});
-        terms.push_back({{i + 1, j + 1, 0}, c * Rational(-1, 3)});
-      }
-    // C − 1/3 = ⟨(cos²Θ − 1/3) Φ⟩: only the f² terms contribute, ⟨(cos²Θ − 1/3) cos²Θ⟩ = 4/45.
-    Rational c_weight;
-    for (const auto& [e, c] : terms)
-      if (e[2] == 1)
-        c_weight += c * Rational(4, 45) * Rational::rising_half(dt, static_cast<unsigned long>(e[0] + 1)) *
-                    Rational::rising_half(dr, static_cast<unsigned long>(e[1] + 1));
-    correlation_weights_.push_back(c_weight.to_double());
-  }
-  for (std::size_t w = 0; w < nw; ++w)
-    for (const auto& [e, c] : exact_weights[w]) weight_terms_[w + 1].push_back({monomial_index(e), c.to_double()});
-  for (const auto& t : tests_) {
-    Rational mean;
-    for (const auto& [e, c] : t.terms) mean += c * moment_m(e);
-    maxwellian_.push_back(mean.to_double());
-    std::vector<double> row;
-    for (const auto& terms : exact_weights) {
-      Rational s;
-      for (const auto& [et, ct] : t.terms)
-        for (const auto& [e, c] : terms) s += ct * c * moment_m({et[0] + e[0], et[1] + e[1], et[2] + e[2]});
-      row.push_back(s.to_double());
-    }
-    projection_.push_back(std::move(row));
-  }
-
   const std::size_t nm = monomials_.size(), nt = tests_.size();
   d_.assign(nm * nm * nt, TauLaurent{});
   // D(a, b; t) = Σ_terms c [gain − loss], as a function of the table lookups.
@@ -260,8 +186,95 @@ RoughSonineBalances::RoughSonineBalances(int dimension, const Rational& alpha, c
       });
 }
 
+RoughSonineBalances::RoughSonineBalances(int dimension, int highest_degree, bool spin_decoupled)
+    : dimension_(dimension), highest_(highest_degree), products_(false), decoupled_(spin_decoupled) {
+  if (dimension != 2 && dimension != 3)
+    throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
+  if (highest_degree < 2) throw std::invalid_argument("RoughSonineBalances: highest Sonine degree must be >= 2");
+  build_structure(false);
+}
+
+void RoughSonineBalances::build_structure(bool oriented) {
+  const int dimension = dimension_, m = highest_;
+  const int spin_top = decoupled_ ? 0 : m;
+  for (int n = 2; n <= m; ++n)
+    for (int q = 0; q <= std::min(n, spin_top); ++q) cumulants_.push_back({n - q, q});
+  if (oriented)
+    for (int n = 0; n <= m - 2; ++n)
+      for (int q = 0; q <= n; ++q) orientations_.push_back({n - q, q});
+  tests_.push_back({1, {{{1, 0, 0}, Rational(1)}}});
+  tests_.push_back({1, {{{0, 1, 0}, Rational(1)}}});
+  for (const auto& c : cumulants_) tests_.push_back({c[0] + c[1], {{{c[0], c[1], 0}, Rational(1)}}});
+  // P x^k y^l = x^k y^l (c·ŵ)² − x^{k+1} y^{l+1}/3.
+  for (const auto& c : orientations_)
+    tests_.push_back({c[0] + c[1] + 2, {{{c[0], c[1], 1}, Rational(1)}, {{c[0] + 1, c[1] + 1, 0}, Rational(-1, 3)}}});
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= std::min(m - i, spin_top); ++j) monomials_.push_back({i, j, 0});
+  if (oriented)
+    for (int i = 0; i <= m - 2; ++i)
+      for (int j = 0; i + j <= m - 2; ++j) monomials_.push_back({i, j, 1});
+  auto monomial_index = [&](const std::array<int, 3>& e) {
+    for (std::size_t k = 0; k < monomials_.size(); ++k)
+      if (monomials_[k] == e) return k;
+    throw std::logic_error("RoughSonineBalances: monomial outside the table");
+  };
+
+  // Sonine products as monomials, and the Maxwellian averages ⟨ψ_t⟩_M, ⟨ψ_t Φ⟩_M: with f = c·ŵ,
+  // ⟨x^i y^j f^{2e}⟩_M = ⟨x^{i+e}⟩⟨y^{j+e}⟩⟨cos^{2e}Θ⟩, ⟨cos²Θ⟩ = 1/3, ⟨cos⁴Θ⟩ = 1/5 (d = 3).
+  const long dt = dimension, dr = dimension == 3 ? 3 : 1;  // 2(m_t + 1), 2(m_r + 1)
+  auto moment_m = [&](const std::array<int, 3>& e) {
+    const Rational angular = e[2] == 0 ? Rational(1) : e[2] == 1 ? Rational(1, 3) : Rational(1, 5);
+    return Rational::rising_half(dt, static_cast<unsigned long>(e[0] + e[2])) *
+           Rational::rising_half(dr, static_cast<unsigned long>(e[1] + e[2])) * angular;
+  };
+  const std::size_t nw = cumulants_.size() + orientations_.size();
+  weight_terms_.resize(nw + 1);
+  weight_terms_[0].push_back({0, 1.0});
+  std::vector<std::vector<std::pair<std::array<int, 3>, Rational>>> exact_weights(nw);
+  for (std::size_t w = 0; w < cumulants_.size(); ++w) {
+    const auto sx = sonine_coefficients(dt, cumulants_[w][0]), sy = sonine_coefficients(dr, cumulants_[w][1]);
+    for (int i = 0; i <= cumulants_[w][0]; ++i)
+      for (int j = 0; j <= cumulants_[w][1]; ++j)
+        exact_weights[w].push_back({{i, j, 0}, sx[static_cast<std::size_t>(i)] * sy[static_cast<std::size_t>(j)]});
+  }
+  // P S_p^(5/2)(x) S_q^(5/2)(y): the rank-2 Sonine polynomials of (cc)°:(ŵŵ)°, orthogonal within the family.
+  for (std::size_t o = 0; o < orientations_.size(); ++o) {
+    auto& terms = exact_weights[cumulants_.size() + o];
+    const auto sx = sonine_coefficients(dt + 4, orientations_[o][0]),
+               sy = sonine_coefficients(dr + 4, orientations_[o][1]);
+    for (int i = 0; i <= orientations_[o][0]; ++i)
+      for (int j = 0; j <= orientations_[o][1]; ++j) {
+        const Rational c = sx[static_cast<std::size_t>(i)] * sy[static_cast<std::size_t>(j)];
+        terms.push_back({{i, j, 1}, c});
+        terms.push_back({{i + 1, j + 1, 0}, c * Rational(-1, 3)});
+      }
+    // C − 1/3 = ⟨(cos²Θ − 1/3) Φ⟩: only the f² terms contribute, ⟨(cos²Θ − 1/3) cos²Θ⟩ = 4/45.
+    Rational c_weight;
+    for (const auto& [e, c] : terms)
+      if (e[2] == 1)
+        c_weight += c * Rational(4, 45) * Rational::rising_half(dt, static_cast<unsigned long>(e[0] + 1)) *
+                    Rational::rising_half(dr, static_cast<unsigned long>(e[1] + 1));
+    correlation_weights_.push_back(c_weight.to_double());
+  }
+  for (std::size_t w = 0; w < nw; ++w)
+    for (const auto& [e, c] : exact_weights[w]) weight_terms_[w + 1].push_back({monomial_index(e), c.to_double()});
+  for (const auto& t : tests_) {
+    Rational mean;
+    for (const auto& [e, c] : t.terms) mean += c * moment_m(e);
+    maxwellian_.push_back(mean.to_double());
+    std::vector<double> row;
+    for (const auto& terms : exact_weights) {
+      Rational s;
+      for (const auto& [et, ct] : t.terms)
+        for (const auto& [e, c] : terms) s += ct * c * moment_m({et[0] + e[0], et[1] + e[1], et[2] + e[2]});
+      row.push_back(s.to_double());
+    }
+    projection_.push_back(std::move(row));
+  }
+}
+
 RoughSonineBalances::Productions RoughSonineBalances::productions(double tau, bool linear) const {
-  const std::size_t nm = monomials_.size(), nt = tests_.size(), nw = weight_terms_.size();
+  const std::size_t nm = monomials_.size(), nt = tests_.size();
   std::vector<double> d(nm * nm * nt, 0.0);
   for (std::size_t a = 0; a < nm; ++a)
     for (std::size_t b = 0; b < nm; ++b) {
@@ -271,6 +284,31 @@ RoughSonineBalances::Productions RoughSonineBalances::productions(double tau, bo
         if (!l.c.empty()) d[(a * nm + b) * nt + t] = l(tau);
       }
     }
+  return contract(d, linear);
+}
+
+RoughSonineBalances::Productions RoughSonineBalances::productions_from(const MonomialAverage& gain,
+                                                                       const MonomialAverage& loss) const {
+  if (!orientations_.empty()) throw std::logic_error("RoughSonineBalances: productions_from is isotropic only");
+  const std::size_t nm = monomials_.size(), nt = tests_.size();
+  std::vector<double> d(nm * nm * nt, 0.0);
+  for (std::size_t a = 0; a < nm; ++a)
+    for (std::size_t b = 0; b < nm; ++b) {
+      if (a != 0 && b != 0) continue;
+      for (std::size_t t = 0; t < nt; ++t) {
+        const Test& test = tests_[t];
+        if (decoupled_ && test.terms.front().first[1] > 0) continue;  // no spin balance at β = −1
+        double sum = 0;
+        for (const auto& [e, c] : test.terms)
+          sum += c.to_double() * (gain(monomials_[a], monomials_[b], e) - loss(monomials_[a], monomials_[b], e));
+        d[(a * nm + b) * nt + t] = sum;
+      }
+    }
+  return contract(d, true);
+}
+
+RoughSonineBalances::Productions RoughSonineBalances::contract(const std::vector<double>& d, bool linear) const {
+  const std::size_t nm = monomials_.size(), nt = tests_.size(), nw = weight_terms_.size();
   Productions r;
   r.weights = nw;
   r.tests = nt;
@@ -319,7 +357,10 @@ std::vector<double> RoughSonineBalances::residual(double tau, std::span<const do
 }
 
 double RoughSonineBalances::translational_rate(double tau, std::span<const double> a, bool linear) const {
-  const Productions r = productions(tau, linear);
+  return translational_rate(productions(tau, linear), a, linear);
+}
+
+double RoughSonineBalances::translational_rate(const Productions& r, std::span<const double> a, bool linear) const {
   double rx = r(0, 0, 0);
   for (std::size_t p = 0; p < unknowns(); ++p) {
     rx += a[p] * (r(p + 1, 0, 0) + r(0, p + 1, 0));

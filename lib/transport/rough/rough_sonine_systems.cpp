@@ -122,11 +122,14 @@ RoughGalerkinSystem system_of(const RoughCollisionElements& elements, const Roug
       s.collision[p][q] = elements.element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q, state.tau);
       if (state.reference) {  // about f_M(1 + Φ): Σ_w a_w W^{(w)} (rough_weighted_elements.hpp)
         const RoughCumulantReference& r = *state.reference;
-        for (std::size_t w = 0; w < r.indices.size(); ++w)
+        if (r.weighted_sum)
+          s.collision[p][q] +=
+              r.weighted_sum->element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q, state.tau);
+        for (std::size_t w = 0; !r.weighted_sum && w < r.indices.size(); ++w)
           s.collision[p][q] +=
               r.cumulants[w] * r.elements->element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q,
                                                    r.indices[w][0], r.indices[w][1], state.tau);
-        for (std::size_t w = 0; w < r.orientation_indices.size(); ++w)
+        for (std::size_t w = 0; !r.weighted_sum && w < r.orientation_indices.size(); ++w)
           s.collision[p][q] +=
               r.orientation_coefficients[w] *
               r.elements->orientation_element(basis[p].rank, basis[p].p, basis[p].q, basis[q].p, basis[q].q,

@@ -111,6 +111,9 @@ struct RoughCumulantReference {
   std::vector<std::array<int, 2>> orientation_indices;       ///< (p, q) of the b_pq (3D; needs oriented elements)
   std::vector<double> orientation_coefficients;              ///< b_pq, in the order of `orientation_indices`
   double cooling_rate = 0;                                   ///< ζ* of that HCS (ζ/ν0(T_t))
+  /// Σ_w a_w W^(w) already summed at τ (the Walton gas's quadrature, theory.md §19.25), used instead of `elements`
+  /// and the cumulants when set (`indices`, `cumulants` still give the sources).
+  const RoughCollisionElements* weighted_sum = nullptr;
 };
 
 /// Where the systems are evaluated: dimension, τ = θ/κ, whether the spin is decoupled (β = −1: translational

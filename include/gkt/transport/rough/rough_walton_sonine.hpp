@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gkt/transport/rough/rough_sonine_transport.hpp"
+#include "gkt/transport/rough/rough_walton_sonine_hcs.hpp"
 
 namespace gkt {
 
@@ -21,5 +22,14 @@ namespace gkt {
 std::vector<RoughTransportValues> rough_walton_sonine_transport(int dimension, double alpha, double beta0, double kappa,
                                                                 double friction, double temperature_ratio,
                                                                 int highest_order, int panels = 8);
+
+/// Returns η*, κ*, μ*, η_b*, ζ_U at Sonine orders 1 … highest_order (≤ 4, element k − 1 is order k) about the Walton
+/// HCS `hcs` (theory.md §19.25, (19.127)): f0 = f_M(c) f_M(ŵ)[1 + Σ a_pq S_p(c²) S_q(ŵ²)] at its θ with its ζ*; the
+/// collision matrix gains Σ a_pq W^(pq) of (19.44), by the same quadrature, and the sources are averages over f0
+/// (19.45). Throws std::invalid_argument naming `hcs` when it is not solved, and the fields as above.
+std::vector<RoughTransportValues> rough_walton_sonine_transport_about_hcs(int dimension, double alpha, double beta0,
+                                                                          double kappa, double friction,
+                                                                          const RoughWaltonSonineState& hcs,
+                                                                          int highest_order, int panels = 8);
 
 }  // namespace gkt
