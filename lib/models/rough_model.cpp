@@ -698,7 +698,11 @@ class RoughModel final : public TransportModel {
         const RoughSonineCoolingRates rates(d, alpha, beta, kappa, degree - 1, reference_ansatz(d));
         std::vector<double> unknowns = hcs.cumulants;
         unknowns.insert(unknowns.end(), hcs.orientation_coefficients.begin(), hcs.orientation_coefficients.end());
-        out = rough_split_slopes(rates, hcs.temperature_ratio, unknowns);
+        try {
+          out = rough_split_slopes(rates, hcs.temperature_ratio, unknowns);
+        } catch (const std::invalid_argument&) {  // the HCS's rates do not balance to 1e-9: no slopes, NaN values
+          out.relaxation_rate = out.cooling_split_slope = nan;
+        }
       }
     }
     return entry.slopes[degree] = out;
