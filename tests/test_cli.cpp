@@ -1284,7 +1284,8 @@ TEST(CliRoughStability, ColumnsLimitsAndNoRootRegion) {
 
 // `rotational_temperature_closure = "field"` (theory.md §19.15.1): T_r as a fourth field gives the three-field
 // critical values (det M4 = −Γ* det M3, (19.38); to 1e-10, the bisection's accuracy) at strong and medium roughness,
-// spheres and disks; a bad value and the field closure beyond the first approximation are refused with one line.
+// spheres and disks; a bad value and the field closure about the nonlinear Sonine HCS (theory.md §19.27) are refused
+// with one line.
 TEST(CliRoughStability, RotationalTemperatureAsAField) {
   const std::string base =
       "stability " + scene_path("rough_stability.toml") + " --set 'alpha=[0.9, 0.7]' --set 'beta=[0.5, -0.5, 0]'";
@@ -1305,8 +1306,9 @@ TEST(CliRoughStability, RotationalTemperatureAsAField) {
   }
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
            {" --set 'rotational_temperature_closure=\"free\"'", "rotational_temperature_closure: must be one of"},
-           {" --set 'rotational_temperature_closure=\"field\"' --set order=2",
-            "rotational_temperature_closure: \"field\" needs order = 1"}}) {
+           {" --set 'rotational_temperature_closure=\"field\"' --set 'reference_state=\"hcs\"' --set "
+            "'hcs=\"nonlinear\"'",
+            "rotational_temperature_closure: \"field\" with reference_state = \"hcs\" needs hcs = \"linear\""}}) {
     const CliRun bad = run_gkt(base + args);
     EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;

@@ -25,9 +25,11 @@ void check_with_spin(const RoughStabilityInput& in) {
   check(in);
   if (!std::isinf(in.temperature_ratio) && (!(in.relaxation_rate > 0) || !std::isfinite(in.relaxation_rate)))
     throw std::invalid_argument("relaxation_rate: must be a finite number > 0 (theory.md (19.17))");
-  if (!std::isinf(in.temperature_ratio) &&
+  if (!std::isinf(in.temperature_ratio) && std::isnan(in.cooling_split_slope) &&
       (!std::isfinite(in.cooling_rate_first_order) || !std::isfinite(in.cooling_rate)))
     throw std::invalid_argument("cooling_rate_first_order: must be finite");
+  if (!std::isinf(in.temperature_ratio) && (std::isinf(in.cooling_split_slope) || !std::isfinite(in.cooling_rate)))
+    throw std::invalid_argument("cooling_split_slope: must be finite (or NaN: from cooling_rate_first_order)");
 }
 
 /// Returns the eigenvalues of a square complex matrix, ordered by decreasing real part.
@@ -88,7 +90,10 @@ std::array<std::array<std::complex<double>, 4>, 4> rough_longitudinal_matrix_wit
   const double d = in.dimension, a = in.cooling_rate, gamma = in.relaxation_rate;
   const double s = rough_translational_share(in.dimension, in.temperature_ratio);
   // theory.md (19.37): ∂(ζ/ν0)/∂δ at fixed n, T, from ζ_U = Δ ∂(ζ/ν0)/∂δ and Δ = (2/d)/(ζ*/2 + Γ*) of (19.18).
-  const double cooling_split = in.cooling_rate_first_order * d * (a / 2 + gamma) / 2;
+  // About the Sonine HCS the slope of the cumulant rates is given (theory.md (19.142)).
+  const double cooling_split = std::isnan(in.cooling_split_slope)
+                                   ? in.cooling_rate_first_order * d * (a / 2 + gamma) / 2
+                                   : in.cooling_split_slope;
   const double heat = s * (d + 2) / (2 * (d - 1));
   const double kappa = heat * in.thermal_conductivity, mu = heat * in.density_heat_coefficient;
   const double eta = (d - 1) / d * in.shear_viscosity;  // no bulk viscosity: it is the split δ's response

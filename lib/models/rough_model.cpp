@@ -32,6 +32,7 @@
 #include "gkt/transport/rough/rough_shear_viscosity.hpp"
 #include "gkt/transport/rough/rough_sonine_cooling_state.hpp"
 #include "gkt/transport/rough/rough_sonine_transport.hpp"
+#include "gkt/transport/rough/rough_split_slopes.hpp"
 #include "gkt/transport/rough/rough_thermal_conductivity.hpp"
 #include "models/models.hpp"
 #include "models/rough_mixture_columns.hpp"
@@ -84,7 +85,8 @@ HcsStability rough_stability(int d, const Rational& alpha, const Rational& beta,
 /// where the state or the coefficients do not exist or η*, κ* − μ* make (19.31) meaningless (η* ≤ 0 or κ* ≤ 0 at a
 /// diverging order). At β = −1 (θ = +∞) the translational κ*, μ*.
 HcsStability rough_reference_stability(int d, const Rational& alpha, const Rational& beta, double theta, double zeta,
-                                       const RoughTransportValues& v) {
+                                       const RoughTransportValues& v,
+                                       const std::optional<RoughSplitSlopes>& split = std::nullopt) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const bool decoupled = std::isinf(theta);
   RoughStabilityInput in;
@@ -101,7 +103,14 @@ HcsStability rough_reference_stability(int d, const Rational& alpha, const Ratio
       !(in.thermal_conductivity > 0) || !std::isfinite(in.thermal_conductivity) ||
       !std::isfinite(in.density_heat_coefficient))
     return HcsStability{nan, nan, nan};
-  return rough_hcs_stability(in);
+  if (!split) return rough_hcs_stability(in);
+  // rotational_temperature_closure = "field" (theory.md §19.15.1, §19.27): Γ*, Z_δ of the reference's rates.
+  if (decoupled) return rough_hcs_stability_with_spin(in);
+  if (!std::isfinite(split->relaxation_rate) || !std::isfinite(split->cooling_split_slope))
+    return HcsStability{nan, nan, nan};
+  in.relaxation_rate = split->relaxation_rate;
+  in.cooling_split_slope = split->cooling_split_slope;
+  return rough_hcs_stability_with_spin(in);
 }
 
 /// Returns the stability value `name` of `s` as a double (critical_length +∞ for a stable HCS).
@@ -239,8 +248,9 @@ class RoughModel final : public TransportModel {
                                 {"products", "aligned", "full"}));
     specs.push_back(choice_spec("rotational_temperature_closure",
                                 "stability columns: T_rot slaved to T in the normal solution (Navier-Stokes, "
-                                "default), or T_rot a fourth field relaxing at the Maxwellian rate (first "
-                                "approximation only: order = 1, reference_state = maxwellian)",
+                                "default), or T_rot a fourth field relaxing at the reference's rate (Maxwellian; "
+                                "with reference_state = hcs, hcs = linear: the cumulant rates' slopes, cumulants "
+                                "held)",
                                 {"slaved", "field"}));
     specs.push_back({"hcs_order",
                      ParameterSpec::Kind::integer,
@@ -337,14 +347,16 @@ class RoughModel final : public TransportModel {
     const auto is_critical = [&critical](const std::string& c) {
       return std::find(critical.begin(), critical.end(), c) != critical.end();
     };
-    // T_r as a fourth field (theory.md §19.15.1) needs the Maxwellian relaxation rate Γ* of (19.17): the first
-    // approximation about the Maxwellian HCS only.
+    // T_r as a fourth field (theory.md §19.15.1) needs Γ* and Z_δ of the reference's rates: the Maxwellian ones of
+    // (19.17), (19.37), or about the Sonine HCS the slopes of the linear scheme's cumulant rates (§19.27), which the
+    // nonlinear scheme's products would change.
     const bool rotational_field = SchemaPoint(specs, point).choice("rotational_temperature_closure") == "field";
-    if (rotational_field && (!first || cumulant_reference) &&
+    if (rotational_field && cumulant_reference && scheme != "linear" &&
         std::any_of(coefficients.begin(), coefficients.end(), is_critical))
       throw std::invalid_argument(
-          "rotational_temperature_closure: \"field\" needs order = 1 without tolerance and reference_state = "
-          "\"maxwellian\" (the relaxation rate of (19.17) is a first approximation)");
+          "rotational_temperature_closure: \"field\" with reference_state = \"hcs\" needs hcs = \"linear\" (the "
+          "slopes of the linear scheme's rates, theory.md section 19.27), got hcs = \"" +
+          scheme + "\"");
     for (const auto& name : coefficients) {
       if (is_orientation_column(name)) {
         if (d != 3)
@@ -445,7 +457,7 @@ class RoughModel final : public TransportModel {
         const int tables = order.tolerance ? kMaxRoughReferenceOrder + 2 : order.order + 2;
         const auto at_degree = [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int k) {
           return choose_order(order, kMaxRoughReferenceOrder, [&](int n) {
-            return reference_value(d, alpha, beta, kappa, linear_sonine, name, k, n, tables);
+            return reference_value(d, alpha, beta, kappa, linear_sonine, name, k, n, tables, rotational_field);
           });
         };
         if (!scan_degree) {
@@ -478,8 +490,9 @@ class RoughModel final : public TransportModel {
         out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
           const auto at = [&](int m) {
             if (m > kMaxRoughOrder + 2) return std::numeric_limits<double>::quiet_NaN();  // past the tables' cap
-            return is_critical(name) ? reference_column(d, alpha, beta, kappa, true, name, 1, m, tables)
-                                     : rough_sonine_column(transport_values(d, alpha, beta, kappa, m, tables), name);
+            return is_critical(name)
+                       ? reference_column(d, alpha, beta, kappa, true, name, 1, m, tables, rotational_field)
+                       : rough_sonine_column(transport_values(d, alpha, beta, kappa, m, tables), name);
           };
           if (!windowed) return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
           std::vector<double> window;
@@ -633,6 +646,7 @@ class RoughModel final : public TransportModel {
     bool oriented = false;                                      ///< the tables carry the orientation forms
     std::map<std::array<int, 2>, RoughTransportValues> values;  ///< by (K, Sonine order)
     std::optional<RoughCoolingState> maxwellian;                ///< the Maxwellian HCS (θ, ζ* of degree 1)
+    std::map<int, RoughSplitSlopes> slopes;                     ///< Γ*, Z_δ by cumulant degree K (theory.md §19.27)
   };
 
   static std::string reference_key(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
@@ -686,7 +700,7 @@ class RoughModel final : public TransportModel {
   /// degree K (1: the Maxwellian reference at the Maxwellian θ, ζ*); the stability values from that HCS's θ, ζ* and the
   /// five coefficients about it (theory.md (19.33)); NaN where that HCS has no solution.
   double reference_column(int d, const Rational& alpha, const Rational& beta, const Rational& kappa, bool linear,
-                          const std::string& name, int degree, int n, int tables) {
+                          const std::string& name, int degree, int n, int tables, bool field = false) {
     const RoughTransportValues v = reference_values(d, alpha, beta, kappa, linear, degree, n, tables);
     if (is_rough_sonine_column(name)) return rough_sonine_column(v, name);
     double theta = 0, zeta = 0;
@@ -701,7 +715,43 @@ class RoughModel final : public TransportModel {
       theta = hcs.temperature_ratio;
       zeta = hcs.cooling_rate;
     }
-    return pick_stability(rough_reference_stability(d, alpha, beta, theta, zeta, v), name);
+    std::optional<RoughSplitSlopes> split;
+    if (field && std::isfinite(theta)) split = reference_slopes(d, alpha, beta, kappa, linear, degree);
+    return pick_stability(rough_reference_stability(d, alpha, beta, theta, zeta, v, split), name);
+  }
+
+  /// Returns Γ*, Z_δ of the reference of cumulant degree K (theory.md §19.27): K = 1 the Maxwellian rates ((19.17),
+  /// (19.37) from the first-Sonine ζ_U, exact for them); K ≥ 2 the linear scheme's rates of order K − 1 at its HCS,
+  /// the cumulants held ((19.141)–(19.142)); NaN where that HCS has no solution.
+  RoughSplitSlopes reference_slopes(int d, const Rational& alpha, const Rational& beta, const Rational& kappa,
+                                    bool linear, int degree) {
+    RoughReferenceEntry& entry = reference_[reference_key(d, alpha, beta, kappa, linear)];
+    if (const auto found = entry.slopes.find(degree); found != entry.slopes.end()) return found->second;
+    RoughSplitSlopes out;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (degree == 1) {
+      const RoughCoolingState m = rough_homogeneous_cooling_state(d, alpha, beta, kappa, RoughHcsScheme::maxwellian);
+      const RoughScalarResponse b = rough_bulk_viscosity(d, alpha, beta, kappa);
+      out.temperature_ratio = m.temperature_ratio;
+      out.cooling_rate = m.cooling_rate;
+      out.relaxation_rate = b.relaxation_rate;
+      out.cooling_split_slope = b.cooling_rate_first_order * d * (m.cooling_rate / 2 + b.relaxation_rate) / 2;
+    } else {
+      const RoughSonineCoolingState& hcs = reference_hcs(d, alpha, beta, kappa, linear, degree);
+      if (!hcs.solved) {
+        out.relaxation_rate = out.cooling_split_slope = nan;
+      } else {
+        const RoughSonineCoolingRates rates(d, alpha, beta, kappa, degree - 1, reference_ansatz(d));
+        std::vector<double> unknowns = hcs.cumulants;
+        unknowns.insert(unknowns.end(), hcs.orientation_coefficients.begin(), hcs.orientation_coefficients.end());
+        try {
+          out = rough_split_slopes(rates, hcs.temperature_ratio, unknowns);
+        } catch (const std::invalid_argument&) {  // the HCS's rates do not balance to 1e-9: no slopes, NaN values
+          out.relaxation_rate = out.cooling_split_slope = nan;
+        }
+      }
+    }
+    return entry.slopes[degree] = out;
   }
 
   /// Returns one Navier–Stokes column at Sonine order n about the HCS of cumulant degree K: v_N(K) with the error
@@ -709,8 +759,10 @@ class RoughModel final : public TransportModel {
   /// (K = 2 against the Maxwellian reference, the HCS of order 0); flagged not converging where the lower reference has
   /// no value (theory.md §19.16, "Cumulant reference").
   OrderValue reference_value(int d, const Rational& alpha, const Rational& beta, const Rational& kappa, bool linear,
-                             const std::string& name, int degree, int n, int tables) {
-    const auto at = [&](int k, int m) { return reference_column(d, alpha, beta, kappa, linear, name, k, m, tables); };
+                             const std::string& name, int degree, int n, int tables, bool field = false) {
+    const auto at = [&](int k, int m) {
+      return reference_column(d, alpha, beta, kappa, linear, name, k, m, tables, field);
+    };
     const double v = at(degree, n);
     // (6.3): order N + 3 where the changes change sign, within the cap's tables (else not confirmed).
     const int highest = (degree == 1 ? kMaxRoughOrder : kMaxRoughReferenceOrder) + 2;

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <complex>
+#include <limits>
 
 #include "gkt/evolution/hcs_stability.hpp"
 
@@ -29,6 +30,9 @@ struct RoughStabilityInput {
   /// Γ* = θ∂(ζ_r* − ζ_t*)/∂θ at fixed T_t (theory.md (19.17)): the relaxation rate of θ; used only by the
   /// four-field analysis (rough_longitudinal_matrix_with_spin), where it must be > 0 unless θ = +∞.
   double relaxation_rate = 0;
+  /// Z_δ = ∂(ζ/ν0)/∂δ at fixed n, T (theory.md (19.37), (19.142)); used only by the four-field analysis. NaN (the
+  /// default): (d/2)(ζ*/2 + Γ*)ζ_U, exact for the Maxwellian rates; about the Sonine HCS, rough_split_slopes's value.
+  double cooling_split_slope = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Returns the translational share of the heat capacity, d/(d + d_rθ) = (d/(d + d_r)) T_t/T on the
