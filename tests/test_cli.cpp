@@ -1541,7 +1541,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"mixture_packing", kMixture + "fraction = 0.5\n", "--set packing_fraction=0.5",
                  "packing_fraction: must be a number in [0, 0.5) for dimension = 3"},
         BadInput{"mixture_species_key", kMixture + "fraction = 0.5\ncharge = 1\n", "",
-                 "species[2].charge: unknown key; valid keys: diameter, fraction, mass, name"},
+                 "species[2].charge: unknown key; valid keys: diameter, fraction, mass, moment_of_inertia, name"},
         BadInput{"mixture_species_missing", kMixture, "", "species[2].fraction: required"},
         BadInput{"mixture_one_species",
                  "model = \"mixture\"\norder = 1\n[[species]]\nmass = 1\ndiameter = 1\nfraction = 1\n", "",
