@@ -30,10 +30,11 @@ std::vector<std::string> table_caveats(const std::string& model, const std::map<
       const bool maxwellian = choice("reference_state", "maxwellian") == "maxwellian";
       out.push_back("trial_space: the _error of " + columns +
                     " covers the Sonine truncation in the product trial space only; " +
-                    (maxwellian ? std::string("trial_space = \"full\" adds the aligned and chiral families")
-                                : std::string("the aligned and chiral families (trial_space = \"full\", about "
-                                              "Maxwellians only)")) +
-                    " (theory.md 19.21-19.22), which move these coefficients by percents");
+                    (maxwellian ? std::string("trial_space = \"full\" adds the aligned and chiral families "
+                                              "(theory.md 19.21-19.22)")
+                                : std::string("it leaves out the aligned and chiral families (theory.md "
+                                              "19.21-19.22; trial_space = \"full\", about Maxwellians only)")) +
+                    ", which move these coefficients by percents");
     }
   }
   return out;
