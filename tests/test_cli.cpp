@@ -763,13 +763,55 @@ TEST(CliRough, TrialSpaceKey) {
            {"'trial_space=\"chiral\"'", "trial_space: must be one of"},
            {"'trial_space=\"aligned\"' --set dimension=2", "trial_space: \"aligned\" needs dimension = 3"},
            {"'trial_space=\"full\"' --set order=1", "trial_space: \"full\" needs a Sonine order"},
-           {"'trial_space=\"full\"' --set 'reference_state=\"hcs\"'", "is built about Maxwellians only"}}) {
+           {"'trial_space=\"full\"' --set 'reference_state=\"hcs\"'", "is built about Maxwellians only"},
+           // The stability values at order 1 are the first approximation's too: refused, not silently products.
+           {"'trial_space=\"full\"' --set order=1 --set 'coefficients=[\"critical_length\"]'",
+            "trial_space: \"full\" needs a Sonine order"},
+           {"'trial_space=\"aligned\"' --set order=1 --set 'coefficients=[\"critical_wavenumber_heat\"]'",
+            "trial_space: \"aligned\" needs a Sonine order"}}) {
     const CliRun bad = run_gkt(base + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
     EXPECT_TRUE(bad.out.empty());
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
   }
+}
+
+// With the default product trial space a rough Navier-Stokes or stability column asked for at order >= 2 or to a
+// tolerance carries one warning per table: its _error is the Sonine truncation in that space only, and the aligned
+// and chiral families (theory.md §19.21, §19.22) move the values by percents (conventions.md, "Warnings"). None with
+// trial_space = "full", none at order 1 (error nan), none for the HCS columns alone; stdout is unchanged.
+TEST(CliRough, TrialSpaceCaveatWarning) {
+  const std::string base = "table " + scene_path("rough_hcs.toml") + " --set 'alpha=[0.9, 0.7]'";
+  const std::string ns = " --set 'coefficients=[\"shear_viscosity\", \"critical_length\"]'";
+  const std::string caveat = "covers the Sonine truncation in the product trial space only";
+  const auto warnings = [&caveat](const std::string& err) {
+    std::size_t n = 0;
+    for (auto at = err.find(caveat); at != std::string::npos; at = err.find(caveat, at + 1)) ++n;
+    return n;
+  };
+  const CliRun order2 = run_gkt(base + ns + " --set order=2");
+  const CliRun products2 = run_gkt(base + ns + " --set order=2 --set 'trial_space=\"products\"'");
+  const CliRun tolerance = run_gkt(base + ns + " --set tolerance=1e-3");
+  const CliRun swept = run_gkt(base + ns + " --set 'order=[1, 2]'");
+  const CliRun full = run_gkt(base + ns + " --set order=2 --set 'trial_space=\"full\"'");
+  const CliRun order1 = run_gkt(base + ns + " --set order=1");
+  const CliRun hcs_only =
+      run_gkt(base + " --set order=2 --set 'coefficients=[\"cooling_rate\", \"a20\"]' --set 'hcs=\"linear\"'");
+  const CliRun stability = run_gkt("stability " + scene_path("rough_hcs.toml") + " --set 'alpha=[0.9]' --set order=2");
+  for (const CliRun* r : {&order2, &products2, &tolerance, &swept, &full, &order1, &hcs_only, &stability})
+    ASSERT_EQ(r->status, 0) << r->err;
+  EXPECT_EQ(warnings(order2.err), 1u) << order2.err;  // one per table, not one per row
+  EXPECT_NE(order2.err.find("trial_space = \"full\" adds the aligned and chiral families"), std::string::npos);
+  EXPECT_NE(order2.err.find("shear_viscosity, critical_length"), std::string::npos) << order2.err;
+  EXPECT_EQ(warnings(products2.err), 1u) << products2.err;
+  EXPECT_EQ(products2.out, order2.out);  // the warning changes no value
+  EXPECT_EQ(warnings(tolerance.err), 1u) << tolerance.err;
+  EXPECT_EQ(warnings(swept.err), 1u) << swept.err;
+  EXPECT_EQ(warnings(stability.err), 1u) << stability.err;
+  EXPECT_EQ(warnings(full.err), 0u) << full.err;
+  EXPECT_EQ(warnings(order1.err), 0u) << order1.err;
+  EXPECT_EQ(warnings(hcs_only.err), 0u) << hcs_only.err;
 }
 
 // Order N > 1 of the rough Navier-Stokes columns (theory.md §19.16): the order-2 error column is (6.3) from the

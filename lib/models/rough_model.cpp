@@ -323,6 +323,10 @@ class RoughModel final : public TransportModel {
           "reference_state: \"hcs\" needs hcs = \"linear\" or \"nonlinear\" (the Sonine HCS "
           "whose cumulants f0 carries), got hcs = \"" +
           scheme + "\"");
+    const auto& critical = stability_coefficient_names();
+    const auto is_critical = [&critical](const std::string& c) {
+      return std::find(critical.begin(), critical.end(), c) != critical.end();
+    };
     // trial_space (theory.md §19.21, §19.22): the Sonine solver's space about Maxwellians; order 1 alone is the
     // product space's first approximation, so the families need a Sonine order.
     const std::string space = SchemaPoint(specs, point).choice("trial_space");
@@ -337,16 +341,15 @@ class RoughModel final : public TransportModel {
       if (cumulant_reference)
         throw std::invalid_argument("trial_space: \"" + space +
                                     "\" is built about Maxwellians only (reference_state = \"maxwellian\")");
-      if (first && std::any_of(coefficients.begin(), coefficients.end(),
-                               [](const std::string& c) { return is_rough_sonine_column(c); }))
+      // The stability values at order 1 come from the first approximations too (theory.md §19.15): refused alike.
+      if (first && std::any_of(coefficients.begin(), coefficients.end(), [&is_critical](const std::string& c) {
+            return is_rough_sonine_column(c) || is_critical(c);
+          }))
         throw std::invalid_argument("trial_space: \"" + space +
-                                    "\" needs a Sonine order (order >= 2 or a tolerance); order = 1 alone is the "
-                                    "first approximation in the product space");
+                                    "\" needs a Sonine order (order >= 2 or a tolerance) for the Navier-Stokes and "
+                                    "stability columns; order = 1 alone is the first approximation in the product "
+                                    "space");
     }
-    const auto& critical = stability_coefficient_names();
-    const auto is_critical = [&critical](const std::string& c) {
-      return std::find(critical.begin(), critical.end(), c) != critical.end();
-    };
     // T_r as a fourth field (theory.md §19.15.1) needs Γ* and Z_δ of the reference's rates: the Maxwellian ones of
     // (19.17), (19.37), or about the Sonine HCS the slopes of the linear scheme's cumulant rates (§19.27), which the
     // nonlinear scheme's products would change.

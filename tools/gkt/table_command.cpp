@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "gkt/algebra/thread_caches.hpp"
+#include "gkt/models/table_caveats.hpp"
 #include "gkt/models/tolerance_row.hpp"
 
 namespace gkt::cli {
@@ -353,6 +354,14 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
     table.rows.push_back(std::move(finished->cells));
     if (observer.on_row) observer.on_row(table.rows.back(), table.rows.size(), sweep->total);
   }
+  // What the error columns do not cover, once per table (docs/conventions.md, "Warnings").
+  int highest_order = 0;
+  for (const auto& axis : scene.axes)
+    if (axis.key == "order")
+      for (const auto& v : axis.values) highest_order = std::max(highest_order, static_cast<int>(v.to_double()));
+  for (auto& caveat :
+       table_caveats(scene.model, scene.choices, scene.coefficients, highest_order, has_tolerance(scene)))
+    warnings.push_back(std::move(caveat));
   const std::size_t row_count = table.rows.size();
   for (std::size_t k = 0; k < unreliable.size(); ++k) {
     const auto& u = unreliable[k];
