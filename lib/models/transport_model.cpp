@@ -19,4 +19,9 @@ Trajectory TransportModel::evolve(const TrajectoryRequest&) {
   throw std::invalid_argument("model: \"" + name() + "\" has no cooling trajectory");
 }
 
+std::vector<std::string> TransportModel::table_caveats(const std::map<std::string, std::string>&,
+                                                       const std::vector<std::string>&, int, bool) const {
+  return {};
+}
+
 }  // namespace gkt

@@ -38,6 +38,11 @@ class ValidatedModel final : public TransportModel {
   [[nodiscard]] std::vector<std::string> trajectory_coefficients() const override {
     return model_->trajectory_coefficients();
   }
+  [[nodiscard]] std::vector<std::string> table_caveats(const std::map<std::string, std::string>& choices,
+                                                       const std::vector<std::string>& coefficients, int highest_order,
+                                                       bool tolerance) const override {
+    return model_->table_caveats(choices, coefficients, highest_order, tolerance);
+  }
 
   std::vector<CoefficientValue> evaluate(const ParameterPoint& point, const std::vector<std::string>& coefficients,
                                          const OrderRequest& order) override {

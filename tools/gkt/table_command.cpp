@@ -17,7 +17,6 @@
 #include <utility>
 
 #include "gkt/algebra/thread_caches.hpp"
-#include "gkt/models/table_caveats.hpp"
 #include "gkt/models/tolerance_row.hpp"
 
 namespace gkt::cli {
@@ -359,8 +358,8 @@ Table compute_table(const Scene& scene, const TableOptions& options, std::vector
   for (const auto& axis : scene.axes)
     if (axis.key == "order")
       for (const auto& v : axis.values) highest_order = std::max(highest_order, static_cast<int>(v.to_double()));
-  for (auto& caveat :
-       table_caveats(scene.model, scene.choices, scene.coefficients, highest_order, has_tolerance(scene)))
+  for (auto& caveat : make_transport_model(scene.model)
+                          ->table_caveats(scene.choices, scene.coefficients, highest_order, has_tolerance(scene)))
     warnings.push_back(std::move(caveat));
   const std::size_t row_count = table.rows.size();
   for (std::size_t k = 0; k < unreliable.size(); ++k) {

@@ -6,6 +6,7 @@
 // every call against its schema before it computes anything.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -95,6 +96,12 @@ class TransportModel {
   /// Returns the integrated cooling trajectory (theory.md §12). Only if supports(Capability::evolve);
   /// throws std::invalid_argument otherwise and on bad input, std::runtime_error if the integrator fails.
   virtual Trajectory evolve(const TrajectoryRequest& request);
+  /// Returns what the `_error` columns of a whole table do not cover, one warning line each (no prefix), for
+  /// the scene's choice keys `choices` (absent: the default), its `coefficients`, the highest Sonine order of its
+  /// rows and whether a `tolerance` scans (docs/conventions.md, "Warnings"); none by default.
+  [[nodiscard]] virtual std::vector<std::string> table_caveats(const std::map<std::string, std::string>& choices,
+                                                               const std::vector<std::string>& coefficients,
+                                                               int highest_order, bool tolerance) const;
 };
 
 /// Returns a new model by name; throws std::invalid_argument listing the valid names.
