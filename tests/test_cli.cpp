@@ -1276,6 +1276,25 @@ TEST(CliRoughEvolve, NonlinearSchemeRelaxesToTheNonlinearTable) {
   }
 }
 
+// The N = 3 nonlinear stall from a cold spin (theory.md §19.24): exit 2 with one line naming the step budget and
+// what to do, nothing on standard output (the trajectory is written only when complete); a modest budget keeps it
+// fast, and a budget of 0 is refused as input.
+TEST(CliRoughEvolve, ColdSpinThirdOrderNonlinearStopsAtTheStepBudget) {
+  const std::string base =
+      "evolve " + scene_path("rough_evolve.toml") + " --set 'hcs=\"nonlinear\"' --set order=3 --set max_steps=";
+  const CliRun r = run_gkt(base + "2000");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(r.err.rfind("gkt: error: max_steps: the nonlinear Sonine scheme at order 3 used its 2000 CVODE steps", 0),
+            0U)
+      << r.err;
+  EXPECT_NE(r.err.find("hcs = \"linear\", or a warmer rotational_temperature"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const CliRun zero = run_gkt(base + "0");
+  EXPECT_EQ(zero.status, 2);
+  EXPECT_EQ(zero.err.rfind("gkt: error: max_steps:", 0), 0U) << zero.err;
+}
+
 // `gkt stability` about the Sonine HCS (reference_state = "hcs", theory.md (19.33)): values with error columns (the
 // Sonine and cumulant-degree steps), moved from the Maxwellian first approximation (disks, (0.9, 0.5)).
 TEST(CliRoughStability, AboutTheSonineHcs) {

@@ -14,9 +14,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <sys/wait.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include "gkt/models/column_catalogue.hpp"
@@ -296,6 +298,56 @@ TEST(TableJson, CsvBytesAreUnchangedByTheDescription) {
   ASSERT_EQ(csv.status, 0) << csv.err;
   EXPECT_TRUE(csv.out.starts_with("dimension,shear_viscosity,")) << csv.out;
   EXPECT_EQ(csv.out.find("gkt_version"), std::string::npos);
+}
+
+// --units physical on the rough binary (theory.md §19.26): ζ* is reduced by ν0 = nT/η0 of m̄ = Σx_i m_i, σ̄ = Σx_iσ_i
+// at T = Σx_i T_t,i, as the smooth mixture's, so --mass, --diameter, --temperature are m̄, σ̄, T and the species'
+// own masses and diameters only enter through their ratios: the physical ζ is ζ* ν0 (hand-written ν0), the ratio
+// columns stay as they are, and scaling every mass by 10 and every diameter by 3 in the scene changes nothing.
+TEST(TableJson, PhysicalUnitsOfTheRoughBinary) {
+  const double pi = std::numbers::pi, kB = 1.380649e-23;
+  const double m = 1e-26, s = 1e-10, n = 1e25, T = kB * 300;
+  const std::string reference =
+      " --units physical --mass 1e-26 --diameter 1e-10 --number-density 1e25 --temperature 300 --format json";
+  const std::string keys = " --set 'alpha=[0.8]' --set 'beta=[0.5]'";
+  const CliRun reduced = gkt_run("table " + scene("rough_mixture_hcs.toml") + keys + " --format json");
+  const CliRun physical = gkt_run("table " + scene("rough_mixture_hcs.toml") + keys + reference);
+  ASSERT_EQ(reduced.status, 0) << reduced.err;
+  ASSERT_EQ(physical.status, 0) << physical.err;
+  const auto a = nlohmann::json::parse(reduced.out)["rows"][0];
+  const auto doc = nlohmann::json::parse(physical.out);
+  const auto b = doc["rows"][0];
+  EXPECT_EQ(doc["column_descriptions"]["cooling_rate"]["unit"], "s^-1");
+  const double nu0 = n * T / (5 / (16 * s * s) * std::sqrt(m * T / pi));
+  EXPECT_NEAR(b["cooling_rate"].get<double>(), a["cooling_rate"].get<double>() * nu0,
+              1e-14 * a["cooling_rate"].get<double>() * nu0);
+  for (const char* name : {"temperature_ratio_1", "temperature_ratio_2", "rotational_temperature_ratio_1",
+                           "rotational_temperature_ratio_2"})
+    EXPECT_EQ(b[name].get<double>(), a[name].get<double>()) << name;
+
+  std::ifstream in(std::string(GKT_SOURCE_DIR) + "/tables/scenes/rough_mixture_hcs.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scaled = text.str();
+  for (const auto& [from, to] :
+       std::vector<std::pair<std::string, std::string>>{{"mass = 1\n", "mass = 10\n"},
+                                                        {"mass = 4\n", "mass = 40\n"},
+                                                        {"diameter = 1\n", "diameter = 3\n"},
+                                                        {"diameter = 2\n", "diameter = 6\n"}}) {
+    const auto at = scaled.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    scaled.replace(at, from.size(), to);
+  }
+  const auto path =
+      std::filesystem::temp_directory_path() / ("gkt_rough_binary_scaled_" + std::to_string(getpid()) + ".toml");
+  std::ofstream(path) << scaled;
+  const CliRun rescaled = gkt_run("table " + path.string() + keys + reference);
+  std::filesystem::remove(path);
+  ASSERT_EQ(rescaled.status, 0) << rescaled.err;
+  const auto c = nlohmann::json::parse(rescaled.out)["rows"][0];
+  EXPECT_NEAR(c["cooling_rate"].get<double>(), b["cooling_rate"].get<double>(),
+              1e-12 * b["cooling_rate"].get<double>());
+  EXPECT_NEAR(c["temperature_ratio_1"].get<double>(), b["temperature_ratio_1"].get<double>(), 1e-12);
 }
 
 // --units physical: η of the elastic gas at order 1 is η0 (η* = 1) and the conductivity is

@@ -164,6 +164,37 @@ std::array<std::vector<double>, 2> at_collisions(const RoughEvolutionResult& run
   return out;
 }
 
+// The stall of N = 3 from a cold spin (theory.md §19.24, "Where it stalls"): θ(0) = 0.01 at (0.9, 0.5), 3D, the
+// nonlinear scheme's cumulants grow past 10² and CVODE's steps shrink; the step budget over the whole trajectory
+// (not per output time: 40 output times below τ = 0.01 would each get a fresh budget otherwise) stops it with a
+// message naming the cause, while the linear scheme from the same start reaches τ = 0.01 within the same budget.
+TEST(RoughNonlinearEvolution, ColdSpinAtThirdOrderExhaustsTheStepBudget) {
+  const Rational alpha(9, 10), beta(1, 2), kappa(2, 5);
+  std::vector<double> times;
+  for (int i = 1; i <= 40; ++i) times.push_back(0.01 * i / 40);
+  constexpr long budget = 2000;
+  const RoughSonineCoolingRates linear(3, alpha, beta, kappa, 3, RoughSonineAnsatz::isotropic,
+                                       RoughSonineScheme::linear);
+  const RoughEvolutionResult ok = evolve_rough_sonine_cooling(linear, 1, 0.01, times, 1e-10, 1e-14, {}, budget);
+  ASSERT_EQ(ok.samples.size(), times.size());
+  EXPECT_LE(ok.counters.steps, budget);
+  const RoughSonineCoolingRates nonlinear(3, alpha, beta, kappa, 3, RoughSonineAnsatz::isotropic,
+                                          RoughSonineScheme::nonlinear);
+  try {
+    (void)evolve_rough_sonine_cooling(nonlinear, 1, 0.01, times, 1e-10, 1e-14, {}, budget);
+    ADD_FAILURE() << "the cold-spin N = 3 nonlinear trajectory did not stop";
+  } catch (const EvolutionFailure& e) {
+    const std::string message = e.what();
+    std::printf("%s\n", message.c_str());
+    EXPECT_EQ(message.rfind("max_steps: the nonlinear Sonine scheme at order 3 used its 2000 CVODE steps", 0), 0U);
+    EXPECT_NE(message.find("use a lower order"), std::string::npos);
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+    EXPECT_LT(e.time(), 0.01);
+  }
+  EXPECT_THROW((void)evolve_rough_sonine_cooling(nonlinear, 1, 0.01, times, 1e-10, 1e-14, {}, 0),
+               std::invalid_argument);
+}
+
 // The library DSMC (independent of the engine) from a cold spin, θ(0) = 0.01 at (0.9, 0.5), 3D — the run of
 // RoughSonineEvolution.EarlySpinCumulantAgainstDsmc (four runs of 20000 particles, snapshots every 0.1 collisions per
 // particle): the oriented nonlinear and linear trajectories of orders 1 and 2 against a02 and θ at 0.5 … 3 collisions.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -126,8 +127,33 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   return 0;
 }
 
+/// The one-line error when the Sonine scheme of `problem` used its `budget` of CVODE steps on its way to `target`,
+/// stopped at `reached` with the unknowns `yv` (theory.md §19.24, "Where it stalls").
+EvolutionFailure step_budget_failure(const Problem& problem, long budget, double target, double reached,
+                                     const double* yv, int flag) {
+  const RoughSonineCoolingRates& r = *problem.sonine;
+  const auto& ia = r.cumulant_indices();
+  std::size_t largest = 0;
+  for (std::size_t w = 1; w < ia.size(); ++w)
+    if (std::abs(yv[3 + w]) > std::abs(yv[3 + largest])) largest = w;
+  auto g = [](double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3g", v);
+    return std::string(buffer);
+  };
+  const bool nonlinear = r.scheme() == RoughSonineScheme::nonlinear;
+  return EvolutionFailure(
+      "max_steps: the " + std::string(nonlinear ? "nonlinear" : "linear") + " Sonine scheme at order " +
+          std::to_string(r.order()) + " used its " + std::to_string(budget) + " CVODE steps before tau = " + g(target) +
+          " (stopped at tau = " + g(reached) + ", theta = " + g(std::exp(yv[1] - yv[0])) + ", a" +
+          std::to_string(ia[largest][0]) + std::to_string(ia[largest][1]) + " = " + g(yv[3 + largest]) +
+          "): the truncated series does not bound the cumulants from this start (theory.md §19.24); use a lower "
+          "order, hcs = \"linear\", or a warmer rotational_temperature",
+      flag, reached);
+}
+
 RoughEvolutionResult integrate(Problem& problem, int dimension, double translational0, double rotational0,
-                               const std::vector<double>& times, double rtol, double atol) {
+                               const std::vector<double>& times, double rtol, double atol, long max_steps = 0) {
   if (!(translational0 > 0) || !std::isfinite(translational0))
     throw std::invalid_argument("translational_temperature: must be a finite number > 0");
   if (!(rotational0 > 0) || !std::isfinite(rotational0))
@@ -169,8 +195,21 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   const double d = dimension;
   RoughEvolutionResult result;
   for (double target : times) {
-    const double reached =
-        detail::advance_to(cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time");
+    double reached = 0;
+    if (max_steps > 0) {
+      // A budget over the whole trajectory (theory.md §19.24): what is left of it bounds this call.
+      long used = 0;
+      CVodeGetNumSteps(cvode.get(), &used);
+      check(CVodeSetMaxNumSteps(cvode.get(), std::max(1L, max_steps - used)), "CVodeSetMaxNumSteps");
+      try {
+        reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time");
+      } catch (const EvolutionFailure& e) {
+        if (e.flag() != CV_TOO_MUCH_WORK || problem.sonine == nullptr) throw;
+        throw step_budget_failure(problem, max_steps, target, e.time(), yv, e.flag());
+      }
+    } else {
+      reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time");
+    }
     RoughEvolutionSample s;
     s.time = reached;
     s.translational_temperature = std::exp(yv[0]);
@@ -282,8 +321,9 @@ RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rate
 
 RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& rates, double translational0,
                                                  double rotational0, const std::vector<double>& times, double rtol,
-                                                 double atol, const RoughCumulants& initial_cumulants) {
+                                                 double atol, const RoughCumulants& initial_cumulants, long max_steps) {
   check_rough_initial_cumulants(rates.dimension(), initial_cumulants);
+  if (max_steps < 1) throw std::invalid_argument("max_steps: must be >= 1, got " + std::to_string(max_steps));
   if (rates.spin_decoupled() && (initial_cumulants[1] != 0 || initial_cumulants[2] != 0))
     throw std::invalid_argument("a02, a11: at beta = -1 the spin decouples and carries no cumulant: leave them 0");
   Problem problem;
@@ -302,7 +342,7 @@ RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& 
     if (pq == std::array<int, 2>{0, 2}) problem.sonine_initial[w] = initial_cumulants[1];
     if (pq == std::array<int, 2>{1, 1}) problem.sonine_initial[w] = initial_cumulants[2];
   }
-  return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol);
+  return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol, max_steps);
 }
 
 RoughEvolutionResult evolve_rough_linear_cooling(int dimension, const RoughLinearProductions& productions,

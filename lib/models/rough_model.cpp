@@ -288,6 +288,7 @@ class RoughModel final : public TransportModel {
     specs = rough_evolution_parameters(specs, {"dimension", "alpha", "beta", "moment_of_inertia", "hcs"});
     for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
     specs.push_back(rough_evolution_order_parameter());
+    specs.push_back(rough_evolution_max_steps_parameter());
     return specs;
   }
   /// T_t(τ), T_r(τ) and the cumulants (at Sonine order `order`) from T_t(0), T_r(0) (theory.md §19.13).

@@ -61,7 +61,8 @@ Trajectory rough_sonine_trajectory(const SchemaPoint& p, int d, const Rational& 
   const RoughSonineCoolingRates rates(d, alpha, beta, kappa, order, ansatz, sonine_scheme);
   const RoughEvolutionResult result = evolve_rough_sonine_cooling(
       rates, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(), times,
-      p.number("rtol").to_double(), p.number("atol").to_double(), initial);
+      p.number("rtol").to_double(), p.number("atol").to_double(), initial,
+      static_cast<long>(p.number("max_steps").to_double()));
   Trajectory out = tabulate_rough_trajectory(result, true, oriented);
   const auto& ia = rates.cumulant_indices();
   const auto& ib = rates.orientation_indices();
@@ -144,6 +145,19 @@ ParameterSpec rough_evolution_order_parameter() {
           "Sonine order N of the trajectory, hcs = \"linear\", \"linear-oriented\", \"nonlinear\" or "
           "\"nonlinear-oriented\": the cumulants a_pq with p + q <= N + 1 (and, oriented, b_pq with p + q <= N - 1) of "
           "the linear or nonlinear scheme (theory.md (19.25b), §19.24); 1 with the other hcs",
+          {}};
+}
+
+ParameterSpec rough_evolution_max_steps_parameter() {
+  return {"max_steps",
+          ParameterSpec::Kind::integer,
+          Rational(1),
+          Rational(1000000000),
+          true,
+          true,
+          Rational(kRoughSonineMaxSteps),
+          "CVODE step budget over the whole trajectory of the Sonine schemes (order > 1 or hcs = \"nonlinear\", "
+          "\"nonlinear-oriented\"); past it exit 2 naming the stall (theory.md §19.24)",
           {}};
 }
 

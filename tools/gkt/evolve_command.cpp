@@ -128,7 +128,7 @@ Table evolve(const toml::table& scene, std::string& counters) {
     trajectory = model->evolve(request);
   } catch (const EvolutionFailure& e) {  // "times: …" is the scene's t_end unless it lists times
     const std::string message = e.what();
-    if (e.tolerances() || t.contains("times")) throw;
+    if (e.tolerances() || t.contains("times") || message.rfind("times:", 0) != 0) throw;  // max_steps: as is
     throw error("t_end" + message.substr(message.find(':')));
   }
   Table table;

@@ -77,6 +77,10 @@ RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rate
                                                    double rotational0, const std::vector<double>& times, double rtol,
                                                    double atol, const RoughCumulants& initial_cumulants = {});
 
+/// Default CVODE step budget of evolve_rough_sonine_cooling over a whole trajectory: 5× the ~2000 steps the healthy
+/// runs of theory.md §19.24 take to τ = 10⁴; the N = 3 nonlinear stall from θ(0) = 0.01 uses 25732 by τ = 0.01.
+inline constexpr long kRoughSonineMaxSteps = 10000;
+
 /// Returns the trajectory of the scheme of `rates` (linear, or nonlinear with every product of the unknowns kept,
 /// theory.md (19.110)–(19.112)) at their Sonine order N (theory.md §19.13, (19.25b)–(19.25c), §19.24):
 /// every a_pq (p + q ≤ N + 1) and, with the oriented rates (3D), every b_pq (p + q ≤ N − 1), from a20, a02, a11 =
@@ -84,10 +88,14 @@ RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rate
 /// decouples). Its stationary point is rough_sonine_cooling_state(d, α, β, κ, N, the rates' scheme and ansatz); in
 /// the linear scheme at N = 1 it is the trajectory of evolve_rough_cooling (isotropic) or
 /// evolve_rough_oriented_cooling (oriented) from other engine tables. Otherwise as evolve_rough_cooling with linear =
-/// true.
+/// true, except that CVODE gets at most `max_steps` steps over the whole trajectory (≥ 1; the healthy runs of
+/// §19.24 need ~2000 to τ = 10⁴): past it EvolutionFailure "max_steps: …" names the scheme, order, the τ and the
+/// largest cumulant where it stopped and what to do (lower order, linear scheme, warmer spin) — the stall of N = 3
+/// from a cold spin (theory.md §19.24, "Where it stalls").
 RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& rates, double translational0,
                                                  double rotational0, const std::vector<double>& times, double rtol,
-                                                 double atol, const RoughCumulants& initial_cumulants = {});
+                                                 double atol, const RoughCumulants& initial_cumulants = {},
+                                                 long max_steps = kRoughSonineMaxSteps);
 
 /// The linear scheme's collision averages as a function of τ = θ/κ, for a gas without exact engine tables (the
 /// Walton gas, rough_walton_evolution.hpp).
