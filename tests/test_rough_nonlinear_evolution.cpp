@@ -195,10 +195,11 @@ TEST(RoughNonlinearEvolution, ColdSpinAtThirdOrderExhaustsTheStepBudget) {
                std::invalid_argument);
 }
 
-// The library DSMC (independent of the engine) from a cold spin, θ(0) = 0.01 at (0.9, 0.5), 3D — the run of
-// RoughSonineEvolution.EarlySpinCumulantAgainstDsmc (four runs of 20000 particles, snapshots every 0.1 collisions per
-// particle): the oriented nonlinear and linear trajectories of orders 1 and 2 against a02 and θ at 0.5 … 3 collisions.
-// theory.md §19.24 records the χ² of each; the test asserts what holds there: the nonlinear order 2 within 4σ
+// The library DSMC (independent of the engine) from a cold spin, θ(0) = 0.01 at (0.9, 0.5), 3D (four runs of 20000
+// particles, snapshots every 0.1 collisions per particle; the spin kurtosis a02 rises to ~4 and relaxes): the oriented
+// nonlinear and linear trajectories of orders 1 and 2 against a02 and θ at 0.5 … 3 collisions (theory.md §19.13: the
+// linear order 2 follows a02 within the DSMC's error where the first-Sonine one drifts by 1.5–3.5σ).
+// theory.md §19.24 records the χ² of each; the test asserts what holds there: the order 2 of both schemes within 4σ
 // everywhere, θ of every trajectory within 4σ, the order resolved (χ² of a02 at N = 1 over 4× that at N = 2, both
 // schemes) and the scheme not: at the same order the nonlinear and linear a02 differ by less than 0.1σ of the DSMC at
 // every point (measured: 3e-4 against σ = 0.003–0.026), so this DSMC cannot tell which scheme is closer.
@@ -241,6 +242,7 @@ TEST(RoughNonlinearEvolution, EarlySpinCumulantAgainstDsmc) {
         "%.4f\n",
         collisions[b], m, e, traj[0][0][0][b], traj[0][1][0][b], traj[1][0][0][b], traj[1][1][0][b], mt, et,
         traj[0][0][1][b], traj[0][1][1][b], traj[1][0][1][b], traj[1][1][1][b]);
+    EXPECT_NEAR(traj[0][1][0][b], m, 4 * e) << collisions[b];
     EXPECT_NEAR(traj[1][1][0][b], m, 4 * e) << collisions[b];
     for (int s = 0; s < 2; ++s)
       for (int n = 0; n < 2; ++n) {
