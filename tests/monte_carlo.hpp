@@ -11,6 +11,8 @@
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 
+#include "ratio_averages.hpp"
+
 namespace gkt::test {
 
 using Vec = std::array<double, 3>;
@@ -72,37 +74,19 @@ class CollisionSampler {
   gsl_rng* rng_;
 };
 
-/// Mean and standard error of a ratio estimator Σ w h / Σ w.
-struct Estimate {
-  double mean = 0, error = 0;
-};
-
 /// Returns Σ w h / Σ w over `samples` collisions with its standard error (delta method),
 /// for each integrand h in `integrands`.
 inline std::vector<Estimate> weighted_averages(CollisionSampler& sampler, long samples,
                                                const std::vector<std::function<double(const Collision&)>>& integrands) {
-  const std::size_t n = integrands.size();
-  std::vector<double> swh(n, 0), swh2(n, 0), sw2h(n, 0);
-  double sw = 0, sw2 = 0;
+  RatioAverages acc(integrands.size());
   for (long s = 0; s < samples; ++s) {
     const Collision c = sampler.draw();
     if (c.weight == 0) continue;
-    sw += c.weight;
-    sw2 += c.weight * c.weight;
-    for (std::size_t k = 0; k < n; ++k) {
-      const double h = integrands[k](c);
-      swh[k] += c.weight * h;
-      swh2[k] += c.weight * c.weight * h * h;
-      sw2h[k] += c.weight * c.weight * h;
-    }
+    acc.sample(c.weight);
+    for (std::size_t k = 0; k < integrands.size(); ++k) acc.add(k, c.weight, integrands[k](c));
   }
-  std::vector<Estimate> out(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double r = swh[k] / sw;
-    // Var of Σ w(h − r) per sample, divided by (Σw)².
-    const double var = swh2[k] - 2 * r * sw2h[k] + r * r * sw2;
-    out[k] = {r, std::sqrt(std::max(var, 0.0)) / sw};
-  }
+  std::vector<Estimate> out(integrands.size());
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = acc.estimate(k);
   return out;
 }
 

@@ -14,6 +14,8 @@
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 
+#include "ratio_averages.hpp"
+
 namespace gkt::test {
 
 using Vec3 = std::array<double, 3>;

@@ -85,13 +85,11 @@ TEST(RoughChiralFamilies, ElementsAgainstMonteCarlo) {
     gkt::test::RoughCollisionSampler sampler(cs.d, cs.alpha, cs.beta, cs.kappa, cs.theta, 77 + cs.d);
     const int nt = exact.size(2), nv = exact.size(1);
     const std::size_t n = static_cast<std::size_t>(nt * nt + nv * nv);
-    std::vector<double> swh(n, 0), sw2h2(n, 0), sw2h(n, 0);
-    double w_sum = 0, w2_sum = 0;
+    gkt::test::RatioAverages acc(n);
     for (long s = 0; s < 300000; ++s) {
       const gkt::test::RoughCollision c = sampler.draw();
       if (c.weight == 0) continue;
-      w_sum += c.weight;
-      w2_sum += c.weight * c.weight;
+      acc.sample(c.weight);
       Vec3 w1{}, w2{}, w1p{};
       for (int k = 0; k < 3; ++k) {
         w1[k] = c.w[2][k] / lambda;
@@ -101,12 +99,7 @@ TEST(RoughChiralFamilies, ElementsAgainstMonteCarlo) {
       const auto t1 = tensors(cs.d, c.w[0], w1), t2 = tensors(cs.d, c.w[1], w2), t1p = tensors(cs.d, c.w[4], w1p);
       const auto v1 = vectors(cs.d, c.w[0], w1), v2 = vectors(cs.d, c.w[1], w2), v1p = vectors(cs.d, c.w[4], w1p);
       std::size_t i = 0;
-      const auto add = [&](double h) {
-        swh[i] += c.weight * h;
-        sw2h2[i] += c.weight * c.weight * h * h;
-        sw2h[i] += c.weight * c.weight * h;
-        ++i;
-      };
+      const auto add = [&](double h) { acc.add(i++, c.weight, h); };
       for (int p = 0; p < nt; ++p)
         for (int q = 0; q < nt; ++q)
           add(contract(t1[q], t1[p]) - contract(t1[q], t1p[p]) + contract(t2[q], t1[p]) - contract(t2[q], t1p[p]));
@@ -120,8 +113,7 @@ TEST(RoughChiralFamilies, ElementsAgainstMonteCarlo) {
       const int rank = tensor ? 2 : 1, m = tensor ? nt : nv;
       const int j = static_cast<int>(tensor ? i : i - static_cast<std::size_t>(nt * nt));
       const int p = j / m, q = j % m;
-      const double mean = swh[i] / w_sum;
-      const double error = std::sqrt(std::max(sw2h2[i] - 2 * mean * sw2h[i] + mean * mean * w2_sum, 0.0)) / w_sum;
+      const auto [mean, error] = acc.estimate(i);
       const double value = exact.element(rank, p, q, tau);
       EXPECT_NEAR(value, mean, 5 * error) << "d " << cs.d << " rank " << rank << " test " << p << " trial " << q;
       if (exact.chiral(rank, p) != exact.chiral(rank, q)) {

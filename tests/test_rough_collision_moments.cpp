@@ -117,27 +117,21 @@ TEST_P(RoughMomentsVsMonteCarlo, MixedMomentsToDegreeFour) {
   gkt::test::RoughCollisionSampler sampler(k.d, k.alpha.to_double(), k.beta.to_double(), k.kappa.to_double(),
                                            k.theta.to_double(), 20261201);
   const long samples = 300000;
-  std::vector<double> sw(exponents.size(), 0), swh(exponents.size(), 0), sw2h2(exponents.size(), 0),
-      sw2h(exponents.size(), 0);
-  double w_sum = 0, w2_sum = 0;
+  gkt::test::RatioAverages acc(exponents.size());
   for (long s = 0; s < samples; ++s) {
     const RoughCollision c = sampler.draw();
     if (c.weight == 0) continue;
-    w_sum += c.weight;
-    w2_sum += c.weight * c.weight;
+    acc.sample(c.weight);
     std::array<double, 4> values{};
     for (std::size_t v = 0; v < 4; ++v) values[v] = mc_forms[v](c);
     for (std::size_t e = 0; e < exponents.size(); ++e) {
       double h = 1;
       for (std::size_t v = 0; v < 4; ++v) h *= std::pow(values[v], exponents[e][v]);
-      swh[e] += c.weight * h;
-      sw2h2[e] += c.weight * c.weight * h * h;
-      sw2h[e] += c.weight * c.weight * h;
+      acc.add(e, c.weight, h);
     }
   }
   for (std::size_t e = 0; e < exponents.size(); ++e) {
-    const double mean = swh[e] / w_sum;
-    const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+    const auto [mean, error] = acc.estimate(e);
     const double exact = engine.moment(exponents[e]).to_double();
     // 5 standard errors: a correct engine fails this with probability < 1e-6 per moment.
     EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
@@ -285,13 +279,11 @@ TEST(RoughCollisionMoments, TranslationSpinCouplingAgainstMonteCarlo) {
                                                   {0, 0, 0, 1}, {1, 0, 0, 1}, {0, 0, 0, 2}, {2, 2, 0, 0}, {0, 1, 0, 1}};
   gkt::test::RoughCollisionSampler sampler(3, 0.7, 0.5, 0.4, 1.5, 4242);
   const long samples = 300000;
-  std::vector<double> swh(exponents.size(), 0), sw2h2(exponents.size(), 0), sw2h(exponents.size(), 0);
-  double w_sum = 0, w2_sum = 0;
+  gkt::test::RatioAverages acc(exponents.size());
   for (long s = 0; s < samples; ++s) {
     const RoughCollision c = sampler.draw();
     if (c.weight == 0) continue;
-    w_sum += c.weight;
-    w2_sum += c.weight * c.weight;
+    acc.sample(c.weight);
     const std::array<double, 4> values{
         mc_dot(c, RoughSlot::v1_post, RoughSlot::w1_post), mc_dot(c, RoughSlot::v1, RoughSlot::w1),
         mc_dot(c, RoughSlot::v1_post, RoughSlot::v1_post),
@@ -299,14 +291,11 @@ TEST(RoughCollisionMoments, TranslationSpinCouplingAgainstMonteCarlo) {
     for (std::size_t e = 0; e < exponents.size(); ++e) {
       double h = 1;
       for (std::size_t v = 0; v < 4; ++v) h *= std::pow(values[v], exponents[e][v]);
-      swh[e] += c.weight * h;
-      sw2h2[e] += c.weight * c.weight * h * h;
-      sw2h[e] += c.weight * c.weight * h;
+      acc.add(e, c.weight, h);
     }
   }
   for (std::size_t e = 0; e < exponents.size(); ++e) {
-    const double mean = swh[e] / w_sum;
-    const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+    const auto [mean, error] = acc.estimate(e);
     const double exact = engine.moment(exponents[e]).to_double();
     EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
     EXPECT_LT(error, 0.04 * (std::abs(exact) + 1)) << "moment " << e;
@@ -385,27 +374,22 @@ TEST(RoughCollisionMoments, SixFormMomentsAgainstMonteCarlo) {
                                                        {RoughSlot::w1_post, RoughSlot::w1_post}}};
   gkt::test::RoughCollisionSampler sampler(d, alpha, beta, kappa, theta, 20261202);
   const long samples = 400000;
-  std::vector<double> swh(exponents.size(), 0), sw2h2(exponents.size(), 0), sw2h(exponents.size(), 0);
-  double w_sum = 0, w2_sum = 0;
+  gkt::test::RatioAverages acc(exponents.size());
   for (long s = 0; s < samples; ++s) {
     const RoughCollision c = sampler.draw();
     if (c.weight == 0) continue;
-    w_sum += c.weight;
-    w2_sum += c.weight * c.weight;
+    acc.sample(c.weight);
     std::array<double, 6> values{};
     for (std::size_t v = 0; v < 6; ++v) values[v] = mc_dot(c, slots[v][0], slots[v][1]);
     for (std::size_t e = 0; e < exponents.size(); ++e) {
       double h = 1;
       for (std::size_t v = 0; v < 6; ++v)
         if (exponents[e][v] == 1) h *= values[v];
-      swh[e] += c.weight * h;
-      sw2h2[e] += c.weight * c.weight * h * h;
-      sw2h[e] += c.weight * c.weight * h;
+      acc.add(e, c.weight, h);
     }
   }
   for (std::size_t e = 0; e < exponents.size(); ++e) {
-    const double mean = swh[e] / w_sum;
-    const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+    const auto [mean, error] = acc.estimate(e);
     const double exact = engine.moment(exponents[e]).to_double();
     EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
     EXPECT_LT(error, 0.1 * std::abs(exact)) << "Monte Carlo too noisy to discriminate, moment " << e;

@@ -388,26 +388,21 @@ TEST(RoughMixtureCollisionMoments, MomentsAgainstMonteCarlo) {
     gkt::test::RoughMixtureCollisionSampler sampler(d, mc_species(kSpeciesI, 1.0), mc_species(kSpeciesJ, 2.5),
                                                     alpha.to_double(), beta.to_double(), 20261202);
     const long samples = 300000;
-    std::vector<double> swh(exponents.size(), 0), sw2h2(exponents.size(), 0), sw2h(exponents.size(), 0);
-    double w_sum = 0, w2_sum = 0;
+    gkt::test::RatioAverages acc(exponents.size());
     for (long s = 0; s < samples; ++s) {
       const auto c = sampler.draw().w;
       if (c.weight == 0) continue;
-      w_sum += c.weight;
-      w2_sum += c.weight * c.weight;
+      acc.sample(c.weight);
       std::array<double, 4> values{};
       for (std::size_t v = 0; v < 4; ++v) values[v] = mc_forms[v](c);
       for (std::size_t e = 0; e < exponents.size(); ++e) {
         double h = 1;
         for (std::size_t v = 0; v < 4; ++v) h *= std::pow(values[v], exponents[e][v]);
-        swh[e] += c.weight * h;
-        sw2h2[e] += c.weight * c.weight * h * h;
-        sw2h[e] += c.weight * c.weight * h;
+        acc.add(e, c.weight, h);
       }
     }
     for (std::size_t e = 0; e < exponents.size(); ++e) {
-      const double mean = swh[e] / w_sum;
-      const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+      const auto [mean, error] = acc.estimate(e);
       const double exact = engine.moment(exponents[e]).to_double();
       // 5 standard errors: a correct engine fails this with probability < 1e-6 per moment.
       EXPECT_NEAR(exact, mean, 5 * error) << "d=" << d << " moment " << e;

@@ -96,14 +96,12 @@ TEST(RoughOrientedNonlinear, BothPartnerOrientationMomentsAgainstMonteCarlo) {
                                               {0, 0, 2, 1, 1, 0, 1, 1, 0}, {1, 1, 0, 1, 1, 0, 0, 0, 2}};
   gkt::test::RoughCollisionSampler sampler(3, alpha, beta, kappa, theta, 2718);
   const std::size_t n = exponents.size();
-  std::vector<double> swh(n, 0), sw2h2(n, 0), sw2h(n, 0);
-  double w_sum = 0, w2_sum = 0;
+  gkt::test::RatioAverages acc(n);
   const auto slot = [](const gkt::test::RoughCollision& c, RoughSlot s) { return c.w[static_cast<std::size_t>(s)]; };
   for (long s = 0; s < 400000; ++s) {
     const auto c = sampler.draw();
     if (c.weight == 0) continue;
-    w_sum += c.weight;
-    w2_sum += c.weight * c.weight;
+    acc.sample(c.weight);
     std::array<double, 9> v{};
     const std::array<std::array<RoughSlot, 2>, 3> particles{
         {{RoughSlot::v1, RoughSlot::w1}, {RoughSlot::v2, RoughSlot::w2}, {RoughSlot::v1_post, RoughSlot::w1_post}}};
@@ -116,14 +114,11 @@ TEST(RoughOrientedNonlinear, BothPartnerOrientationMomentsAgainstMonteCarlo) {
     for (std::size_t e = 0; e < n; ++e) {
       double h = 1;
       for (std::size_t k = 0; k < 9; ++k) h *= std::pow(v[k], exponents[e][k]);
-      swh[e] += c.weight * h;
-      sw2h2[e] += c.weight * c.weight * h * h;
-      sw2h[e] += c.weight * c.weight * h;
+      acc.add(e, c.weight, h);
     }
   }
   for (std::size_t e = 0; e < n; ++e) {
-    const double mean = swh[e] / w_sum;
-    const double error = std::sqrt(std::max(sw2h2[e] - 2 * mean * sw2h[e] + mean * mean * w2_sum, 0.0)) / w_sum;
+    const auto [mean, error] = acc.estimate(e);
     const double exact = engine.moment(exponents[e]).to_double();
     EXPECT_NEAR(exact, mean, 5 * error) << "moment " << e;
     if (e == 1) {

@@ -117,13 +117,11 @@ TEST(RoughTripleProductMoments, AgainstMonteCarlo) {
     gkt::test::RoughCollisionSampler sampler(cs.d, cs.alpha, cs.beta, cs.kappa, cs.theta, 9191 + cs.d);
     const long samples = 400000;
     const std::size_t n = tri.size() * exponents.size();
-    std::vector<double> swh(n, 0), sw2h2(n, 0), sw2h(n, 0);
-    double w_sum = 0, w2_sum = 0;
+    gkt::test::RatioAverages acc(n);
     for (long s = 0; s < samples; ++s) {
       const RoughCollision c = sampler.draw();
       if (c.weight == 0) continue;
-      w_sum += c.weight;
-      w2_sum += c.weight * c.weight;
+      acc.sample(c.weight);
       const std::array<double, 4> values{
           mc_dot(c, RoughSlot::v1, RoughSlot::v1), mc_dot(c, RoughSlot::w1_post, RoughSlot::w1_post),
           mc_dot(c, RoughSlot::v1, RoughSlot::v2_post), mc_dot(c, RoughSlot::w1, RoughSlot::w1_post)};
@@ -132,17 +130,13 @@ TEST(RoughTripleProductMoments, AgainstMonteCarlo) {
         for (std::size_t e = 0; e < exponents.size(); ++e) {
           double h = tp;
           for (std::size_t v = 0; v < 4; ++v) h *= std::pow(values[v], exponents[e][v]);
-          const std::size_t i = t * exponents.size() + e;
-          swh[i] += c.weight * h;
-          sw2h2[i] += c.weight * c.weight * h * h;
-          sw2h[i] += c.weight * c.weight * h;
+          acc.add(t * exponents.size() + e, c.weight, h);
         }
       }
     }
     int nonzero = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const double mean = swh[i] / w_sum;
-      const double error = std::sqrt(std::max(sw2h2[i] - 2 * mean * sw2h[i] + mean * mean * w2_sum, 0.0)) / w_sum;
+      const auto [mean, error] = acc.estimate(i);
       const double value = exact[i / exponents.size()][i % exponents.size()];
       EXPECT_NEAR(value, mean, 5 * error)
           << "d " << cs.d << " triple " << i / exponents.size() << " moment " << i % exponents.size();
