@@ -151,3 +151,39 @@ TEST(RoughWaltonSonineHcs, TransportAboutTheCumulantHcs) {
   EXPECT_THROW((void)gkt::rough_walton_sonine_transport_about_hcs(3, 0.9, 1.0, 0.4, 0.5, unsolved, 1),
                std::invalid_argument);
 }
+
+// The oriented ansatz (theory.md §19.29): at μ_f = ∞ θ, ζ*, every a_pq, every b_pq and C of orders 1–3 equal the
+// constant-β oriented linear scheme (exact engine tables with the forms c·w, rough_sonine_cooling_state with
+// RoughSonineAnsatz::oriented) to 1e-8 — the quadrature's c·ŵ forms and the P tests against the engine; disks: the
+// oriented ansatz is the isotropic one (C NaN, no b).
+TEST(RoughWaltonSonineHcs, OrientedInfiniteFrictionIsTheConstantBetaOrientedScheme) {
+  const Rational alpha(9, 10), beta(1, 2), kappa(2, 5);
+  const auto w =
+      gkt::rough_walton_sonine_cooling_states(3, 0.9, 0.5, 0.4, kInf, 3, 8, gkt::RoughSonineAnsatz::oriented);
+  ASSERT_EQ(w.size(), 3U);
+  for (int n = 1; n <= 3; ++n) {
+    const auto e = gkt::rough_sonine_cooling_state(3, alpha, beta, kappa, n, gkt::RoughSonineScheme::linear,
+                                                   gkt::RoughSonineAnsatz::oriented);
+    const auto& s = w[static_cast<std::size_t>(n - 1)];
+    ASSERT_TRUE(e.solved && s.solved) << n;
+    std::printf("order %d: theta %.9f / %.9f  C %.9f / %.9f\n", n, s.temperature_ratio, e.temperature_ratio,
+                s.orientation_correlation, e.orientation_correlation);
+    EXPECT_NEAR(s.temperature_ratio, e.temperature_ratio, 1e-8) << n;
+    EXPECT_NEAR(s.cooling_rate, e.cooling_rate, 1e-8) << n;
+    EXPECT_NEAR(s.orientation_correlation, e.orientation_correlation, 1e-8) << n;
+    ASSERT_EQ(s.indices.size(), e.indices.size());
+    for (const auto& [p, q] : s.indices) EXPECT_NEAR(s.cumulant(p, q), e.cumulant(p, q), 1e-8) << n << " a" << p << q;
+    ASSERT_EQ(s.orientation_indices.size(), e.orientation_indices.size());
+    ASSERT_EQ(s.orientation_indices.size(), static_cast<std::size_t>(n * (n + 1) / 2));
+    for (const auto& [p, q] : s.orientation_indices)
+      EXPECT_NEAR(s.orientation_coefficient(p, q), e.orientation_coefficient(p, q), 1e-8) << n << " b" << p << q;
+  }
+  const auto disks =
+      gkt::rough_walton_sonine_cooling_states(2, 0.9, 1.0, 0.5, 0.5, 2, 8, gkt::RoughSonineAnsatz::oriented);
+  const auto isotropic = gkt::rough_walton_sonine_cooling_states(2, 0.9, 1.0, 0.5, 0.5, 2);
+  for (std::size_t n = 0; n < 2; ++n) {
+    EXPECT_TRUE(disks[n].orientation_indices.empty());
+    EXPECT_TRUE(std::isnan(disks[n].orientation_correlation));
+    EXPECT_EQ(disks[n].temperature_ratio, isotropic[n].temperature_ratio);
+  }
+}
