@@ -1191,6 +1191,48 @@ TEST(CliRoughWalton, SonineOrdersOfTheCoolingState) {
   }
 }
 
+// rough-walton's oriented HCS (hcs = "linear-oriented", theory.md §19.29): at order 2 the columns
+// orientation_correlation and b00, b10, b01 print the oriented solution with the step from order 1 as error, C = 1/3 +
+// b00/5 at order 1 (b10 = 0 there, outside the ansatz); disks, the orientation columns without it and reference_state =
+// "hcs" with it are refused with one line (exit 2) and no output.
+TEST(CliRoughWalton, OrientedCoolingState) {
+  const std::string oriented =
+      " --set 'coefficients=[\"rotational_temperature_ratio\", \"a11\", \"orientation_correlation\", \"b00\", "
+      "\"b10\", \"b01\"]' --set 'alpha=[0.9]' --set 'friction=[0.5]' --set 'hcs=\"linear-oriented\"'";
+  std::vector<std::vector<std::vector<std::string>>> rows;
+  for (int n = 1; n <= 2; ++n) {
+    const CliRun run =
+        run_gkt("table " + scene_path("rough_walton.toml") + oriented + " --set order=" + std::to_string(n));
+    ASSERT_EQ(run.status, 0) << run.err;
+    rows.push_back(parse_csv(run.out));
+  }
+  const auto& header = rows[0][0];
+  const auto at = [&](std::size_t n, const std::string& name) {
+    return std::stod(
+        rows[n][1][static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin())]);
+  };
+  EXPECT_NEAR(at(0, "orientation_correlation"), 1.0 / 3 + at(0, "b00") / 5, 1e-12);  // (19.28)
+  EXPECT_EQ(at(0, "b10"), 0.0);
+  EXPECT_NEAR(at(0, "orientation_correlation_error"), 1.0 / 3 - at(0, "orientation_correlation"), 1e-5);
+  for (const char* name : {"rotational_temperature_ratio", "a11", "orientation_correlation", "b00", "b01"}) {
+    const double step = std::abs(at(1, name) - at(0, name));
+    EXPECT_NEAR(at(1, std::string(name) + "_error"), step, 0.01 * step + 1e-12) << name;
+  }
+  EXPECT_LT(at(1, "orientation_correlation"), 1.0 / 3 - 0.005);  // theory.md §19.29: C = 0.3275
+  EXPECT_NEAR(at(1, "rotational_temperature_ratio"), 0.88708, 1e-5);
+  for (const auto& [bad, field] :
+       {std::pair{oriented + " --set dimension=2 --set moment_of_inertia=0.5", "hcs: "},
+        std::pair{oriented + " --set 'hcs=\"linear\"'", "coefficients: "},
+        std::pair{oriented + " --set 'reference_state=\"hcs\"' --set 'coefficients=[\"shear_viscosity\"]'",
+                  "reference_state: "}}) {
+    const CliRun refused = run_gkt("table " + scene_path("rough_walton.toml") + bad);
+    EXPECT_EQ(refused.status, 2) << bad;
+    EXPECT_TRUE(refused.out.empty());
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+    EXPECT_NE(refused.err.find(field), std::string::npos) << refused.err;
+  }
+}
+
 // rough-walton's Navier–Stokes columns about the first-Sonine Walton HCS (reference_state = "hcs", theory.md §19.25):
 // for disks at friction = 10⁶ the rough model's values about its linear HCS of degree 2 (to 1e-6: the grazing sliding
 // of a finite μ_f; spheres differ: the rough model's reference carries the orientation terms b_pq, §19.16, the Walton

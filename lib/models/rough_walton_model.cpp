@@ -3,7 +3,8 @@
 // (rough_walton.hpp; docs/theory.md §19.10): the Maxwellian HCS (θ, ζ*), the first-Sonine η*, κ*, μ*
 // and the scalar Navier–Stokes response (bulk viscosity, first-order cooling rate); with `order` > 1 or a
 // `tolerance` the five Navier–Stokes columns at higher Sonine orders (rough_walton_sonine.hpp, §19.20). μ_f → ∞ is
-// the "rough" model. The linear stability of the HCS from these coefficients (rough_hcs_stability.hpp, §19.15).
+// the "rough" model. The linear stability of the HCS from these coefficients (rough_hcs_stability.hpp, §19.15). The
+// HCS cumulants at orders 1–3 (§19.19, §19.25) and, with `hcs = "linear-oriented"`, the orientation terms (§19.29).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -58,10 +59,32 @@ HcsStability walton_stability(int d, const RoughWaltonState& s) {
   return rough_hcs_stability(in);
 }
 
-/// The HCS columns the `hcs` key governs (theory.md §19.19).
+/// The orientation columns of the oriented Walton HCS (`hcs = "linear-oriented"`, spheres; theory.md §19.29): C and
+/// b_pq, p + q ≤ kWaltonHcsHighestOrder − 1, named as in the model rough.
+const std::vector<std::string>& walton_orientation_columns() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out{"orientation_correlation"};
+    for (int n = 0; n <= kWaltonHcsHighestOrder - 1; ++n)
+      for (int q = 0; q <= n; ++q) {
+        std::string b = "b00";
+        b[1] = static_cast<char>('0' + n - q);
+        b[2] = static_cast<char>('0' + q);
+        out.push_back(b);
+      }
+    return out;
+  }();
+  return names;
+}
+
+bool is_walton_orientation_column(const std::string& name) {
+  const auto& o = walton_orientation_columns();
+  return std::find(o.begin(), o.end(), name) != o.end();
+}
+
+/// The HCS columns the `hcs` key governs (theory.md §19.19, §19.29).
 bool is_walton_hcs_column(const std::string& name) {
   return name == "rotational_temperature_ratio" || name == "cooling_rate" || name == "a20" || name == "a02" ||
-         name == "a11";
+         name == "a11" || is_walton_orientation_column(name);
 }
 
 /// θ, ζ*, a20, a02, a11 of the first-Sonine (linear) HCS with the one-step error |linear − Maxwellian| (the
@@ -83,12 +106,14 @@ class RoughWaltonModel final : public TransportModel {
            "beta = min{beta0, -1 + ((1+kappa)/kappa)(1+alpha) friction cot(impact angle)}; Maxwellian "
            "homogeneous cooling state (temperature ratio, cooling rate); first-Sonine shear and bulk viscosity, "
            "thermal conductivity, density heat coefficient and first-order cooling rate (also at Sonine order 2 or a "
-           "tolerance, with errors); linear stability of the homogeneous cooling state";
+           "tolerance, with errors); linear stability of the homogeneous cooling state; HCS cumulants (hcs = linear, "
+           "orders 1-3) and, spheres, the orientation correlation and b_pq (hcs = linear-oriented)";
   }
   [[nodiscard]] std::vector<std::string> coefficient_names() const override {
     auto names = kWaltonTableColumns;
     for (const auto& c : stability_coefficient_names()) names.push_back(c);
-    for (const char* c : {"a20", "a02", "a11"}) names.emplace_back(c);  // theory.md §19.19
+    for (const char* c : {"a20", "a02", "a11"}) names.emplace_back(c);      // theory.md §19.19
+    for (const auto& c : walton_orientation_columns()) names.push_back(c);  // theory.md §19.29
     return names;
   }
   /// Without `coefficients` a scene gets the columns it had before the stability values existed.
@@ -111,9 +136,11 @@ class RoughWaltonModel final : public TransportModel {
                                 "approximation of the homogeneous cooling state (theta, cooling rate, cumulants a20, "
                                 "a02, a11): Maxwellian (cumulants 0), first Sonine with cumulants in the linear scheme "
                                 "(error: the step from the Maxwellian), or first Sonine falling back to Maxwellian "
-                                "(cumulants nan) where the linear scheme has no root; the transport and stability "
-                                "columns stay at the Maxwellian theta",
-                                {"maxwellian", "linear", "linear-or-maxwellian"}));
+                                "(cumulants nan) where the linear scheme has no root, or (spheres) the linear scheme "
+                                "with the orientation terms b_pq ((c.w)^2 - c^2 w^2/3) S_p S_q, p + q <= N - 1, and "
+                                "the columns orientation_correlation and b_pq (linear-oriented, orders 1-3); the "
+                                "transport and stability columns stay at the Maxwellian theta",
+                                {"maxwellian", "linear", "linear-or-maxwellian", "linear-oriented"}));
     specs.push_back(
         choice_spec("reference_state",
                     "f0 of the Navier-Stokes columns: Maxwellians at the Maxwellian theta (default), or the "
@@ -155,11 +182,27 @@ class RoughWaltonModel final : public TransportModel {
     // tolerance, the five Navier–Stokes columns come from the Sonine solver of §19.20 about the Maxwellian HCS with
     // the error (6.3) from orders N + 1 … N + 3 (theory.md §6); every other column exists at order 1 only.
     const bool first = order.order == 1 && !order.tolerance && !order.row_tolerance;
-    if (SchemaPoint(specs, point).choice("reference_state") == "hcs")
+    const std::string scheme = SchemaPoint(specs, point).choice("hcs");
+    // hcs = "linear-oriented" (theory.md §19.29): spheres only; the reference state of the Navier–Stokes columns does
+    // not carry the b_pq (not done), so reference_state = "hcs" is refused with it.
+    const bool oriented = scheme == "linear-oriented";
+    if (oriented && d != 3)
+      throw std::invalid_argument(
+          "hcs: \"linear-oriented\" needs dimension = 3 (disks: c.w = 0, the oriented ansatz is hcs = \"linear\")");
+    for (const auto& name : coefficients)
+      if (is_walton_orientation_column(name) && !oriented)
+        throw std::invalid_argument("coefficients: " + name +
+                                    " of model rough-walton needs hcs = \"linear-oriented\" and dimension = 3");
+    if (SchemaPoint(specs, point).choice("reference_state") == "hcs") {
+      if (oriented)
+        throw std::invalid_argument(
+            "reference_state: \"hcs\" of model rough-walton carries the isotropic first-Sonine HCS only; use hcs = "
+            "\"linear\" (or \"maxwellian\", \"linear-or-maxwellian\")");
       return about_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"), coefficients,
                                  order);
-    // With hcs = "linear" (or "linear-or-maxwellian") the HCS columns exist at orders 1 … 3 (theory.md §19.25).
-    const std::string scheme = SchemaPoint(specs, point).choice("hcs");
+    }
+    // With hcs = "linear" (or "linear-or-maxwellian", "linear-oriented") the HCS columns exist at orders 1 … 3
+    // (theory.md §19.25, §19.29).
     const bool sonine_hcs = scheme != "maxwellian";
     if (!first)
       for (const auto& name : coefficients) {
@@ -203,8 +246,10 @@ class RoughWaltonModel final : public TransportModel {
       return out;
     }
     // The HCS columns of `hcs` (theory.md §19.19); the transport and stability columns use the Maxwellian θ, ζ*.
+    // The oriented HCS at order 1 is its own solution (theory.md §19.29), with the step from the Maxwellian.
     std::optional<RoughWaltonCumulantState> linear;
-    if (scheme != "maxwellian" && std::any_of(coefficients.begin(), coefficients.end(), is_walton_hcs_column)) {
+    if (scheme != "maxwellian" && !oriented &&
+        std::any_of(coefficients.begin(), coefficients.end(), is_walton_hcs_column)) {
       linear = rough_walton_linear_cooling_state(d, alpha.to_double(), beta0.to_double(), kappa.to_double(),
                                                  SchemaPoint(specs, point).number("friction").to_double());
       if (!linear->linear_scheme_solved && scheme == "linear")
@@ -219,10 +264,15 @@ class RoughWaltonModel final : public TransportModel {
     // The Maxwellian state with its transport coefficients, unless `linear` (which carries the Maxwellian θ, ζ*)
     // serves every column.
     RoughWaltonState s;
-    if (!linear || !std::all_of(coefficients.begin(), coefficients.end(), is_walton_hcs_column))
+    if (!(linear || oriented) || !std::all_of(coefficients.begin(), coefficients.end(), is_walton_hcs_column))
       s = rough_walton_cooling_state(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"));
     std::vector<CoefficientValue> out;
     for (const auto& name : coefficients) {
+      if (oriented && is_walton_hcs_column(name)) {
+        out.push_back(sonine_hcs_value(d, alpha, beta0, kappa, SchemaPoint(specs, point).number("friction"), scheme,
+                                       name, order));
+        continue;
+      }
       if (linear && is_walton_hcs_column(name)) {
         const bool solved = linear->linear_scheme_solved && !linear->spin_decoupled;
         if (name == "rotational_temperature_ratio") {
@@ -317,25 +367,29 @@ class RoughWaltonModel final : public TransportModel {
     return out;
   }
 
-  /// Returns one HCS column (θ, ζ*, a20, a02, a11) of the order-N linear-scheme Walton HCS (theory.md §19.25) with
-  /// the error |v_N − v_{N−1}| (v_0 the Maxwellian θ, ζ* and cumulants 0), at `order` or the smallest N ≤ 3 whose
-  /// error is below the tolerance; `hcs = "linear"` refuses (one line) a state the linear scheme cannot solve at the
-  /// orders asked for, `"linear-or-maxwellian"` gives there the Maxwellian θ, ζ* and NaN cumulants.
+  /// Returns one HCS column (θ, ζ*, a20, a02, a11; with `hcs = "linear-oriented"` also C and b_pq) of the order-N
+  /// linear-scheme Walton HCS (theory.md §19.25, oriented §19.29) with the error |v_N − v_{N−1}| (v_0 the Maxwellian
+  /// θ, ζ*, cumulants 0, C = 1/3), at `order` or the smallest N ≤ 3 whose error is below the tolerance; `hcs =
+  /// "linear"`, `"linear-oriented"` refuse (one line) a state the linear scheme cannot solve at the orders asked for,
+  /// `"linear-or-maxwellian"` gives there the Maxwellian θ, ζ* and NaN cumulants.
   CoefficientValue sonine_hcs_value(int d, const Rational& alpha, const Rational& beta0, const Rational& kappa,
                                     const Rational& friction, const std::string& scheme, const std::string& name,
                                     const OrderRequest& order) {
     const int highest = order.tolerance ? kMaxWaltonHcsOrder : order.order;
+    const bool oriented = scheme == "linear-oriented";
     const std::vector<RoughWaltonSonineState>& states =
-        hcs_values(d, alpha.to_double(), beta0.to_double(), kappa.to_double(), friction.to_double(), highest);
+        hcs_values(d, alpha.to_double(), beta0.to_double(), kappa.to_double(), friction.to_double(), highest, oriented);
     const auto column = [&](const RoughWaltonSonineState& s) {
       if (name == "rotational_temperature_ratio") return s.temperature_ratio;
       if (name == "cooling_rate") return s.cooling_rate;
-      return s.cumulant(name == "a20" ? 2 : name == "a11" ? 1 : 0, name == "a20" ? 0 : name == "a11" ? 1 : 2);
+      if (name == "orientation_correlation") return s.orientation_correlation;
+      const int p = name[1] - '0', q = name[2] - '0';  // a_pq or b_pq
+      return name[0] == 'b' ? s.orientation_coefficient(p, q) : s.cumulant(p, q);
     };
     // A fixed order needs that order's root; a tolerance scans the solved orders (an unsolved one is undefined).
     const RoughWaltonSonineState& top = states[static_cast<std::size_t>(order.tolerance ? 0 : highest - 1)];
     if (!top.solved && !top.spin_decoupled) {
-      if (scheme == "linear")
+      if (scheme != "linear-or-maxwellian")
         throw std::invalid_argument(
             "hcs: the linear scheme of the Walton gas at order " + std::to_string(highest) +
             " has no root with realizable cumulants near the order below at dimension = " + std::to_string(d) +
@@ -350,6 +404,7 @@ class RoughWaltonModel final : public TransportModel {
       return first_approximation(name == "rotational_temperature_ratio" ? top.temperature_ratio : std::nan(""));
     const double maxwellian = name == "rotational_temperature_ratio" ? top.maxwellian_temperature_ratio
                               : name == "cooling_rate"               ? top.maxwellian_cooling_rate
+                              : name == "orientation_correlation"    ? 1.0 / 3
                                                                      : 0.0;
     return choose_order(order, highest, [&](int n) {
       const double v = column(states[static_cast<std::size_t>(n - 1)]);
@@ -360,16 +415,18 @@ class RoughWaltonModel final : public TransportModel {
     });
   }
 
-  /// Returns the linear-scheme Walton HCS at orders 1 … highest (rough_walton_sonine_cooling_states), cached per state.
+  /// Returns the linear-scheme Walton HCS at orders 1 … highest (rough_walton_sonine_cooling_states), isotropic or
+  /// (`oriented`, theory.md §19.29) with the b_pq, cached per state and ansatz.
   const std::vector<RoughWaltonSonineState>& hcs_values(int d, double alpha, double beta0, double kappa,
-                                                        double friction, int highest) {
+                                                        double friction, int highest, bool oriented = false) {
     if (hcs_cache_.size() > 64) hcs_cache_.clear();
-    auto& entry = hcs_cache_[{static_cast<double>(d), alpha, beta0, kappa, friction}];
+    auto& entry = hcs_cache_[{static_cast<double>(d), alpha, beta0, kappa, friction, oriented ? 1.0 : 0.0}];
     if (static_cast<int>(entry.size()) < highest)
-      entry = rough_walton_sonine_cooling_states(d, alpha, beta0, kappa, friction, highest);
+      entry = rough_walton_sonine_cooling_states(d, alpha, beta0, kappa, friction, highest, 8,
+                                                 oriented ? RoughSonineAnsatz::oriented : RoughSonineAnsatz::isotropic);
     return entry;
   }
-  std::map<std::array<double, 5>, std::vector<RoughWaltonSonineState>> hcs_cache_;
+  std::map<std::array<double, 6>, std::vector<RoughWaltonSonineState>> hcs_cache_;
 
   /// Returns the Navier–Stokes values of orders 1 … highest about the Maxwellian HCS (empty where the spin decouples:
   /// no Walton HCS, every column NaN as at order 1), cached per state.

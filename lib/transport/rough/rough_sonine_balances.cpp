@@ -186,12 +186,12 @@ RoughSonineBalances::RoughSonineBalances(int dimension, const Rational& alpha, c
       });
 }
 
-RoughSonineBalances::RoughSonineBalances(int dimension, int highest_degree, bool spin_decoupled)
+RoughSonineBalances::RoughSonineBalances(int dimension, int highest_degree, bool spin_decoupled, bool orientation)
     : dimension_(dimension), highest_(highest_degree), products_(false), decoupled_(spin_decoupled) {
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("dimension: must be 2 or 3, got " + std::to_string(dimension));
   if (highest_degree < 2) throw std::invalid_argument("RoughSonineBalances: highest Sonine degree must be >= 2");
-  build_structure(false);
+  build_structure(orientation && dimension == 3 && !spin_decoupled);
 }
 
 void RoughSonineBalances::build_structure(bool oriented) {
@@ -289,7 +289,6 @@ RoughSonineBalances::Productions RoughSonineBalances::productions(double tau, bo
 
 RoughSonineBalances::Productions RoughSonineBalances::productions_from(const MonomialAverage& gain,
                                                                        const MonomialAverage& loss) const {
-  if (!orientations_.empty()) throw std::logic_error("RoughSonineBalances: productions_from is isotropic only");
   const std::size_t nm = monomials_.size(), nt = tests_.size();
   std::vector<double> d(nm * nm * nt, 0.0);
   for (std::size_t a = 0; a < nm; ++a)

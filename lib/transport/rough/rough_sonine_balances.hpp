@@ -44,10 +44,11 @@ class RoughSonineBalances {
   /// the products a·a, a·b, b·b come from one gain table of nine forms (x, y, c·w of both partners and of 1').
   RoughSonineBalances(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                       int highest_degree, bool products, bool orientation = false);
-  /// Builds the isotropic linear-scheme balances without collision tables, for averages supplied by the caller
-  /// (productions_from; the Walton gas, theory.md §19.25): d ∈ {2, 3}, M ≥ 2, `spin_decoupled` as at β = −1.
-  /// Throws std::invalid_argument naming the field.
-  RoughSonineBalances(int dimension, int highest_degree, bool spin_decoupled);
+  /// Builds the linear-scheme balances without collision tables, for averages supplied by the caller
+  /// (productions_from; the Walton gas, theory.md §19.25, §19.29): d ∈ {2, 3}, M ≥ 2, `spin_decoupled` as at β = −1;
+  /// `orientation` adds the b_pq family as above (d = 3 and spin coupled only). Throws std::invalid_argument naming
+  /// the field.
+  RoughSonineBalances(int dimension, int highest_degree, bool spin_decoupled, bool orientation = false);
 
   /// Returns the cumulant indices (p, q) of the a_pq, the first unknowns.
   [[nodiscard]] const std::vector<std::array<int, 2>>& cumulants() const { return cumulants_; }
@@ -89,13 +90,14 @@ class RoughSonineBalances {
   };
   /// Returns the collision averages at τ (only those of the linear scheme when `linear`).
   [[nodiscard]] Productions productions(double tau, bool linear) const;
-  /// A collision average ⟨x1^i y1^j x2^k y2^l x1'^m y1'^n⟩/⟨1⟩ (y = ŵ², the scaled spin) of the linear scheme, from
-  /// the exponents (i, j, ·) of partner 1's weight, (k, l, ·) of partner 2's and (m, n, ·) of the test at 1'.
+  /// A collision average ⟨x1^i y1^j f1^{2e} x2^k y2^l f2^{2g} x1'^m y1'^n f1'^{2h}⟩/⟨1⟩ (y = ŵ², the scaled spin;
+  /// f = c·ŵ) of the linear scheme, from the exponents (i, j, e) of partner 1's weight, (k, l, g) of partner 2's and
+  /// (m, n, h) of the test at 1' (e = g = h = 0 for the isotropic ansatz).
   using MonomialAverage =
       std::function<double(const std::array<int, 3>&, const std::array<int, 3>&, const std::array<int, 3>&)>;
-  /// Returns the linear-scheme averages (isotropic ansatz) from `gain` (the average above) and `loss`
-  /// (⟨x1^{i+m} y1^{j+n} x2^k y2^l⟩/⟨1⟩, called with the same three exponent triples): the Walton gas's
-  /// quadratures (theory.md §19.25) in place of the engine's tables.
+  /// Returns the linear-scheme averages from `gain` (the average above) and `loss` (⟨x1^{i+m} y1^{j+n} f1^{2(e+h)}
+  /// x2^k y2^l f2^{2g}⟩/⟨1⟩, called with the same three exponent triples): the Walton gas's quadratures (theory.md
+  /// §19.25, §19.29) in place of the engine's tables.
   [[nodiscard]] Productions productions_from(const MonomialAverage& gain, const MonomialAverage& loss) const;
   /// Returns z_t = −(2/d) R[x] from averages r at a (linearised in a when `linear`).
   [[nodiscard]] double translational_rate(const Productions& r, std::span<const double> a, bool linear) const;

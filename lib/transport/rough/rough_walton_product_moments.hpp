@@ -1,6 +1,7 @@
 // Internal: the moments of products of quadratic forms of the Walton gas's conditioned Gaussian at one τ
 // (docs/theory.md §19.20, (19.80)–(19.81)) and their (u, |g_c,t|) quadrature, shared by the Navier–Stokes
-// elements (rough_walton_sonine.cpp, §19.20) and the Sonine HCS (rough_walton_sonine_hcs.cpp, §19.25).
+// elements (rough_walton_sonine.cpp, §19.20) and the Sonine HCS (rough_walton_sonine_hcs.cpp, §19.25; with the
+// orientation forms c·ŵ of spheres, §19.29).
 #pragma once
 
 #include <algorithm>
@@ -18,8 +19,9 @@
 namespace gkt::detail {
 
 /// The nine forms of the elements: x1 = c1², y1 = ŵ1², x2, y2, x1' = c1'², y1' = ŵ1'², and the dot products
-/// c1·c1', c2·c1, c2·c1' (theory.md §19.20).
-enum WaltonForm { kX1, kY1, kX2, kY2, kX1p, kY1p, kD11p, kD21, kD21p, kForms };
+/// c1·c1', c2·c1, c2·c1' (theory.md §19.20); then the orientation forms f1 = c1·ŵ1, f2 = c2·ŵ2, f1' = c1'·ŵ1' of
+/// the oriented HCS (spheres only; identically 0 for disks, theory.md §19.29).
+enum WaltonForm { kX1, kY1, kX2, kY2, kX1p, kY1p, kD11p, kD21, kD21p, kF1, kF2, kF1p, kForms };
 
 /// A matrix of the conditioned Gaussian's size (12 × 12 for spheres, 6 × 6 for disks), without heap storage.
 using WaltonMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 12, 12>;
@@ -71,6 +73,10 @@ class ProductMoments {
     };
     forms_ = {form(v1, v1, 1),         form(s1, s1, 1 / tau), form(v2, v2, 1), form(s2, s2, 1 / tau), form(v1p, v1p, 1),
               form(s1p, s1p, 1 / tau), form(v1, v1p, 1),      form(v2, v1, 1), form(v2, v1p, 1)};
+    // c·ŵ = c·w/√τ (ŵ = w/√τ, y = ŵ²); disks have no such form (ŵ ⊥ the plane of c): the zero form.
+    const double root = 1 / std::sqrt(tau);
+    for (const auto& [v, s] : {std::pair{v1, s1}, std::pair{v2, s2}, std::pair{v1p, s1p}})
+      forms_.push_back(d == 3 ? form(v, s, root) : form(v1, v1, 0));
     for (const QuadraticForm& f : forms_) ac_.push_back(f.a * c_);
   }
 

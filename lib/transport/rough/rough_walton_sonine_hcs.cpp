@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -33,22 +34,25 @@ struct Point {
 Point linear_point(const RoughSonineBalances& b, int d, double alpha, double beta0, double kappa, double friction,
                    double tau, int panels) {
   using E3 = std::array<int, 3>;
-  using detail::kX1, detail::kY1, detail::kX2, detail::kY2, detail::kX1p, detail::kY1p;
+  using Counts = std::array<int, 9>;  // how often each form of `kind` enters the product
+  using detail::kX1, detail::kY1, detail::kF1, detail::kX2, detail::kY2, detail::kF2, detail::kX1p, detail::kY1p,
+      detail::kF1p;
   detail::ProductMoments moments(d, tau, (1 + alpha) / 2, kappa);
-  // Register every monomial the balances ask for (pass 1), integrate, then read them back (pass 2).
-  std::map<std::array<int, 6>, int> index;
-  const auto id = [&](const std::array<int, 6>& e) {
+  // Register every monomial the balances ask for (pass 1), integrate, then read them back (pass 2). A monomial
+  // x^i y^j f^{2e} (f = c·ŵ, the orientation ansatz, theory.md §19.29) is i, j and 2e factors of the forms x, y, f.
+  std::map<Counts, int> index;
+  const auto id = [&](const Counts& e) {
     if (const auto it = index.find(e); it != index.end()) return it->second;
     std::vector<int> forms;
-    const std::array<int, 6> kind{kX1, kY1, kX2, kY2, kX1p, kY1p};
-    for (std::size_t f = 0; f < 6; ++f) forms.insert(forms.end(), static_cast<std::size_t>(e[f]), kind[f]);
+    const Counts kind{kX1, kY1, kF1, kX2, kY2, kF2, kX1p, kY1p, kF1p};
+    for (std::size_t f = 0; f < kind.size(); ++f) forms.insert(forms.end(), static_cast<std::size_t>(e[f]), kind[f]);
     return index[e] = moments.moment(forms);
   };
   const auto gain_exponents = [](const E3& u, const E3& v, const E3& t) {
-    return std::array<int, 6>{u[0], u[1], v[0], v[1], t[0], t[1]};
+    return Counts{u[0], u[1], 2 * u[2], v[0], v[1], 2 * v[2], t[0], t[1], 2 * t[2]};
   };
   const auto loss_exponents = [](const E3& u, const E3& v, const E3& t) {
-    return std::array<int, 6>{u[0] + t[0], u[1] + t[1], v[0], v[1], 0, 0};
+    return Counts{u[0] + t[0], u[1] + t[1], 2 * (u[2] + t[2]), v[0], v[1], 2 * v[2], 0, 0, 0};
   };
   const auto registering = [&](const auto& exponents) {
     return [&, exponents](const E3& u, const E3& v, const E3& t) {
@@ -110,9 +114,16 @@ double RoughWaltonSonineState::cumulant(int p, int q) const {
   return 0;
 }
 
+double RoughWaltonSonineState::orientation_coefficient(int p, int q) const {
+  if (!solved || spin_decoupled || std::isnan(orientation_correlation)) return kNaN;
+  for (std::size_t i = 0; i < orientation_indices.size(); ++i)
+    if (orientation_indices[i][0] == p && orientation_indices[i][1] == q) return orientation_coefficients[i];
+  return 0;
+}
+
 std::vector<RoughWaltonSonineState> rough_walton_sonine_cooling_states(int dimension, double alpha, double beta0,
                                                                        double kappa, double friction, int highest_order,
-                                                                       int panels) {
+                                                                       int panels, RoughSonineAnsatz ansatz) {
   detail::check_walton_parameters(dimension, alpha, beta0, kappa, friction);
   if (highest_order < 1 || highest_order > kWaltonHcsHighestOrder)
     throw std::invalid_argument("order: must be an integer in [1, " + std::to_string(kWaltonHcsHighestOrder) +
@@ -124,10 +135,14 @@ std::vector<RoughWaltonSonineState> rough_walton_sonine_cooling_states(int dimen
   bool below_solved = first.linear_scheme_solved && !first.spin_decoupled;
   double start = below_solved ? std::log(first.temperature_ratio / kappa) : kNaN;
   for (int order = 1; order <= highest_order; ++order) {
-    const RoughSonineBalances b(dimension, order + 1, false);
+    // The oriented ansatz (theory.md §19.29) for spheres whose spin is coupled; disks have no orientation variable.
+    const RoughSonineBalances b(dimension, order + 1, false,
+                                ansatz == RoughSonineAnsatz::oriented && !first.spin_decoupled);
     RoughWaltonSonineState s;
     s.order = order;
     s.indices = b.cumulants();
+    s.orientation_indices = b.orientations();
+    if (dimension == 2) s.orientation_correlation = kNaN;
     s.spin_decoupled = first.spin_decoupled;
     s.maxwellian_temperature_ratio = first.maxwellian_temperature_ratio;
     s.maxwellian_cooling_rate = first.maxwellian_cooling_rate;
@@ -136,6 +151,8 @@ std::vector<RoughWaltonSonineState> rough_walton_sonine_cooling_states(int dimen
       s.temperature_ratio = first.spin_decoupled ? std::numeric_limits<double>::infinity() : kNaN;
       s.cooling_rate = kNaN;
       s.cumulants.assign(s.indices.size(), kNaN);
+      s.orientation_coefficients.assign(s.orientation_indices.size(), kNaN);
+      s.orientation_correlation = kNaN;
       below_solved = false;
       out.push_back(s);
     };
@@ -170,7 +187,11 @@ std::vector<RoughWaltonSonineState> rough_walton_sonine_cooling_states(int dimen
     }
     s.temperature_ratio = std::exp(x1) * kappa;
     s.cooling_rate = (dimension + 2) / 4.0 * p1.rate;
-    s.cumulants = p1.a;
+    const auto nc = static_cast<std::ptrdiff_t>(s.indices.size());
+    s.cumulants.assign(p1.a.begin(), p1.a.begin() + nc);
+    s.orientation_coefficients.assign(p1.a.begin() + nc, p1.a.end());
+    for (std::size_t o = 0; o < s.orientation_coefficients.size(); ++o)  // (19.28)
+      s.orientation_correlation += b.correlation_weights()[o] * s.orientation_coefficients[o];
     start = x1;
     out.push_back(s);
   }
