@@ -96,7 +96,8 @@ std::vector<M3> tensors(int d, const Vec3& c, const Vec3& w, int top, int member
       for (int j = 0; j < 3; ++j) t2[i][j] -= y / 3 * cc[i][j];
     bases = {traceless(sym(w, w), 3), t2, sym(c, cross(c, w)), sym(w, cross(c, w), p)};
   }
-  const std::vector<M3> later;
+  std::vector<M3> later;
+  if (d == 3) later = {scaled(cc, p * p - dot3(c, c) * y / 3)};
   return full_functions(d, 2, c, w, top, members, bases, later, cc);
 }
 std::vector<Vec3> vectors(int d, const Vec3& c, const Vec3& w, int top, int members) {
@@ -109,7 +110,8 @@ std::vector<Vec3> vectors(int d, const Vec3& c, const Vec3& w, int top, int memb
     for (int k = 0; k < 3; ++k) f[k] = w[k] * p - c[k] * y / 3;
     bases = {f, cross(c, w)};
   }
-  const std::vector<Vec3> later;
+  std::vector<Vec3> later;
+  if (d == 3) later = {scaled(c, p * p - dot3(c, c) * y / 3)};
   return full_functions(d, 1, c, w, top, members, bases, later, c);
 }
 
@@ -203,6 +205,25 @@ TEST(RoughFullSpace, HigherMembersAgainstMonteCarlo) {
     }
     EXPECT_GE(5 * resolved, chiral_other) << "d " << cs.d;
     EXPECT_GT(checked, 40) << "d " << cs.d;
+  }
+}
+
+// The p² families (cc)° P and c P ((19.152)): their Maxwellian products from ⟨x^i y^j p^{2n}⟩ = ⟨x^{i+n}⟩⟨y^{j+n}⟩/(2n
+// + 1) by hand, (cc)°:(cc)° = 2x²/3 and ⟨P²⟩-type sums (1/5 − 2/9 + 1/9) = 4/45: ⟨(cc)°P:(cc)°P⟩ =
+// (8/135)(3/2)_4(3/2)_2 = 105/8, ⟨cP·cP⟩ = (4/45)(3/2)_3(3/2)_2 = 35/8; G = degree × N (6, 5); N = G = 0 with every
+// product (P averages to 0 over the direction of ŵ).
+TEST(RoughFullSpace, SquaredPseudoscalarFamiliesMaxwellProducts) {
+  const RoughChiralFamilyElements full(3, Rational(9, 10), Rational(1, 2), Rational(2, 5), 1, 2);
+  for (int rank : {1, 2}) {
+    const int last = full.size(rank) - 1, products = full.size(rank) - full.count(rank);
+    const double n = rank == 2 ? 105.0 / 8 : 35.0 / 8, degree = rank == 2 ? 6 : 5;
+    EXPECT_FALSE(full.chiral(rank, last));
+    EXPECT_NEAR(full.maxwell_product_at(rank, last, last), n, 1e-12) << "rank " << rank;
+    EXPECT_NEAR(full.maxwell_scaling_product_at(rank, last, last), degree * n, 1e-12) << "rank " << rank;
+    for (int i = 0; i < products; ++i) {
+      EXPECT_NEAR(full.maxwell_product_at(rank, i, last), 0, 1e-12) << "rank " << rank << " product " << i;
+      EXPECT_NEAR(full.maxwell_scaling_product_at(rank, last, i), 0, 1e-12) << "rank " << rank << " product " << i;
+    }
   }
 }
 

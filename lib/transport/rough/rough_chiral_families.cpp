@@ -188,6 +188,12 @@ std::vector<Family> full_functions(int d, int rank, bool first, int top, int mem
       bases.push_back({{}, {}, p * p + scaled(x * y, Rational(-1, 3)), false, false});
     }
   }
+  // The p² dependence of the products' tensor and vector: (cc)° P, c P with P = p² − xy/3 (orthogonal to every
+  // product: P averages to 0 over the direction of ŵ), members from level 2 on (theory.md (19.152)).
+  const Poly pp2 = p * p + scaled(x * y, Rational(-1, 3));
+  std::vector<Family> later;
+  if (d == 3 && rank == 2) later.push_back({{}, {{pp2, ci, ci}}, {}, false, false});
+  if (d == 3 && rank == 1) later.push_back({{{pp2, ci}}, {}, {}, false, false});
   if (rank == 2 && d == 3) {
     bases.push_back({{}, {{one, ci, cw}}, {}, true, false});
     bases.push_back({{}, {{p, wi, cw}}, {}, true, false});
@@ -200,6 +206,11 @@ std::vector<Family> full_functions(int d, int rank, bool first, int top, int mem
     for (const Family& f : bases)
       for (int pp = 0; pp < m; ++pp) {
         out.push_back(times(f, member(pp, m - 1 - pp)));
+        if (level != nullptr) level->push_back(m);
+      }
+    for (const Family& f : later)
+      for (int pp = 0; pp < m - 1; ++pp) {
+        out.push_back(times(f, member(pp, m - 2 - pp)));
         if (level != nullptr) level->push_back(m);
       }
   }

@@ -27,8 +27,9 @@ class RoughChiralFamilyElements : public RoughFamilyElements {
   RoughChiralFamilyElements(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa);
   /// Builds the functions of RoughTrialSpace::full: the products T_r S_p L_q of p + q ≤ K (K − 1 for rank 2), then,
   /// member level m = 1 … aligned_order in turn, (3D) the aligned families of (19.48) and the lowest chiral families
-  /// each times S_p L_q of p + q = m − 1 (theory.md (19.150)); only the elements with an appended function are
-  /// computed. Throws std::invalid_argument naming `dimension`, `order` (K < 1) or `aligned_order` (< 1).
+  /// each times S_p L_q of p + q = m − 1 (theory.md (19.150)) and (3D) (cc)° P, c P (P = (c·ŵ)² − xy/3) times S_p L_q
+  /// of p + q = m − 2 ((19.152)); only the elements with an appended function are computed. Throws
+  /// std::invalid_argument naming `dimension`, `order` (K < 1) or `aligned_order` (< 1).
   RoughChiralFamilyElements(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                             int highest_order, int aligned_order);
   /// Returns the number of functions of rank r (0 scalar, 1 vector, 2 tensor), products included.
@@ -42,7 +43,7 @@ class RoughChiralFamilyElements : public RoughFamilyElements {
   /// Returns maxwell_scaling_product of appended functions i, j (1 … count).
   [[nodiscard]] double maxwell_scaling_product(int rank, int i, int j) const override;
   /// Returns the number of appended functions of rank r with member level m ≤ members (they come first).
-  [[nodiscard]] int count_up_to(int rank, int members) const;
+  [[nodiscard]] int count_up_to(int rank, int members) const override;
   /// Returns true when family i of rank r is chiral (odd in ŵ: built with c × ŵ, resp. ŵ c⊥).
   [[nodiscard]] bool chiral(int rank, int i) const;
   /// Returns ⟨φ_test, 𝓛 φ_trial⟩ = ⟨(φ_trial(1) + φ_trial(2)) · (φ_test(1) − φ_test(1'))⟩/⟨1⟩ at τ = θ/κ
