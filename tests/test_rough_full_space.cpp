@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -242,4 +243,36 @@ TEST(RoughFullSpace, SmoothLimitEqualsTheProducts) {
       EXPECT_NEAR(f.density_heat_translational, p.density_heat_translational, 1e-12) << "d " << d << " N " << n;
     }
   }
+}
+
+// One order for everything ((19.155)): with aligned_order = kRoughMembersTiedToOrder the full space at order N has
+// the members of level M = ⌈N/2⌉, the same values as the fixed-M space at that order (to 1e-12); and at a converging
+// state (disks at Pidduck's gas, κ = 1/2) the order sequence converges the families with the products. Measured
+// (theory.md §19.28): κ* = 1.46350, 1.49566, 1.48691, 1.48741, 1.48643, 1.48646 at N = 1 … 6, η* steps 2e-5, 2e-4,
+// 2e-4, 8e-6 from N = 2; the N = 6 values (M = 3) lie 6e-5 (η*) and 2.1e-4 (κ*) from those with M = 4. Bounds: the
+// last step below 1e-4 (3× the measured 3e-5), the distance to M = 4 below 5e-4 (2.4×), the first step above 1e-2.
+TEST(RoughFullSpace, MembersTiedToTheOrderConverge) {
+  EXPECT_EQ(gkt::rough_full_space_members(1), 1);
+  EXPECT_EQ(gkt::rough_full_space_members(4), 2);
+  EXPECT_EQ(gkt::rough_full_space_members(6), 3);
+  const Rational one(1), kappa(1, 2);
+  const gkt::RoughSonineTransport tied(2, one, one, kappa, 6, gkt::RoughTrialSpace::full,
+                                       gkt::kRoughMembersTiedToOrder);
+  for (int members : {1, 2}) {
+    const gkt::RoughSonineTransport fixed(2, one, one, kappa, 4, gkt::RoughTrialSpace::full, members);
+    for (int n = 2 * members - 1; n <= 2 * members; ++n) {
+      EXPECT_NEAR(tied.at_maxwellian_state(n).shear_viscosity, fixed.at_maxwellian_state(n).shear_viscosity, 1e-12);
+      EXPECT_NEAR(tied.at_maxwellian_state(n).thermal_conductivity, fixed.at_maxwellian_state(n).thermal_conductivity,
+                  1e-12);
+    }
+  }
+  const auto v1 = tied.at_maxwellian_state(1), v2 = tied.at_maxwellian_state(2), v5 = tied.at_maxwellian_state(5),
+             v6 = tied.at_maxwellian_state(6);
+  EXPECT_GT(std::abs(v2.shear_viscosity - v1.shear_viscosity), 1e-2);
+  EXPECT_LT(std::abs(v6.shear_viscosity - v5.shear_viscosity), 1e-4);
+  EXPECT_LT(std::abs(v6.thermal_conductivity - v5.thermal_conductivity), 1e-4);
+  const gkt::RoughSonineTransport more(2, one, one, kappa, 6, gkt::RoughTrialSpace::full, 4);
+  EXPECT_NEAR(v6.shear_viscosity, more.at_maxwellian_state(6).shear_viscosity, 5e-4);
+  EXPECT_NEAR(v6.thermal_conductivity, more.at_maxwellian_state(6).thermal_conductivity, 5e-4);
+  EXPECT_THROW(gkt::RoughSonineTransport(2, one, one, kappa, 2, gkt::RoughTrialSpace::full, -1), std::invalid_argument);
 }
