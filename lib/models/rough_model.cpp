@@ -302,7 +302,8 @@ class RoughModel final : public TransportModel {
   }
   /// The product trial space's Sonine error leaves out the aligned-spin and chiral families (theory.md §19.21,
   /// §19.22), which move η*, κ*, μ* by percents (3D α = 0.9, β = 0.5: η* +1.9 %, κ* +3.4 %, μ* +7.8 %): said once
-  /// per table where a Navier–Stokes or stability column is asked at order ≥ 2 or to a tolerance in that space.
+  /// per table where a Navier–Stokes or stability column is asked at order ≥ 2 or to a tolerance in that space. The
+  /// full space needs none: its family members follow the order (theory.md §19.28), so its _error covers them.
   /// Order 1 alone is the first approximation, whose error is not estimated (nan): nothing to qualify there.
   [[nodiscard]] std::vector<std::string> table_caveats(const std::map<std::string, std::string>& choices,
                                                        const std::vector<std::string>& coefficients, int highest_order,
@@ -322,7 +323,8 @@ class RoughModel final : public TransportModel {
     return {"trial_space: the _error of " + columns +
             " covers the Sonine truncation in the product trial space only; " +
             (maxwellian ? std::string("trial_space = \"full\" adds the aligned and chiral families "
-                                      "(theory.md 19.21-19.22)")
+                                      "(theory.md 19.21-19.22, 19.28; their members follow the order, so its _error "
+                                      "covers them)")
                         : std::string("it leaves out the aligned and chiral families (theory.md "
                                       "19.21-19.22; trial_space = \"full\", about Maxwellians only)")) +
             ", which move these coefficients by percents"};
