@@ -146,7 +146,7 @@ TEST(RoughFullSpace, TimeReversalAtPidduckWithHigherMembers) {
 
 // Every tensor and vector element with an appended function of the full space at order 1 with members M = 2 (the
 // level-2 members new) against 3 × 10⁵ collisions: within 5σ; a fifth of the chiral–non-chiral couplings at least
-// resolved beyond 5σ (measured: 42 of 120 in 3D, 5 of 24 in 2D).
+// resolved beyond 5σ (measured before the p² members joined: 42 of 120 in 3D, 5 of 24 in 2D).
 TEST(RoughFullSpace, HigherMembersAgainstMonteCarlo) {
   struct Case {
     int d;
