@@ -440,8 +440,8 @@ int RoughChiralFamilyElements::size(int rank) const {
 int RoughChiralFamilyElements::count(int rank) const { return size(rank) - products_[static_cast<std::size_t>(rank)]; }
 
 int RoughChiralFamilyElements::count_up_to(int rank, int members) const {
-  const auto& level = level_[static_cast<std::size_t>(rank < 0 || rank > 2 ? 0 : rank)];
   if (rank < 0 || rank > 2) throw std::out_of_range("RoughChiralFamilyElements: rank must be 0, 1 or 2");
+  const auto& level = level_[static_cast<std::size_t>(rank)];
   if (level.empty()) return count(rank);
   return static_cast<int>(std::count_if(level.begin(), level.end(), [members](int m) { return m <= members; }));
 }
