@@ -164,6 +164,11 @@ bool is_hcs_column(const std::string& name) {
 // costs ~5 s per (α, β, κ) in 3D (docs/performance.md).
 constexpr int kMaxRoughOrder = 8;
 
+// trial_space = "full" ties its family members to the order (M = ⌈N/2⌉, theory.md (19.155)): its tables to N + 2 = 6
+// (M = 3) cost 1-4 s of CPU per (α, β, κ) in 3D alone and 12-17 s on the loaded machine, M = 4 ten times more
+// (docs/performance.md): orders 1 … 4.
+constexpr int kMaxRoughFullOrder = 4;
+
 // About the Sonine HCS (reference_state = "hcs", theory.md §19.16) the weighted tables of seven (oriented: eight)
 // engine forms cost 1.6–9 s of CPU at K = 6 (cumulant degree 2–4, 3D; docs/performance.md), 7 s and more at K = 8:
 // orders 1 … 4 (K = N + 2 ≤ 6) and cumulants p + q ≤ 4.
@@ -243,8 +248,8 @@ class RoughModel final : public TransportModel {
     specs.push_back(choice_spec("trial_space",
                                 "trial functions of the Navier-Stokes columns at a Sonine order (order >= 2 or a "
                                 "tolerance; about Maxwellians): the translation x spin Sonine products (default), "
-                                "plus the aligned-spin families (spheres), or plus those and the lowest chiral "
-                                "families (theory.md 19.21, 19.22)",
+                                "plus the aligned-spin families (spheres), or plus those and the chiral families "
+                                "with their members tied to the order (theory.md 19.21, 19.22, 19.28)",
                                 {"products", "aligned", "full"}));
     specs.push_back(choice_spec("rotational_temperature_closure",
                                 "stability columns: T_rot slaved to T in the normal solution (Navier-Stokes, "
@@ -297,7 +302,8 @@ class RoughModel final : public TransportModel {
   }
   /// The product trial space's Sonine error leaves out the aligned-spin and chiral families (theory.md §19.21,
   /// §19.22), which move η*, κ*, μ* by percents (3D α = 0.9, β = 0.5: η* +1.9 %, κ* +3.4 %, μ* +7.8 %): said once
-  /// per table where a Navier–Stokes or stability column is asked at order ≥ 2 or to a tolerance in that space.
+  /// per table where a Navier–Stokes or stability column is asked at order ≥ 2 or to a tolerance in that space. The
+  /// full space needs none: its family members follow the order (theory.md §19.28), so its _error covers them.
   /// Order 1 alone is the first approximation, whose error is not estimated (nan): nothing to qualify there.
   [[nodiscard]] std::vector<std::string> table_caveats(const std::map<std::string, std::string>& choices,
                                                        const std::vector<std::string>& coefficients, int highest_order,
@@ -317,7 +323,8 @@ class RoughModel final : public TransportModel {
     return {"trial_space: the _error of " + columns +
             " covers the Sonine truncation in the product trial space only; " +
             (maxwellian ? std::string("trial_space = \"full\" adds the aligned and chiral families "
-                                      "(theory.md 19.21-19.22)")
+                                      "(theory.md 19.21-19.22, 19.28; their members follow the order, so its _error "
+                                      "covers them)")
                         : std::string("it leaves out the aligned and chiral families (theory.md "
                                       "19.21-19.22; trial_space = \"full\", about Maxwellians only)")) +
             ", which move these coefficients by percents"};
@@ -377,6 +384,14 @@ class RoughModel final : public TransportModel {
                                     "\" needs a Sonine order (order >= 2 or a tolerance) for the Navier-Stokes and "
                                     "stability columns; order = 1 alone is the first approximation in the product "
                                     "space");
+      if (trial_space_ == RoughTrialSpace::full && !order.tolerance && order.order > kMaxRoughFullOrder &&
+          std::any_of(coefficients.begin(), coefficients.end(),
+                      [&is_critical](const std::string& c) { return is_rough_sonine_column(c) || is_critical(c); }))
+        throw std::invalid_argument("order: trial_space = \"full\" takes orders 1 to " +
+                                    std::to_string(kMaxRoughFullOrder) +
+                                    " for the Navier-Stokes and stability columns (its family members follow the "
+                                    "order), got " +
+                                    std::to_string(order.order));
     }
     // T_r as a fourth field (theory.md §19.15.1) needs Γ* and Z_δ of the reference's rates: the Maxwellian ones of
     // (19.17), (19.37), or about the Sonine HCS the slopes of the linear scheme's cumulant rates (§19.27), which the
@@ -517,17 +532,19 @@ class RoughModel final : public TransportModel {
       // order to the cap + 2, since these sequences may settle and then wander (theory.md §19.23).
       if (!first && (is_rough_sonine_column(name) || is_critical(name))) {
         const bool windowed = order.tolerance || order.row_tolerance;
-        const int tables = windowed ? kMaxRoughOrder + 2 : order.order + 2;
-        out.push_back(choose_order(order, kMaxRoughOrder, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
+        // The full space's members follow the order: its cap is lower (kMaxRoughFullOrder, the tables' cost).
+        const int cap = trial_space_ == RoughTrialSpace::full ? kMaxRoughFullOrder : kMaxRoughOrder;
+        const int tables = windowed ? cap + 2 : order.order + 2;
+        out.push_back(choose_order(order, cap, [&, d = d, alpha = alpha, beta = beta, kappa = kappa](int n) {
           const auto at = [&](int m) {
-            if (m > kMaxRoughOrder + 2) return std::numeric_limits<double>::quiet_NaN();  // past the tables' cap
+            if (m > cap + 2) return std::numeric_limits<double>::quiet_NaN();  // past the tables' cap
             return is_critical(name)
                        ? reference_column(d, alpha, beta, kappa, true, name, 1, m, tables, rotational_field)
                        : rough_sonine_column(transport_values(d, alpha, beta, kappa, m, tables), name);
           };
           if (!windowed) return estimate_from_doubles_confirmed(at(n), at(n + 1), at(n + 2), [&] { return at(n + 3); });
           std::vector<double> window;
-          for (int m = n; m <= kMaxRoughOrder + 2; ++m) window.push_back(at(m));
+          for (int m = n; m <= cap + 2; ++m) window.push_back(at(m));
           return estimate_from_doubles_windowed(window);
         }));
         continue;
@@ -640,9 +657,12 @@ class RoughModel final : public TransportModel {
     if (const auto it = entry.values.find(n); it != entry.values.end()) return it->second;
     if (!entry.transport || entry.transport->highest_order() < n) {
       const int k = n <= 3 ? 3 : std::max(n, tables);
-      entry.transport = trial_space_ == RoughTrialSpace::product
-                            ? std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k)
-                            : std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k, trial_space_);
+      entry.transport =
+          trial_space_ == RoughTrialSpace::product ? std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k)
+          : trial_space_ == RoughTrialSpace::full
+              // the family members follow the order (theory.md (19.155)): the scan converges them too
+              ? std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k, trial_space_, kRoughMembersTiedToOrder)
+              : std::make_unique<RoughSonineTransport>(d, alpha, beta, kappa, k, trial_space_);
     }
     return entry.values[n] = entry.transport->at_maxwellian_state(n);
   }

@@ -154,9 +154,11 @@ Family times(Family f, const Poly& m) {
   return f;
 }
 
-/// Returns the functions of RoughTrialSpace::full of rank r on slot a (first) or b: products of p + q ≤ top, the
-/// aligned families (3D) times S_p L_q of p + q < members, the lowest chiral families (theory.md §19.22).
-std::vector<Family> full_functions(int d, int rank, bool first, int top, int members) {
+/// Returns the functions of RoughTrialSpace::full of rank r on slot a (first) or b: products of p + q ≤ top, then by
+/// member level m = 1 … members the aligned families (3D) and the lowest chiral families times S_p L_q of
+/// p + q = m − 1, and (3D) (cc)° P, c P times S_p L_q of p + q = m − 2 (theory.md §19.22, (19.150), (19.152));
+/// `level` receives each appended function's m.
+std::vector<Family> full_functions(int d, int rank, bool first, int top, int members, std::vector<int>* level) {
   const int c = first ? kCa : kCb, w = first ? kWa : kWb;
   const Item ci{false, c, c}, wi{false, w, w}, cw{true, c, w};
   const Poly x = dot(c, c), y = dot(w, w), p = dot(c, w), one = constant(Rational(1));
@@ -175,27 +177,42 @@ std::vector<Family> full_functions(int d, int rank, bool first, int top, int mem
       f.product = true;
       out.push_back(std::move(f));
     }
-  std::vector<Family> aligned;
+  std::vector<Family> bases;
   if (d == 3) {
     if (rank == 2) {
-      aligned.push_back({{}, {{one, wi, wi}}, {}, false, false});
-      aligned.push_back({{}, {{p, ci, wi}, {scaled(y, Rational(-1, 3)), ci, ci}}, {}, false, false});
+      bases.push_back({{}, {{one, wi, wi}}, {}, false, false});
+      bases.push_back({{}, {{p, ci, wi}, {scaled(y, Rational(-1, 3)), ci, ci}}, {}, false, false});
     } else if (rank == 1) {
-      aligned.push_back({{{p, wi}, {scaled(y, Rational(-1, 3)), ci}}, {}, {}, false, false});
+      bases.push_back({{{p, wi}, {scaled(y, Rational(-1, 3)), ci}}, {}, {}, false, false});
     } else {
-      aligned.push_back({{}, {}, p * p + scaled(x * y, Rational(-1, 3)), false, false});
+      bases.push_back({{}, {}, p * p + scaled(x * y, Rational(-1, 3)), false, false});
     }
   }
-  for (const Family& f : aligned)
-    for (int pp = 0; pp < members; ++pp)
-      for (int qq = 0; pp + qq < members; ++qq) out.push_back(times(f, member(pp, qq)));
+  // The p² dependence of the products' tensor and vector: (cc)° P, c P with P = p² − xy/3 (orthogonal to every
+  // product: P averages to 0 over the direction of ŵ), members from level 2 on (theory.md (19.152)).
+  const Poly pp2 = p * p + scaled(x * y, Rational(-1, 3));
+  std::vector<Family> later;
+  if (d == 3 && rank == 2) later.push_back({{}, {{pp2, ci, ci}}, {}, false, false});
+  if (d == 3 && rank == 1) later.push_back({{{pp2, ci}}, {}, {}, false, false});
   if (rank == 2 && d == 3) {
-    out.push_back({{}, {{one, ci, cw}}, {}, true, false});
-    out.push_back({{}, {{p, wi, cw}}, {}, true, false});
+    bases.push_back({{}, {{one, ci, cw}}, {}, true, false});
+    bases.push_back({{}, {{p, wi, cw}}, {}, true, false});
   } else if (rank == 2) {
-    out.push_back({{}, {{scaled(one, Rational(-1)), ci, cw}}, {}, true, false});
+    bases.push_back({{}, {{scaled(one, Rational(-1)), ci, cw}}, {}, true, false});
   } else if (rank == 1) {
-    out.push_back({{{scaled(one, Rational(d == 3 ? 1 : -1)), cw}}, {}, {}, true, false});
+    bases.push_back({{{scaled(one, Rational(d == 3 ? 1 : -1)), cw}}, {}, {}, true, false});
+  }
+  for (int m = 1; m <= members; ++m) {
+    for (const Family& f : bases)
+      for (int pp = 0; pp < m; ++pp) {
+        out.push_back(times(f, member(pp, m - 1 - pp)));
+        if (level != nullptr) level->push_back(m);
+      }
+    for (const Family& f : later)
+      for (int pp = 0; pp < m - 1; ++pp) {
+        out.push_back(times(f, member(pp, m - 2 - pp)));
+        if (level != nullptr) level->push_back(m);
+      }
   }
   return out;
 }
@@ -348,8 +365,8 @@ RoughChiralFamilyElements::RoughChiralFamilyElements(int dimension, const Ration
   for (int rank = 0; rank <= 2; ++rank) {
     const auto r = static_cast<std::size_t>(rank);
     const int top = rank == 2 ? highest_order - 1 : highest_order;
-    const auto trials = full ? full_functions(d, rank, true, top, aligned_order) : families(d, rank, true);
-    const auto tests = full ? full_functions(d, rank, false, top, aligned_order) : families(d, rank, false);
+    const auto trials = full ? full_functions(d, rank, true, top, aligned_order, &level_[r]) : families(d, rank, true);
+    const auto tests = full ? full_functions(d, rank, false, top, aligned_order, nullptr) : families(d, rank, false);
     count_[r] = static_cast<int>(trials.size());
     for (const Family& f : trials) {
       chiral_[r].push_back(f.chiral);
@@ -421,6 +438,13 @@ int RoughChiralFamilyElements::size(int rank) const {
 }
 
 int RoughChiralFamilyElements::count(int rank) const { return size(rank) - products_[static_cast<std::size_t>(rank)]; }
+
+int RoughChiralFamilyElements::count_up_to(int rank, int members) const {
+  if (rank < 0 || rank > 2) throw std::out_of_range("RoughChiralFamilyElements: rank must be 0, 1 or 2");
+  const auto& level = level_[static_cast<std::size_t>(rank)];
+  if (level.empty()) return count(rank);
+  return static_cast<int>(std::count_if(level.begin(), level.end(), [members](int m) { return m <= members; }));
+}
 
 bool RoughChiralFamilyElements::chiral(int rank, int i) const {
   return chiral_[static_cast<std::size_t>(rank)][at(rank, i, 0) / static_cast<std::size_t>(size(rank))];

@@ -25,10 +25,11 @@ class RoughChiralFamilyElements : public RoughFamilyElements {
   /// Builds every element for d = 2 or 3 at restitutions α, β and κ. Throws std::invalid_argument naming
   /// `dimension` unless d ∈ {2, 3}, and `alpha`, `beta`, `kappa` outside (0, 1], [−1, 1], (0, ∞).
   RoughChiralFamilyElements(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa);
-  /// Builds the functions of RoughTrialSpace::full: the products T_r S_p L_q of p + q ≤ K (K − 1 for rank 2), then
-  /// (3D) the aligned families of (19.48) times S_p L_q, p + q ≤ aligned_order − 1, then the lowest chiral families;
-  /// only the elements with an appended function are computed. Throws std::invalid_argument naming `dimension`,
-  /// `order` (K < 1) or `aligned_order` (< 1).
+  /// Builds the functions of RoughTrialSpace::full: the products T_r S_p L_q of p + q ≤ K (K − 1 for rank 2), then,
+  /// member level m = 1 … aligned_order in turn, (3D) the aligned families of (19.48) and the lowest chiral families
+  /// each times S_p L_q of p + q = m − 1 (theory.md (19.150)) and (3D) (cc)° P, c P (P = (c·ŵ)² − xy/3) times S_p L_q
+  /// of p + q = m − 2 ((19.152)); only the elements with an appended function are computed. Throws
+  /// std::invalid_argument naming `dimension`, `order` (K < 1) or `aligned_order` (< 1).
   RoughChiralFamilyElements(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                             int highest_order, int aligned_order);
   /// Returns the number of functions of rank r (0 scalar, 1 vector, 2 tensor), products included.
@@ -41,6 +42,8 @@ class RoughChiralFamilyElements : public RoughFamilyElements {
   [[nodiscard]] double maxwell_product(int rank, int i, int j) const override;
   /// Returns maxwell_scaling_product of appended functions i, j (1 … count).
   [[nodiscard]] double maxwell_scaling_product(int rank, int i, int j) const override;
+  /// Returns the number of appended functions of rank r with member level m ≤ members (they come first).
+  [[nodiscard]] int count_up_to(int rank, int members) const override;
   /// Returns true when family i of rank r is chiral (odd in ŵ: built with c × ŵ, resp. ŵ c⊥).
   [[nodiscard]] bool chiral(int rank, int i) const;
   /// Returns ⟨φ_test, 𝓛 φ_trial⟩ = ⟨(φ_trial(1) + φ_trial(2)) · (φ_test(1) − φ_test(1'))⟩/⟨1⟩ at τ = θ/κ
@@ -59,7 +62,8 @@ class RoughChiralFamilyElements : public RoughFamilyElements {
   std::array<int, 3> products_{};  ///< number of products per rank (0 for the tool's list)
   std::array<int, 3> count_{};
   std::array<std::vector<bool>, 3> chiral_;
-  int shift_ = 0;  ///< every stored element is λ^shift × its value
+  std::array<std::vector<int>, 3> level_;  ///< member level of each appended function (full space)
+  int shift_ = 0;                          ///< every stored element is λ^shift × its value
   /// Per rank, (test, trial): the rational part and the part times √(π/2), polynomials in λ.
   std::array<std::vector<RationalPolynomial>, 3> even_, odd_;
   std::array<std::vector<double>, 3> product_, scaling_;

@@ -12,6 +12,12 @@ class RoughFamilyElements {
   virtual ~RoughFamilyElements() = default;
   /// Returns the number of appended functions of rank r.
   [[nodiscard]] virtual int count(int rank) const = 0;
+  /// Returns the number of appended functions of rank r up to member level `members` (they come first; every one
+  /// where the families have no levels).
+  [[nodiscard]] virtual int count_up_to(int rank, int members) const {
+    static_cast<void>(members);
+    return count(rank);
+  }
   /// Returns ⟨φ, 𝓛ψ⟩ at τ = θ/κ for test φ and trial ψ of rank r, each a product (p, q) or, when p < 0, the appended
   /// function number q (1 … count; normalisation of theory.md (5.2)).
   [[nodiscard]] virtual double element(int rank, int p_test, int q_test, int p_trial, int q_trial,

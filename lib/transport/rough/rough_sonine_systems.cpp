@@ -82,8 +82,8 @@ std::vector<RoughTrialFunction> sonine_basis(const RoughModeState& state, int ra
 /// Appends the aligned-spin functions of the basis's rank to s (theory.md (19.49)): their collision rows and columns
 /// with every product and with each other; N and G vanish between an aligned function and a product (orthogonal, and
 /// C·∂_C maps each set into itself).
-void append_aligned_families(RoughGalerkinSystem& s, const RoughFamilyElements& aligned, double tau) {
-  const int rank = s.basis.front().rank, m = aligned.count(rank);
+void append_aligned_families(RoughGalerkinSystem& s, const RoughFamilyElements& aligned, double tau, int members) {
+  const int rank = s.basis.front().rank, m = members > 0 ? aligned.count_up_to(rank, members) : aligned.count(rank);
   const std::size_t n = s.basis.size(), total = n + static_cast<std::size_t>(m);
   for (RoughMatrix* x : {&s.collision, &s.cooling, &s.product}) {
     for (auto& row : *x) row.resize(total, 0.0);
@@ -140,7 +140,8 @@ RoughGalerkinSystem system_of(const RoughCollisionElements& elements, const Roug
     }
   }
   s.basis = std::move(basis);
-  if (state.aligned && !state.spin_decoupled && !s.basis.empty()) append_aligned_families(s, *state.aligned, state.tau);
+  if (state.aligned && !state.spin_decoupled && !s.basis.empty())
+    append_aligned_families(s, *state.aligned, state.tau, state.family_members);
   return s;
 }
 

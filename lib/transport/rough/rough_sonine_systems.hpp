@@ -128,6 +128,8 @@ struct RoughModeState {
   /// products only). Their rows and columns follow the products' in the matrices; `basis` lists the products only,
   /// and every source, flux and constraint of an aligned family is 0 (each is orthogonal to every product).
   const RoughFamilyElements* aligned = nullptr;
+  /// The highest member level of `aligned` appended (0: every function of the tables; theory.md (19.155)).
+  int family_members = 0;
 };
 
 /// Returns the shear system of order N: (c c)° S_p L_q, p + q ≤ N − 1 (theory.md (19.41)).

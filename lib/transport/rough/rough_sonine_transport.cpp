@@ -21,6 +21,7 @@ struct RoughSonineTransport::Tables {
   detail::RoughCollisionElements elements;
   std::unique_ptr<detail::RoughWeightedCollisionElements> weighted;  ///< null without cumulant tables
   std::unique_ptr<detail::RoughFamilyElements> aligned;  ///< null for the product space (aligned or full otherwise)
+  bool members_tied = false;  ///< the full space's member level follows the order (rough_full_space_members)
 };
 
 RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta,
@@ -38,9 +39,14 @@ RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha,
                                            int aligned_order)
     : RoughSonineTransport(dimension, alpha, beta, kappa, highest_order) {
   if (space == RoughTrialSpace::product) return;
+  if (aligned_order < (space == RoughTrialSpace::full ? 0 : 1))
+    throw std::invalid_argument(
+        "aligned_order: must be an integer >= 1 (0 ties the full space's members to the order)");
   if (space == RoughTrialSpace::full) {
-    tables_->aligned = std::make_unique<detail::RoughChiralFamilyElements>(dimension, alpha, beta, kappa, highest_order,
-                                                                           aligned_order);
+    tables_->members_tied = aligned_order == kRoughMembersTiedToOrder;
+    tables_->aligned = std::make_unique<detail::RoughChiralFamilyElements>(
+        dimension, alpha, beta, kappa, highest_order,
+        tables_->members_tied ? rough_full_space_members(highest_order) : aligned_order);
     return;
   }
   if (dimension != 3)
@@ -59,6 +65,11 @@ RoughSonineTransport::RoughSonineTransport(int dimension, const Rational& alpha,
   tables_->weighted = std::make_unique<detail::RoughWeightedCollisionElements>(
       rough_parameters_symbolic_temperature(dimension, alpha, beta, kappa), highest_order, cumulant_degree,
       orientation);
+}
+
+int rough_full_space_members(int order) {
+  if (order < 1) throw std::invalid_argument("order: must be an integer >= 1");
+  return (order + 1) / 2;
 }
 
 RoughSonineTransport::~RoughSonineTransport() = default;
@@ -112,8 +123,9 @@ RoughTransportValues RoughSonineTransport::at(int order, double temperature_rati
   if (decoupled != t.spin_decoupled || !(temperature_ratio > 0))
     throw std::invalid_argument("temperature_ratio: must be > 0 and finite (+inf only at beta = -1)");
   // At β = −1 no translational element depends on τ (the spin decouples): any τ will do.
-  const detail::RoughModeState state{t.dimension, decoupled ? 1.0 : temperature_ratio / t.kappa.to_double(), decoupled,
-                                     nullptr, t.aligned.get()};
+  const detail::RoughModeState state{t.dimension,     decoupled ? 1.0 : temperature_ratio / t.kappa.to_double(),
+                                     decoupled,       nullptr,
+                                     t.aligned.get(), t.members_tied ? rough_full_space_members(order) : 0};
   return detail::solve_rough_navier_stokes(t.elements, state, order, temperature_ratio);
 }
 

@@ -32,9 +32,17 @@ struct RoughTransportValues {
 enum class RoughTrialSpace {
   product,  ///< the translation × spin Sonine products of (19.40) only (the default)
   aligned,  ///< 3D: the products plus the lowest aligned-spin families (ŵŵ)°, (c·ŵ)(cŵ)°, (ŵŵ)°·c, (c·ŵ)² − c²ŵ²/3
-  full,  ///< the products, the aligned families (3D) and the lowest chiral ones (c(c×ŵ))_sym, (c·ŵ)(ŵ(c×ŵ))_sym, c×ŵ
-         ///< (2D: ŵ(c c⊥)_sym, ŵ c⊥), theory.md §19.22
+  full,  ///< the products, the aligned families (3D) and the chiral ones (c(c×ŵ))_sym, (c·ŵ)(ŵ(c×ŵ))_sym, c×ŵ
+         ///< (2D: ŵ(c c⊥)_sym, ŵ c⊥) with their members, theory.md §19.22, §19.28
 };
+
+/// The `aligned_order` that ties RoughTrialSpace::full's member level to the Sonine order (rough_full_space_members).
+inline constexpr int kRoughMembersTiedToOrder = 0;
+
+/// Returns the member level M(N) = ⌈N/2⌉ of the full space at Sonine order N when tied to it (theory.md (19.155)):
+/// the aligned and chiral families times S_p L_q of p + q ≤ M − 1 ((cc)° P, c P: p + q ≤ M − 2). Throws
+/// std::invalid_argument naming `order` below 1.
+int rough_full_space_members(int order);
 
 /// The exact collision tables of one (d, α, β, κ) up to a highest Sonine order, with θ symbolic; each call
 /// evaluates them at θ and solves the three Galerkin systems of one order (theory.md §19.16).
@@ -54,9 +62,11 @@ class RoughSonineTransport {
   /// As the first constructor, with the trial space `space`: RoughTrialSpace::aligned appends to each mode the
   /// aligned-spin families (theory.md §19.21) times S_p(x) L_q(y), p + q ≤ aligned_order − 1 (1: the lowest members
   /// alone), exact elements with the products of every order, about Maxwellians only (at, at_maxwellian_state).
-  /// RoughTrialSpace::full appends the same aligned members (3D) and then the lowest chiral families (theory.md
-  /// §19.22; 2D: the chiral ones alone). Throws std::invalid_argument naming `trial_space` for aligned with d = 2
-  /// (no c·ŵ for disks) and `aligned_order` below 1.
+  /// RoughTrialSpace::full appends the same aligned members (3D), the chiral families times S_p L_q of the same
+  /// p + q (theory.md §19.22; 2D: the chiral ones alone) and (3D) (cc)° P, c P (P = (c·ŵ)² − c²ŵ²/3) times S_p L_q,
+  /// p + q ≤ aligned_order − 2 (theory.md §19.28); with aligned_order = kRoughMembersTiedToOrder the member level
+  /// follows each order N, M = rough_full_space_members(N). Throws std::invalid_argument naming `trial_space` for
+  /// aligned with d = 2 (no c·ŵ for disks) and `aligned_order` below 1 (below 0 for full).
   RoughSonineTransport(int dimension, const Rational& alpha, const Rational& beta, const Rational& kappa,
                        int highest_order, RoughTrialSpace space, int aligned_order = 1);
   ~RoughSonineTransport();
