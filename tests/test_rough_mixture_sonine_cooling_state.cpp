@@ -149,3 +149,64 @@ TEST(RoughMixtureSonineCoolingState, BalancesVanishAtTheSolution) {
     for (double g : b.balance) EXPECT_NEAR(g, 0.0, 1e-10);
   }
 }
+
+// (d) Against the test-side DSMC (tests/rough_mixture_dsmc.hpp: rigid-body rule, no engine), 3D, 3000 spheres,
+// 40 collisions per particle of relaxation, 50 batches of 5, cumulants measured per batch; three states, one at
+// mass ratio 10. Every γ_i, θ_i, a20_i, a02_i, a11_i within 4σ of the batch error (the batches are correlated,
+// so σ is somewhat small; measured at most 2.4σ, theory.md §19.30); the DSMC must see the cumulants (a02_2 of
+// the third state > 10σ from 0) and, in the first state, exclude the Maxwellian θ_1 (0.8279, > 4σ) that the
+// linear scheme's correction approaches.
+TEST(RoughMixtureSonineCoolingState, AgainstDsmc) {
+  struct Case {
+    RoughMixtureComponent a, b;
+    gkt::test::McRoughSpecies ma, mb;
+    Rational alpha, beta;
+    std::array<int, 2> count;
+  };
+  const std::vector<Case> cases{
+      {kLight,
+       kHeavy,
+       {1.0, 1.0, 0.4, 1.0, 1.0},
+       {4.0, 2.0, 0.5, 1.0, 1.0},
+       Rational(9, 10),
+       Rational(1, 2),
+       {900, 2100}},
+      {kLight, kHeavy, {1.0, 1.0, 0.4, 1.0, 1.0}, {4.0, 2.0, 0.5, 1.0, 1.0}, Rational(7, 10), Rational(1), {900, 2100}},
+      {RoughMixtureComponent{Rational(1), Rational(2, 5), 1.0, 0.5},
+       RoughMixtureComponent{Rational(10), Rational(2, 5), 1.0, 0.5},
+       {1.0, 1.0, 0.4, 1.0, 1.0},
+       {10.0, 1.0, 0.4, 1.0, 1.0},
+       Rational(9, 10),
+       Rational(1, 2),
+       {1500, 1500}}};
+  for (const Case& c : cases) {
+    const auto state = gkt::rough_mixture_sonine_cooling_state(
+        binary(3, c.a, c.b, {c.alpha, c.alpha, c.alpha}, {c.beta, c.beta, c.beta}));
+    ASSERT_TRUE(state.solved);
+    const double al = c.alpha.to_double(), be = c.beta.to_double();
+    const auto dsmc =
+        gkt::test::run_rough_mixture_dsmc({c.ma, c.mb}, c.count, {al, al, al}, {be, be, be}, 40, 50, 5, 20261203);
+    const std::array<double, 4> t{state.temperature_ratio[0], state.temperature_ratio[1], state.rotational_ratio[0],
+                                  state.rotational_ratio[1]};
+    const std::array<double, 6> a{state.a20[0], state.a02[0], state.a11[0], state.a20[1], state.a02[1], state.a11[1]};
+    const char* tn[] = {"gamma_1", "gamma_2", "theta_1", "theta_2"};
+    const char* an[] = {"a20_1", "a02_1", "a11_1", "a20_2", "a02_2", "a11_2"};
+    std::printf("m2/m1 = %.0f alpha %.1f beta %.1f\n", c.mb.mass, al, be);
+    for (std::size_t k = 0; k < 4; ++k)
+      std::printf("  %s linear %.4f DSMC %.4f +- %.4f (%.1f sigma)\n", tn[k], t[k], dsmc.mean[k], dsmc.error[k],
+                  (t[k] - dsmc.mean[k]) / dsmc.error[k]);
+    for (std::size_t k = 0; k < 6; ++k)
+      std::printf("  %s linear %.4f DSMC %.4f +- %.4f (%.1f sigma)\n", an[k], a[k], dsmc.cumulant_mean[k],
+                  dsmc.cumulant_error[k], (a[k] - dsmc.cumulant_mean[k]) / dsmc.cumulant_error[k]);
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(t[k], dsmc.mean[k], 4 * dsmc.error[k]) << tn[k];
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_NEAR(a[k], dsmc.cumulant_mean[k], 4 * dsmc.cumulant_error[k]) << an[k];
+    if (&c == &cases[0]) {
+      const auto maxwellian =
+          gkt::rough_mixture_cooling_state(binary(3, c.a, c.b, {c.alpha, c.alpha, c.alpha}, {c.beta, c.beta, c.beta}));
+      EXPECT_GT(std::abs(maxwellian.rotational_ratio[0] - dsmc.mean[2]), 4 * dsmc.error[2]);
+    }
+    if (&c == &cases[2]) {
+      EXPECT_GT(dsmc.cumulant_mean[4], 10 * dsmc.cumulant_error[4]);
+    }
+  }
+}
