@@ -151,7 +151,7 @@ TEST(RoughMixtureSonineCoolingState, BalancesVanishAtTheSolution) {
 }
 
 // (d) Against the test-side DSMC (tests/rough_mixture_dsmc.hpp: rigid-body rule, no engine), 3D, 3000 spheres,
-// 40 collisions per particle of relaxation, 50 batches of 5, cumulants measured per batch; three states, one at
+// 40 collisions per particle of relaxation, 40 batches of 5, cumulants measured per batch; three states, one at
 // mass ratio 10. Every γ_i, θ_i, a20_i, a02_i, a11_i within 4σ of the batch error (the batches are correlated,
 // so σ is somewhat small; measured at most 2.4σ, theory.md §19.30); the DSMC must see the cumulants (a02_2 of
 // the third state > 10σ from 0) and, in the first state, exclude the Maxwellian θ_1 (0.8279, > 4σ) that the
@@ -185,7 +185,7 @@ TEST(RoughMixtureSonineCoolingState, AgainstDsmc) {
     ASSERT_TRUE(state.solved);
     const double al = c.alpha.to_double(), be = c.beta.to_double();
     const auto dsmc =
-        gkt::test::run_rough_mixture_dsmc({c.ma, c.mb}, c.count, {al, al, al}, {be, be, be}, 40, 50, 5, 20261203);
+        gkt::test::run_rough_mixture_dsmc({c.ma, c.mb}, c.count, {al, al, al}, {be, be, be}, 40, 40, 5, 20261203);
     const std::array<double, 4> t{state.temperature_ratio[0], state.temperature_ratio[1], state.rotational_ratio[0],
                                   state.rotational_ratio[1]};
     const std::array<double, 6> a{state.a20[0], state.a02[0], state.a11[0], state.a20[1], state.a02[1], state.a11[1]};

@@ -260,30 +260,40 @@ RoughMixtureSonineCoolingState rough_mixture_sonine_cooling_state(const RoughBin
     u(static_cast<Eigen::Index>(1 + s)) = std::log(maxwellian.rotational_ratio[spins[s]]);
   Evaluation e = evaluate(u);
   bool converged = false;
-  for (int it = 0; it < 40 && !converged; ++it) {
-    out.iterations = it + 1;
-    Eigen::MatrixXd jacobian(n, n);
-    const double h = 1e-6;
-    for (Eigen::Index c = 0; c < n; ++c) {
-      Eigen::VectorXd shifted = u;
-      shifted(c) += h;
-      jacobian.col(c) = (evaluate(shifted).residual - e.residual) / h;
+  try {
+    int stalled = 0;
+    for (int it = 0; it < 40 && !converged && stalled < 3; ++it) {
+      out.iterations = it + 1;
+      Eigen::MatrixXd jacobian(n, n);
+      const double h = 1e-6;
+      for (Eigen::Index c = 0; c < n; ++c) {
+        Eigen::VectorXd shifted = u;
+        shifted(c) += h;
+        jacobian.col(c) = (evaluate(shifted).residual - e.residual) / h;
+      }
+      Eigen::VectorXd step = jacobian.fullPivLu().solve(-e.residual);
+      if (!step.allFinite()) break;
+      // A trust region of one unit in the logs (a factor e in a temperature ratio), then damping: halve the
+      // step until the residual decreases (at most 10 times). Three steps in a row that reduce the residual by
+      // less than 1 % are a local minimum of |residual| without a root (seen at α = 0.5, β = −0.5): give up.
+      if (step.norm() > 1) step /= step.norm();
+      double scale = 1;
+      Evaluation next = evaluate(u + step);
+      for (int halving = 0; halving < 10 && !(next.residual.norm() < e.residual.norm()) && step.norm() > 1e-12;
+           ++halving) {
+        scale /= 2;
+        next = evaluate(u + scale * step);
+      }
+      stalled = next.residual.norm() > 0.99 * e.residual.norm() ? stalled + 1 : 0;
+      u += scale * step;
+      e = next;
+      // The residual is exact at the rationalised temperatures (relative 1e-15): a full step of 1e-10 in the logs,
+      // after steps that shrank quadratically, leaves the state at round-off; smaller steps only chase that noise.
+      converged = scale == 1 && step.norm() < 1e-10;
     }
-    const Eigen::VectorXd step = jacobian.fullPivLu().solve(-e.residual);
-    if (!step.allFinite()) break;
-    // Damped: halve the step until the residual decreases (at most 20 times).
-    double scale = 1;
-    Evaluation next = evaluate(u + step);
-    for (int halving = 0; halving < 20 && !(next.residual.norm() < e.residual.norm()) && step.norm() > 1e-12;
-         ++halving) {
-      scale /= 2;
-      next = evaluate(u + scale * step);
-    }
-    u += scale * step;
-    e = next;
-    // The residual is exact at the rationalised temperatures (relative 1e-15): a step of 1e-10 in the logs, after
-    // steps that shrank quadratically, leaves the state at round-off; smaller steps only chase that noise.
-    converged = scale == 1 && (scale * step).norm() < 1e-10;
+  } catch (const std::exception&) {
+    // An iterate whose temperatures the engine refuses (a ratio under- or overflowing): no root on this path.
+    converged = false;
   }
   const auto t = temperatures_of(u);
   const double mix = mixture.species[0].fraction * t[0] + mixture.species[1].fraction * t[1];
