@@ -17,9 +17,12 @@
 
 namespace gkt::test {
 
-/// Batch means of γ_1, γ_2, θ_1, θ_2 and their standard errors.
+/// Batch means of γ_1, γ_2, θ_1, θ_2 and their standard errors; and of the cumulants (a20_1, a02_1, a11_1,
+/// a20_2, a02_2, a11_2) of theory.md (19.170), each batch's from its own moments: a20 = (d/(d+2))⟨X²⟩/⟨X⟩² − 1,
+/// a02 likewise in Y (d_r = 3), a11 = ⟨XY⟩/(⟨X⟩⟨Y⟩) − 1, X ∝ m v², Y ∝ Iω² per species.
 struct RoughMixtureDsmcResult {
   std::array<double, 4> mean{}, error{};
+  std::array<double, 6> cumulant_mean{}, cumulant_error{};
 };
 
 /// Runs the DSMC with n_k particles of species k, pair restitutions at 0 (1–1), 1 (1–2), 2 (2–2).
@@ -119,11 +122,33 @@ inline RoughMixtureDsmcResult run_rough_mixture_dsmc(const std::array<McRoughSpe
   };
   collide(static_cast<long>(relaxation * n / 2));
   std::vector<std::array<double, 4>> samples;
+  std::vector<std::array<double, 6>> cumulant_samples;
   for (int b = 0; b < batches; ++b) {
     collide(static_cast<long>(per_batch * n / 2));
     const auto t = temperatures();
     const double mix = x1 * t[0] + x2 * t[1];
     samples.push_back({t[0] / mix, t[1] / mix, t[2] / t[0], t[3] / t[1]});
+    std::array<std::array<double, 5>, 2> sums{};  // ⟨X⟩, ⟨Y⟩, ⟨X²⟩, ⟨Y²⟩, ⟨XY⟩ (unnormalised X = m v², Y = Iω²)
+    for (int p = 0; p < n; ++p) {
+      const auto k = static_cast<std::size_t>(kind[static_cast<std::size_t>(p)]);
+      const double x = species[k].mass * dot3(v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(p)]);
+      const double y =
+          species[k].inertia() * dot3(omega[static_cast<std::size_t>(p)], omega[static_cast<std::size_t>(p)]);
+      sums[k][0] += x;
+      sums[k][1] += y;
+      sums[k][2] += x * x;
+      sums[k][3] += y * y;
+      sums[k][4] += x * y;
+    }
+    std::array<double, 6> c{};
+    for (std::size_t k = 0; k < 2; ++k) {
+      const double cnt = count[k];
+      const double mx = sums[k][0] / cnt, my = sums[k][1] / cnt;
+      c[3 * k] = 0.6 * sums[k][2] / cnt / (mx * mx) - 1;
+      c[3 * k + 1] = 0.6 * sums[k][3] / cnt / (my * my) - 1;
+      c[3 * k + 2] = sums[k][4] / cnt / (mx * my) - 1;
+    }
+    cumulant_samples.push_back(c);
   }
   gsl_rng_free(rng);
   RoughMixtureDsmcResult r;
@@ -135,6 +160,16 @@ inline RoughMixtureDsmcResult run_rough_mixture_dsmc(const std::array<McRoughSpe
     }
     r.mean[k] = s / batches;
     r.error[k] = std::sqrt(std::max(s2 / batches - r.mean[k] * r.mean[k], 0.0) / (batches - 1));
+  }
+  for (std::size_t k = 0; k < 6; ++k) {
+    double s = 0, s2 = 0;
+    for (const auto& x : cumulant_samples) {
+      s += x[k];
+      s2 += x[k] * x[k];
+    }
+    r.cumulant_mean[k] = s / batches;
+    r.cumulant_error[k] =
+        std::sqrt(std::max(s2 / batches - r.cumulant_mean[k] * r.cumulant_mean[k], 0.0) / (batches - 1));
   }
   return r;
 }

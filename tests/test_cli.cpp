@@ -692,8 +692,12 @@ TEST(CliRough, BinaryMixture) {
            {"'beta=[[0.5, 0], [0.1, 0.5]]'", "beta: the restitution matrix must be symmetric"},
            {"moment_of_inertia_2=0", "moment_of_inertia_2: must be a number in (0, 1], got 0"},
            {"moment_of_inertia_1=1.5", "moment_of_inertia_1: must be a number in (0, 1], got 1.5"},
-           {"'hcs=\"linear\"'", "hcs: the rough binary mixture (species = 2) has the Maxwellian HCS only"},
+           {"'hcs=\"nonlinear\"'",
+            "hcs: the rough binary mixture (species = 2) has the Maxwellian and the first-Sonine linear HCS"},
            {"order=2", "order: must be exactly 1, got 2"},
+           {"'hcs=\"linear\"' --set order=2", "order: must be exactly 1, got 2"},
+           {"'coefficients=[\"a20_1\"]'", "coefficients: a20_1 needs the first-Sonine HCS"},
+           {"'hcs=\"linear\"' --set alpha=0.5 --set beta=-0.5", "hcs: the first-Sonine linear HCS of this rough"},
            {"'coefficients=[\"a20\"]'", "coefficients: unknown coefficient 'a20'"}}) {
     const CliRun bad = run_gkt("table " + scene_path("rough_mixture_hcs.toml") + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
@@ -706,6 +710,35 @@ TEST(CliRough, BinaryMixture) {
   EXPECT_EQ(one.status, 2) << one.err;
   EXPECT_NE(one.err.find("mass_1: per-species keys need species = 2"), std::string::npos) << one.err;
   EXPECT_TRUE(one.out.empty());
+}
+
+// hcs = "linear" for the rough binary (theory.md §19.30): the cumulant columns a20_i, a02_i, a11_i join the HCS
+// columns, and the values lie within 4σ of the test-side DSMC of that section (α = 0.9, β = 0.5, 3000 spheres:
+// θ_1 0.7971 ± 0.0050, θ_2 0.9632 ± 0.0042, a02_1 0.1174 ± 0.0098, a02_2 0.0889 ± 0.0049).
+TEST(CliRough, BinaryMixtureFirstSonine) {
+  const CliRun run = run_gkt("table " + scene_path("rough_mixture_hcs.toml") +
+                             " --set 'alpha=[0.9]' --set 'beta=[0.5]' --set 'hcs=\"linear\"'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto t = parse_csv(run.out);
+  ASSERT_EQ(t.size(), 2u);
+  const std::vector<std::string> head{"alpha",
+                                      "beta",
+                                      "temperature_ratio_1",
+                                      "temperature_ratio_2",
+                                      "rotational_temperature_ratio_1",
+                                      "rotational_temperature_ratio_2",
+                                      "cooling_rate",
+                                      "a20_1",
+                                      "a02_1",
+                                      "a11_1",
+                                      "a20_2",
+                                      "a02_2",
+                                      "a11_2"};
+  for (std::size_t k = 0; k < head.size(); ++k) ASSERT_EQ(t[0][k], head[k]);
+  EXPECT_NEAR(std::stod(t[1][4]), 0.7971, 4 * 0.0050);
+  EXPECT_NEAR(std::stod(t[1][5]), 0.9632, 4 * 0.0042);
+  EXPECT_NEAR(std::stod(t[1][8]), 0.1174, 4 * 0.0098);
+  EXPECT_NEAR(std::stod(t[1][11]), 0.0889, 4 * 0.0049);
 }
 
 // The cumulant reference of the rough Navier-Stokes columns (theory.md §19.16, conventions.md `reference_state`,

@@ -175,8 +175,16 @@ TEST(RoughMixtureModel, RefusesBadInput) {
   gkt::OrderRequest two;
   two.order = 2;
   refuses(p, kColumns, "order", two);
-  p.choices["hcs"] = "linear";
+  p.choices["hcs"] = "nonlinear";
   refuses(p, kColumns, "hcs");
+  p.choices["hcs"] = "maxwellian";  // the cumulants need the first-Sonine HCS (theory.md §19.30)
+  refuses(p, {"a20_1"}, "coefficients");
+  p.choices["hcs"] = "linear";
+  refuses(p, {"a20_1"}, "order", two);
+  // α = 0.5, β = −0.5: the linear scheme has no realizable root (as the one gas there, §19.6).
+  p.numbers["alpha"] = Rational(1, 2);
+  p.numbers["beta"] = Rational(-1, 2);
+  refuses(p, {"a20_1"}, "hcs");
   // A tracer heated by a host spin that does not cool (β_11 = −1, x_2 = 0, β_12 > −1): no HCS.
   p = binary(3, kLight, kHeavy, Rational(9, 10), Rational(1, 2));
   p.numbers["beta_1_1"] = Rational(-1);
@@ -186,4 +194,46 @@ TEST(RoughMixtureModel, RefusesBadInput) {
   ParameterPoint one;
   one.numbers["mass_1"] = Rational(2);
   refuses(one, {"cooling_rate"}, "mass_1");
+}
+
+// hcs = "linear" (theory.md §19.30) through the model: two identical species (x = 1/4, 3/4) give the one-gas model's
+// linear first-Sonine θ, ζ*, a20, a02, a11 (hcs = "linear", order 1) to 1e-10, d = 2, 3; "linear-or-maxwellian"
+// falls back to the Maxwellian columns with nan cumulants where the linear scheme has no root, and equals "linear"
+// where it has one.
+TEST(RoughMixtureModel, FirstSonineHcs) {
+  auto rough = gkt::make_transport_model("rough");
+  const std::vector<std::string> cumulants{"a20_1", "a02_1", "a11_1", "a20_2", "a02_2", "a11_2"};
+  std::vector<std::string> all = kColumns;
+  all.insert(all.end(), cumulants.begin(), cumulants.end());
+  for (int d : {2, 3}) {
+    const Rational alpha(9, 10), beta(1, 2), kappa(2, 5);
+    const Grain a{Rational(3), Rational(3, 2), Rational(1, 4), kappa},
+        b{Rational(3), Rational(3, 2), Rational(3, 4), kappa};
+    ParameterPoint p = binary(d, a, b, alpha, beta);
+    p.choices["hcs"] = "linear";
+    const auto mix = values(*rough, p, all);
+    ParameterPoint one;
+    one.numbers = {{"dimension", Rational(d)}, {"alpha", alpha}, {"beta", beta}, {"moment_of_inertia", kappa}};
+    one.choices["hcs"] = "linear";
+    const auto gas = values(*rough, one, {"rotational_temperature_ratio", "cooling_rate", "a20", "a02", "a11"});
+    EXPECT_NEAR(mix[0], 1.0, 1e-10);
+    EXPECT_NEAR(mix[2], gas[0], 1e-10) << "d=" << d;
+    EXPECT_NEAR(mix[3], gas[0], 1e-10) << "d=" << d;
+    EXPECT_NEAR(mix[4], gas[1], 1e-10) << "d=" << d;
+    for (std::size_t i = 0; i < 2; ++i)
+      for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(mix[5 + 3 * i + k], gas[2 + k], 1e-10) << "d=" << d;
+  }
+  ParameterPoint p = binary(3, kLight, kHeavy, Rational(1, 2), Rational(-1, 2));
+  p.choices["hcs"] = "linear-or-maxwellian";
+  const auto fallback = values(*rough, p, all);
+  p.choices["hcs"] = "maxwellian";
+  const auto maxwellian = values(*rough, p, kColumns);
+  for (std::size_t k = 0; k < kColumns.size(); ++k) EXPECT_EQ(fallback[k], maxwellian[k]) << kColumns[k];
+  for (std::size_t k = kColumns.size(); k < all.size(); ++k) EXPECT_TRUE(std::isnan(fallback[k])) << all[k];
+  p = binary(3, kLight, kHeavy, Rational(9, 10), Rational(1, 2));
+  p.choices["hcs"] = "linear-or-maxwellian";
+  const auto either = values(*rough, p, all);
+  p.choices["hcs"] = "linear";
+  const auto linear = values(*rough, p, all);
+  for (std::size_t k = 0; k < all.size(); ++k) EXPECT_EQ(either[k], linear[k]) << all[k];
 }

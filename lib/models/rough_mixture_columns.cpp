@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 
 #include "gkt/transport/rough/rough_mixture_cooling_state.hpp"
+#include "gkt/transport/rough/rough_mixture_sonine_cooling_state.hpp"
 #include "models/rough_parameters.hpp"
 
 namespace gkt::detail {
@@ -20,7 +23,8 @@ ParameterSpec real(const std::string& name, const Rational& min, bool min_inclus
   return {name, ParameterSpec::Kind::real, min, max, min_inclusive, max_inclusive, fallback, description, {}};
 }
 
-/// The keys of the one-gas model that the binary does not take (its HCS is Maxwellian, no Navier–Stokes columns).
+/// The keys of the one-gas model that the binary does not take (its HCS is first Sonine at most, no Navier–Stokes
+/// columns).
 constexpr std::array<const char*, 3> kOneGasOnly{"reference_state", "rotational_temperature_closure", "hcs_order"};
 
 }  // namespace
@@ -61,6 +65,10 @@ std::vector<std::string> rough_mixture_columns() {
           "rotational_temperature_ratio_2", "cooling_rate"};
 }
 
+std::vector<std::string> rough_mixture_cumulant_columns() {
+  return {"a20_1", "a02_1", "a11_1", "a20_2", "a02_2", "a11_2"};
+}
+
 bool is_rough_mixture_point(const ParameterPoint& point) { return point.number("species", Rational(1)) == Rational(2); }
 
 void refuse_species_keys_for_one_gas(const ParameterPoint& point) {
@@ -78,18 +86,28 @@ std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSp
   for (const char* key : kOneGasOnly)
     if (p.given(key))
       throw std::invalid_argument(std::string(key) +
-                                  ": not taken by the rough binary mixture (species = 2: Maxwellian HCS only)");
-  if (p.given("hcs") && p.choice("hcs") != "maxwellian")
+                                  ": not taken by the rough binary mixture (species = 2: Maxwellian or first-Sonine "
+                                  "HCS only)");
+  // Not given: the Maxwellian HCS (the binary's default before the Sonine HCS existed, theory.md §19.26).
+  const std::string scheme = p.given("hcs") ? p.choice("hcs") : "maxwellian";
+  if (scheme != "maxwellian" && scheme != "linear" && scheme != "linear-or-maxwellian")
     throw std::invalid_argument(
-        "hcs: the rough binary mixture (species = 2) has the Maxwellian HCS only: use hcs = "
-        "\"maxwellian\", got \"" +
-        p.choice("hcs") + "\"");
-  const auto columns = rough_mixture_columns();
-  for (const auto& name : coefficients)
+        "hcs: the rough binary mixture (species = 2) has the Maxwellian and the first-Sonine linear HCS: use hcs = "
+        "\"maxwellian\", \"linear\" or \"linear-or-maxwellian\", got \"" +
+        scheme + "\"");
+  auto columns = rough_mixture_columns();
+  const auto cumulants = rough_mixture_cumulant_columns();
+  columns.insert(columns.end(), cumulants.begin(), cumulants.end());
+  for (const auto& name : coefficients) {
     if (std::find(columns.begin(), columns.end(), name) == columns.end())
       throw std::invalid_argument("coefficients: " + name +
                                   " is not computed for the rough binary mixture (species = 2); valid: "
-                                  "temperature_ratio_i, rotational_temperature_ratio_i, cooling_rate");
+                                  "temperature_ratio_i, rotational_temperature_ratio_i, cooling_rate, a20_i, a02_i, "
+                                  "a11_i");
+    if (scheme == "maxwellian" && std::find(cumulants.begin(), cumulants.end(), name) != cumulants.end())
+      throw std::invalid_argument("coefficients: " + name +
+                                  " needs the first-Sonine HCS of the rough binary mixture: use hcs = \"linear\"");
+  }
   RoughBinaryMixture m;
   m.dimension = p.number("dimension") == Rational(2) ? 2 : 3;
   for (int i = 1; i <= 2; ++i) {
@@ -113,15 +131,45 @@ std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSp
       m.alpha[pair] = p.given(a) ? p.number(a) : p.number("alpha");
       m.beta[pair] = p.given(b) ? p.number(b) : p.number("beta");
     }
-  const RoughMixtureCoolingState state = rough_mixture_cooling_state(m);
+  const RoughMixtureCoolingState maxwellian = rough_mixture_cooling_state(m);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // Columns in the order of rough_mixture_columns() then rough_mixture_cumulant_columns().
+  std::array<double, 11> value{maxwellian.temperature_ratio[0],
+                               maxwellian.temperature_ratio[1],
+                               maxwellian.rotational_ratio[0],
+                               maxwellian.rotational_ratio[1],
+                               maxwellian.cooling_rate,
+                               nan,
+                               nan,
+                               nan,
+                               nan,
+                               nan,
+                               nan};
+  if (scheme != "maxwellian") {
+    const RoughMixtureSonineCoolingState s = rough_mixture_sonine_cooling_state(m);
+    if (s.solved)
+      value = {s.temperature_ratio[0],
+               s.temperature_ratio[1],
+               s.rotational_ratio[0],
+               s.rotational_ratio[1],
+               s.cooling_rate,
+               s.a20[0],
+               s.a02[0],
+               s.a11[0],
+               s.a20[1],
+               s.a02[1],
+               s.a11[1]};
+    else if (scheme == "linear")
+      throw std::invalid_argument(
+          "hcs: the first-Sonine linear HCS of this rough binary mixture has no root with realizable cumulants "
+          "(Newton from the Maxwellian HCS, theory.md section 19.30); use hcs = \"linear-or-maxwellian\" or "
+          "\"maxwellian\"");
+  }
   std::vector<CoefficientValue> out;
   for (const auto& name : coefficients) {
-    const double x = name == "temperature_ratio_1"              ? state.temperature_ratio[0]
-                     : name == "temperature_ratio_2"            ? state.temperature_ratio[1]
-                     : name == "rotational_temperature_ratio_1" ? state.rotational_ratio[0]
-                     : name == "rotational_temperature_ratio_2" ? state.rotational_ratio[1]
-                                                                : state.cooling_rate;
-    out.push_back(first_approximation(x));
+    const auto at = static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+    // A decoupled spin (θ_i = +∞, theory.md (19.130)) prints nan, as before.
+    out.push_back(first_approximation(std::isinf(value[at]) ? nan : value[at]));
   }
   return out;
 }

@@ -1,6 +1,7 @@
 // Private: the binary mixture of rough grains inside the "rough" model (`species = 2`, from two
 // [[species]] tables): its keys, its columns and their values from the Maxwellian HCS of
-// rough_mixture_cooling_state.hpp (docs/theory.md §19.17, §19.26).
+// rough_mixture_cooling_state.hpp (docs/theory.md §19.17, §19.26) or, with hcs = "linear", the first-Sonine
+// HCS of rough_mixture_sonine_cooling_state.hpp (§19.30).
 #pragma once
 
 #include <string>
@@ -19,13 +20,20 @@ std::vector<ParameterSpec> rough_mixture_parameters();
 /// (T_r,i/T_t,i) for i = 1, 2 and cooling_rate (ζ/ν0(m̄, σ̄); theory.md (19.55)).
 std::vector<std::string> rough_mixture_columns();
 
+/// Returns the rough binary mixture's cumulant columns a20_i, a02_i, a11_i (i = 1, 2) of the first-Sonine HCS
+/// (theory.md (19.170)), computed with hcs = "linear" or "linear-or-maxwellian" only.
+std::vector<std::string> rough_mixture_cumulant_columns();
+
 /// Returns true if the point describes a binary mixture (species = 2).
 bool is_rough_mixture_point(const ParameterPoint& point);
 
-/// Returns the Maxwellian-HCS values of `coefficients` (rough_mixture_columns) of the binary of `point`,
-/// validated against `schema` (the rough model's); first approximation, order 1 only. Throws
-/// std::invalid_argument naming the key for a one-gas key the binary does not take, another order, hcs other than
-/// "maxwellian", fractions not summing to 1 and any column the binary does not have.
+/// Returns the values of `coefficients` (rough_mixture_columns, rough_mixture_cumulant_columns) of the binary of
+/// `point`, validated against `schema` (the rough model's): the Maxwellian HCS (hcs not given or "maxwellian") or
+/// the first-Sonine linear HCS (hcs = "linear"; "linear-or-maxwellian" falls back to the Maxwellian values with
+/// `nan` cumulants where it has no realizable root); first approximation, order 1 only. Throws
+/// std::invalid_argument naming the key for a one-gas key the binary does not take, another order, hcs =
+/// "nonlinear", cumulant columns with the Maxwellian HCS, "linear" without a root, fractions not summing to 1
+/// and any column the binary does not have.
 std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSpec>& schema,
                                                    const ParameterPoint& point,
                                                    const std::vector<std::string>& coefficients,

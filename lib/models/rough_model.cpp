@@ -213,11 +213,14 @@ class RoughModel final : public TransportModel {
     for (const auto& c : stability_coefficient_names()) names.push_back(c);
     for (const auto& c : rough_mixture_columns())  // cooling_rate is a column of both
       if (std::find(names.begin(), names.end(), c) == names.end()) names.push_back(c);
+    for (const auto& c : rough_mixture_cumulant_columns()) names.push_back(c);
     return names;
   }
-  /// A binary (species = 2, theory.md §19.17) has its Maxwellian-HCS columns only; one gas every other column.
+  /// A binary (species = 2, theory.md §19.17) has its HCS columns only (the cumulants a20_i, a02_i, a11_i of
+  /// §19.30 included); one gas every other column.
   [[nodiscard]] std::vector<std::string> scene_coefficient_names(const ParameterPoint& fixed) const override {
-    const auto binary = rough_mixture_columns();
+    auto binary = rough_mixture_columns();
+    for (const auto& c : rough_mixture_cumulant_columns()) binary.push_back(c);
     if (is_rough_mixture_point(fixed)) return binary;
     auto names = coefficient_names();
     std::erase_if(names, [&binary](const std::string& c) {
@@ -226,9 +229,15 @@ class RoughModel final : public TransportModel {
     return names;
   }
   /// Without `coefficients` a scene gets the columns it had before the stability values and the
-  /// higher cumulants existed (a binary: all of its columns).
+  /// higher cumulants existed (a binary: its Maxwellian-HCS columns, and with hcs = "linear" or
+  /// "linear-or-maxwellian" the cumulants too).
   [[nodiscard]] std::vector<std::string> default_coefficients(const ParameterPoint& fixed) const override {
-    return is_rough_mixture_point(fixed) ? rough_mixture_columns() : kRoughTableColumns;
+    if (!is_rough_mixture_point(fixed)) return kRoughTableColumns;
+    auto binary = rough_mixture_columns();
+    const std::string scheme = fixed.choice("hcs", "maxwellian");
+    if (scheme == "linear" || scheme == "linear-or-maxwellian")
+      for (const auto& c : rough_mixture_cumulant_columns()) binary.push_back(c);
+    return binary;
   }
   [[nodiscard]] std::vector<ParameterSpec> parameters() const override {
     auto specs = rough_grain_parameters("beta", "tangential restitution coefficient (-1 smooth, +1 perfectly rough)");

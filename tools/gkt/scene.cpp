@@ -299,9 +299,11 @@ Scene load_scene(toml::table table, bool require_order) try {
   }
 
   ParameterPoint fixed;  // single-valued numbers: what the model's coefficient list may depend on
-  for (const auto& [key, value] : table)
+  for (const auto& [key, value] : table) {
     if (value.is_integer() || value.is_floating_point())
       fixed.numbers[std::string(key.str())] = scene_number(value, std::string(key.str()));
+    if (value.is_string()) fixed.choices[std::string(key.str())] = value.as_string()->get();  // e.g. hcs
+  }
   for (const auto& spec : specs)  // a key not given is single-valued too: its default
     if (spec.kind != ParameterSpec::Kind::choice && !table.contains(spec.name))
       fixed.numbers[spec.name] = spec.default_value;
