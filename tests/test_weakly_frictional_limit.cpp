@@ -91,7 +91,9 @@ TEST(WeaklyFrictionalLimit, ClosedForms) {
   EXPECT_NEAR(gauss.y2, 3, 1e-5);
   EXPECT_NEAR(gauss.y3, 15, 1e-4);
   EXPECT_NEAR(gauss.drift_slope, 2, 1e-6);
-  EXPECT_LT(gkt::weakly_frictional_spin_moments(3, 200).y2, 1.02);
+  // the shell limit: Var y → (b + c1)/(λb), the Ornstein–Uhlenbeck width of (19.64), b + c1 = 136/45, b = 32/15
+  const double shell = 200, variance = gkt::weakly_frictional_spin_moments(3, shell).y2 - 1;
+  EXPECT_NEAR(variance * shell * (32.0 / 15) / (136.0 / 45), 1, 0.03);
   EXPECT_TRUE(std::isinf(gkt::weakly_frictional_spin_moments(3, 0).y2));
   // a smaller cutoff, a heavier tail
   EXPECT_GT(gkt::weakly_frictional_spin_moments(3, 0.1).y3, gkt::weakly_frictional_spin_moments(3, 0.3).y3);

@@ -36,7 +36,7 @@ RawMoments raw_moments(const FokkerPlanckConstants& k, double cutoff, double a1)
   const double a = cutoff * k.b / 2, p = a1 + a * k.c1 / k.b;
   const double mu = 2 / k.b * (p - k.c0 * k.b / k.c1) - 1, small = 2 * k.c0 / k.c1 - 1;
   // trapezoid in s = ln y: the integrand decays like y^{small+1} at 0 and e^{−λy} at ∞
-  const double h = 1e-3, top = std::log(50 / cutoff) + 4;
+  const double h = 1e-2, top = std::log(50 / cutoff) + 4;
   double norm = 0, m1 = 0, m2 = 0, m3 = 0, shift = 0;
   bool first = true;
   for (double s = -60; s < top; s += h) {
