@@ -24,8 +24,11 @@ WeaklyFrictionalHcs weakly_frictional_hcs(int d, double r, double kappa);
 
 /// Moments of the stationary scaled spin y = w²/⟨w²⟩ of the hot branch (docs/theory.md §19.32).
 struct WeaklyFrictionalSpinMoments {
-  double y2 = 0, y3 = 0;   ///< ⟨y²⟩ and ⟨y³⟩ (⟨y⟩ = 1; +∞ where the tail makes them diverge)
-  double drift_slope = 0;  ///< a1 of (19.206) in units of η_t²/κ² per collision, fixed by ⟨y⟩ = 1
+  /// ⟨y²⟩ and ⟨y³⟩ (⟨y⟩ = 1; +∞ where the tail makes them diverge).
+  /// @{
+  double y2 = 0, y3 = 0;
+  /// @}
+  double drift_slope = 0;  ///< a1 of (19.205) in units of η_t²/κ² per collision, fixed by ⟨y⟩ = 1
 };
 
 /// Returns ⟨y²⟩, ⟨y³⟩ of the stationary density (19.207) of the hot branch's Fokker–Planck equation
