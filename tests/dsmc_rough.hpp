@@ -11,9 +11,10 @@
 
 namespace gkt::test {
 
-/// Batch means and standard errors of θ = T_r/T_t, the cumulants a20, a02, a11 and C.
+/// Batch means and standard errors of θ = T_r/T_t, the cumulants a20, a02, a11, a03 and C.
 struct RoughHcsSample {
   double theta = 0, theta_error = 0, a20 = 0, a20_error = 0, a02 = 0, a02_error = 0, a11 = 0, a11_error = 0;
+  double a03 = 0, a03_error = 0;                  ///< spin sixth-moment ratio (§19.32)
   double orientation = 0, orientation_error = 0;  ///< C = ⟨(v·w)²/(v²w²)⟩ (d = 3)
 };
 
@@ -36,6 +37,7 @@ inline RoughHcsSample run_rough_hcs_dsmc(int d, double alpha, double beta, doubl
   batch_mean(run.a20, s.a20, s.a20_error);
   batch_mean(run.a02, s.a02, s.a02_error);
   batch_mean(run.a11, s.a11, s.a11_error);
+  batch_mean(run.a03, s.a03, s.a03_error);
   batch_mean(run.orientation, s.orientation, s.orientation_error);
   return s;
 }

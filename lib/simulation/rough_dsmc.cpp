@@ -147,13 +147,14 @@ RoughDsmcRun run_rough_hcs_dsmc(int d, const RoughDsmcParameters& parameters, co
     run.cooling_rate.push_back(-(clock.log_temperature(temperature()) - log_t) / (clock.tau() - tau));
     run.trace.time.push_back(clock.time());
     run.trace.temperature.push_back(std::exp(clock.log_temperature(temperature())));
-    double v2 = 0, v4 = 0, w2 = 0, w4 = 0, vw = 0, c = 0;
+    double v2 = 0, v4 = 0, w2 = 0, w4 = 0, w6 = 0, vw = 0, c = 0;
     for (std::size_t q = 0; q < n; ++q) {
       const double x = detail::dot3(v[q], v[q]), y = detail::dot3(w[q], w[q]);
       v2 += x / count;
       v4 += x * x / count;
       w2 += y / count;
       w4 += y * y / count;
+      w6 += y * y * y / count;
       vw += x * y / count;
       const double proj = detail::dot3(v[q], w[q]);
       if (x > 0 && y > 0) c += proj * proj / (x * y) / count;
@@ -164,6 +165,7 @@ RoughDsmcRun run_rough_hcs_dsmc(int d, const RoughDsmcParameters& parameters, co
     run.a20.push_back(v4 / (v2 * v2) * d / (d + 2) - 1);
     run.a02.push_back(w4 / (w2 * w2) * dr / (dr + 2) - 1);
     run.a11.push_back(vw / (v2 * w2) - 1);
+    run.a03.push_back(w6 / (w2 * w2 * w2) * dr * dr / ((dr + 2) * (dr + 4)) - 1);
     run.orientation.push_back(c);
   }
   const double samples = count * schedule.batches;

@@ -128,12 +128,13 @@ struct RoughDsmcParameters {
 };
 
 /// One run of rough grains: per batch θ = T_r/T_t, the cumulants a20, a02, a11 (docs/theory.md
-/// §19.6), the orientation correlation C = ⟨(v·w)²/(v²w²)⟩ (§19.8) and ζ* (ν0 of T_t, so the
-/// translational cooling rate); the clock of T_t; the histogram of the translational speed.
+/// §19.6), the spin's sixth-moment ratio a03 (§19.32), the orientation correlation C = ⟨(v·w)²/(v²w²)⟩ (§19.8) and ζ*
+/// (ν0 of T_t, so the translational cooling rate); the clock of T_t; the histogram of the translational speed.
 struct RoughDsmcRun {
-  /// Per batch: θ = T_r/T_t, the cumulants a20, a02, a11, the orientation correlation C and ζ*.
+  /// Per batch: θ = T_r/T_t, the cumulants a20, a02, a11, a03 = ⟨w⁶⟩ d_r²/(⟨w²⟩³(d_r+2)(d_r+4)) − 1
+  /// (0 for a Maxwellian spin), the orientation correlation C and ζ*.
   /// @{
-  std::vector<double> temperature_ratio, a20, a02, a11, orientation, cooling_rate;
+  std::vector<double> temperature_ratio, a20, a02, a11, a03, orientation, cooling_rate;
   /// @}
   /// The clock of the translational temperature T_t.
   DsmcTrace trace;
