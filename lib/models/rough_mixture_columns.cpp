@@ -69,27 +69,7 @@ void refuse_species_keys_for_one_gas(const ParameterPoint& point) {
       throw std::invalid_argument(spec.name + ": per-species keys need species = 2 (two [[species]] tables)");
 }
 
-std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSpec>& schema,
-                                                   const ParameterPoint& point,
-                                                   const std::vector<std::string>& coefficients,
-                                                   const OrderRequest& order) {
-  const SchemaPoint p(schema, point);
-  require_first_approximation(order, "rough binary-mixture");
-  for (const char* key : kOneGasOnly)
-    if (p.given(key))
-      throw std::invalid_argument(std::string(key) +
-                                  ": not taken by the rough binary mixture (species = 2: Maxwellian HCS only)");
-  if (p.given("hcs") && p.choice("hcs") != "maxwellian")
-    throw std::invalid_argument(
-        "hcs: the rough binary mixture (species = 2) has the Maxwellian HCS only: use hcs = "
-        "\"maxwellian\", got \"" +
-        p.choice("hcs") + "\"");
-  const auto columns = rough_mixture_columns();
-  for (const auto& name : coefficients)
-    if (std::find(columns.begin(), columns.end(), name) == columns.end())
-      throw std::invalid_argument("coefficients: " + name +
-                                  " is not computed for the rough binary mixture (species = 2); valid: "
-                                  "temperature_ratio_i, rotational_temperature_ratio_i, cooling_rate");
+RoughBinaryMixture rough_binary_mixture(const SchemaPoint& p) {
   RoughBinaryMixture m;
   m.dimension = p.number("dimension") == Rational(2) ? 2 : 3;
   for (int i = 1; i <= 2; ++i) {
@@ -113,6 +93,31 @@ std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSp
       m.alpha[pair] = p.given(a) ? p.number(a) : p.number("alpha");
       m.beta[pair] = p.given(b) ? p.number(b) : p.number("beta");
     }
+  return m;
+}
+
+std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSpec>& schema,
+                                                   const ParameterPoint& point,
+                                                   const std::vector<std::string>& coefficients,
+                                                   const OrderRequest& order) {
+  const SchemaPoint p(schema, point);
+  require_first_approximation(order, "rough binary-mixture");
+  for (const char* key : kOneGasOnly)
+    if (p.given(key))
+      throw std::invalid_argument(std::string(key) +
+                                  ": not taken by the rough binary mixture (species = 2: Maxwellian HCS only)");
+  if (p.given("hcs") && p.choice("hcs") != "maxwellian")
+    throw std::invalid_argument(
+        "hcs: the rough binary mixture (species = 2) has the Maxwellian HCS only: use hcs = "
+        "\"maxwellian\", got \"" +
+        p.choice("hcs") + "\"");
+  const auto columns = rough_mixture_columns();
+  for (const auto& name : coefficients)
+    if (std::find(columns.begin(), columns.end(), name) == columns.end())
+      throw std::invalid_argument("coefficients: " + name +
+                                  " is not computed for the rough binary mixture (species = 2); valid: "
+                                  "temperature_ratio_i, rotational_temperature_ratio_i, cooling_rate");
+  const RoughBinaryMixture m = rough_binary_mixture(p);
   const RoughMixtureCoolingState state = rough_mixture_cooling_state(m);
   std::vector<CoefficientValue> out;
   for (const auto& name : coefficients) {
