@@ -77,6 +77,33 @@ void refuse_species_keys_for_one_gas(const ParameterPoint& point) {
       throw std::invalid_argument(spec.name + ": per-species keys need species = 2 (two [[species]] tables)");
 }
 
+RoughBinaryMixture rough_binary_mixture(const SchemaPoint& p) {
+  RoughBinaryMixture m;
+  m.dimension = p.number("dimension") == Rational(2) ? 2 : 3;
+  for (int i = 1; i <= 2; ++i) {
+    for (const char* field : {"mass", "diameter", "fraction"})
+      if (!p.given(index_name(field, i)))
+        throw std::invalid_argument("species[" + std::to_string(i) + "]." + field + ": required");
+    const std::string kappa = index_name("moment_of_inertia", i);
+    auto& s = m.species[static_cast<std::size_t>(i - 1)];
+    s.mass = p.number(index_name("mass", i));
+    s.kappa = p.given(kappa) ? p.number(kappa) : p.number("moment_of_inertia");
+    s.diameter = p.number(index_name("diameter", i)).to_double();
+    s.fraction = p.number(index_name("fraction", i)).to_double();
+  }
+  const Rational sum = p.number("fraction_1") + p.number("fraction_2");
+  if (sum != Rational(1))
+    throw std::invalid_argument("fraction: the mole fractions x_1 + x_2 must sum to 1, got " + sum.to_decimal_string());
+  for (int i = 1; i <= 2; ++i)
+    for (int j = i; j <= 2; ++j) {
+      const auto pair = static_cast<std::size_t>(i + j - 2);  // 0: 1–1, 1: 1–2, 2: 2–2
+      const std::string a = index_name("alpha", i, j), b = index_name("beta", i, j);
+      m.alpha[pair] = p.given(a) ? p.number(a) : p.number("alpha");
+      m.beta[pair] = p.given(b) ? p.number(b) : p.number("beta");
+    }
+  return m;
+}
+
 std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSpec>& schema,
                                                    const ParameterPoint& point,
                                                    const std::vector<std::string>& coefficients,
@@ -108,29 +135,7 @@ std::vector<CoefficientValue> rough_mixture_values(const std::vector<ParameterSp
       throw std::invalid_argument("coefficients: " + name +
                                   " needs the first-Sonine HCS of the rough binary mixture: use hcs = \"linear\"");
   }
-  RoughBinaryMixture m;
-  m.dimension = p.number("dimension") == Rational(2) ? 2 : 3;
-  for (int i = 1; i <= 2; ++i) {
-    for (const char* field : {"mass", "diameter", "fraction"})
-      if (!p.given(index_name(field, i)))
-        throw std::invalid_argument("species[" + std::to_string(i) + "]." + field + ": required");
-    const std::string kappa = index_name("moment_of_inertia", i);
-    auto& s = m.species[static_cast<std::size_t>(i - 1)];
-    s.mass = p.number(index_name("mass", i));
-    s.kappa = p.given(kappa) ? p.number(kappa) : p.number("moment_of_inertia");
-    s.diameter = p.number(index_name("diameter", i)).to_double();
-    s.fraction = p.number(index_name("fraction", i)).to_double();
-  }
-  const Rational sum = p.number("fraction_1") + p.number("fraction_2");
-  if (sum != Rational(1))
-    throw std::invalid_argument("fraction: the mole fractions x_1 + x_2 must sum to 1, got " + sum.to_decimal_string());
-  for (int i = 1; i <= 2; ++i)
-    for (int j = i; j <= 2; ++j) {
-      const auto pair = static_cast<std::size_t>(i + j - 2);  // 0: 1–1, 1: 1–2, 2: 2–2
-      const std::string a = index_name("alpha", i, j), b = index_name("beta", i, j);
-      m.alpha[pair] = p.given(a) ? p.number(a) : p.number("alpha");
-      m.beta[pair] = p.given(b) ? p.number(b) : p.number("beta");
-    }
+  const RoughBinaryMixture m = rough_binary_mixture(p);
   const RoughMixtureCoolingState maxwellian = rough_mixture_cooling_state(m);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // Columns in the order of rough_mixture_columns() then rough_mixture_cumulant_columns().

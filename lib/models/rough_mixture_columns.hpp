@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gkt/transport/rough/rough_mixture_cooling_state.hpp"
 #include "models/models.hpp"
 
 namespace gkt::detail {
@@ -26,6 +27,22 @@ std::vector<std::string> rough_mixture_cumulant_columns();
 
 /// Returns true if the point describes a binary mixture (species = 2).
 bool is_rough_mixture_point(const ParameterPoint& point);
+
+/// Returns the binary of `p` (species = 2; the rough model's schema): m_i, σ_i, x_i, κ_i (default: moment_of_inertia)
+/// and the pair α_ij, β_ij (default: alpha, beta). Throws std::invalid_argument naming the key for a missing
+/// mass_i, diameter_i, fraction_i and for fractions not summing to 1 (exactly, as rationals).
+RoughBinaryMixture rough_binary_mixture(const SchemaPoint& p);
+
+/// Returns the keys `gkt evolve` adds for the binary: translational_temperature_i, rotational_temperature_i
+/// (i = 1, 2; T(0)/T_ref, default the one-gas translational_temperature, rotational_temperature).
+std::vector<ParameterSpec> rough_mixture_evolution_parameters();
+
+/// Returns the Maxwellian free cooling of the binary of `request` (theory.md §19.31) validated against `schema` (the
+/// rough model's evolution parameters): columns time, temperature, translational_temperature_i,
+/// rotational_temperature_i, temperature_ratio_i, rotational_temperature_ratio_i, cooling_rate. Throws
+/// std::invalid_argument naming the key for an hcs other than "maxwellian", initial cumulants, order > 1, a one-gas
+/// key the binary does not take, and bad initial temperatures.
+Trajectory rough_mixture_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request);
 
 /// Returns the values of `coefficients` (rough_mixture_columns, rough_mixture_cumulant_columns) of the binary of
 /// `point`, validated against `schema` (the rough model's): the Maxwellian HCS (hcs not given or "maxwellian") or

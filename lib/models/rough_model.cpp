@@ -303,10 +303,19 @@ class RoughModel final : public TransportModel {
     for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
     specs.push_back(rough_evolution_order_parameter());
     specs.push_back(rough_evolution_max_steps_parameter());
+    // A binary (two [[species]] tables): its keys and initial temperatures (theory.md §19.31).
+    for (auto& spec : rough_mixture_parameters()) specs.push_back(std::move(spec));
+    for (auto& spec : rough_mixture_evolution_parameters()) specs.push_back(std::move(spec));
     return specs;
   }
-  /// T_t(τ), T_r(τ) and the cumulants (at Sonine order `order`) from T_t(0), T_r(0) (theory.md §19.13).
+  /// T_t(τ), T_r(τ) and the cumulants (at Sonine order `order`) from T_t(0), T_r(0) (theory.md §19.13); a binary
+  /// (species = 2): the four temperatures T_t,i(τ), T_r,i(τ), Maxwellian (theory.md §19.31).
   Trajectory evolve(const TrajectoryRequest& request) override {
+    if (is_rough_mixture_point(request.parameters)) return rough_mixture_trajectory(evolution_parameters(), request);
+    refuse_species_keys_for_one_gas(request.parameters);
+    for (const auto& spec : rough_mixture_evolution_parameters())
+      if (request.parameters.numbers.contains(spec.name))
+        throw std::invalid_argument(spec.name + ": per-species keys need species = 2 (two [[species]] tables)");
     return rough_trajectory(evolution_parameters(), request);
   }
   /// The product trial space's Sonine error leaves out the aligned-spin and chiral families (theory.md §19.21,
