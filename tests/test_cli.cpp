@@ -1295,6 +1295,29 @@ TEST(CliRoughEvolve, ColdSpinThirdOrderNonlinearStopsAtTheStepBudget) {
   EXPECT_EQ(zero.err.rfind("gkt: error: max_steps:", 0), 0U) << zero.err;
 }
 
+// The CVODE step budget over the whole trajectory of every other `gkt evolve` path (docs/conventions.md): a budget of
+// three steps stops each one before its first output time with one line naming max_steps and the time reached, exit
+// 2, nothing on standard output; a budget of 0 is refused as input.
+TEST(CliEvolve, EveryPathStopsAtTheStepBudget) {
+  for (const std::string& scene : std::vector<std::string>{
+           scene_path("cooling_constant_alpha.toml"), scene_path("cooling_viscoelastic.toml"),
+           scene_path("mixture_evolve.toml"), scene_path("aggregation_evolve.toml"),
+           scene_path("rough_walton_evolve.toml"), scene_path("rough_walton_evolve.toml") + " --set 'hcs=\"linear\"'",
+           scene_path("rough_evolve.toml"), scene_path("rough_evolve.toml") + " --set 'hcs=\"maxwellian\"'",
+           scene_path("rough_evolve.toml") + " --set 'hcs=\"linear-oriented\"'"}) {
+    const CliRun r = run_gkt("evolve " + scene + " --set max_steps=3");
+    EXPECT_EQ(r.status, 2) << scene;
+    EXPECT_TRUE(r.out.empty()) << scene << r.out;
+    EXPECT_EQ(r.err.rfind("gkt: error: max_steps: used its 3 CVODE steps before time = ", 0), 0U) << scene << r.err;
+    EXPECT_NE(r.err.find("(stopped at time = "), std::string::npos) << scene << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << scene << r.err;
+    const CliRun zero = run_gkt("evolve " + scene + " --set max_steps=0");
+    EXPECT_EQ(zero.status, 2) << scene;
+    EXPECT_TRUE(zero.out.empty()) << scene << zero.out;
+    EXPECT_EQ(zero.err.rfind("gkt: error: max_steps:", 0), 0U) << scene << zero.err;
+  }
+}
+
 // `gkt stability` about the Sonine HCS (reference_state = "hcs", theory.md (19.33)): values with error columns (the
 // Sonine and cumulant-degree steps), moved from the Maxwellian first approximation (disks, (0.9, 0.5)).
 TEST(CliRoughStability, AboutTheSonineHcs) {

@@ -132,9 +132,13 @@ Trajectory tabulate_trajectory(const std::string& model, int dimension, int k_ma
                                const std::vector<std::string>& coefficients,
                                const std::function<SampleTransport(const EvolutionSample&)>& transport);
 
-/// Returns the spec of an evolution's Sonine order, CVODE tolerances and initial a2 (positivity
-/// of f_M(1 + a2 S_2) in either dimension; evolution_a2_spec(d) is the exact range, theory.md §12).
+/// Returns the spec of an evolution's Sonine order, CVODE tolerances, initial a2 (positivity
+/// of f_M(1 + a2 S_2) in either dimension; evolution_a2_spec(d) is the exact range, theory.md §12) and
+/// max_steps (evolution_max_steps_parameter).
 std::vector<ParameterSpec> evolution_common_parameters();
+/// Returns the key `max_steps` of `gkt evolve`: the CVODE step budget over the whole trajectory, an integer in
+/// [1, 10⁹] (default kEvolutionMaxSteps).
+ParameterSpec evolution_max_steps_parameter();
 /// Returns the a2 spec of dimension d: [−8/(d(d+2)), 4/(d+2)] written as the shortest decimals of
 /// those doubles (a positive distribution at c = 0 and at the minimum of S_2).
 ParameterSpec evolution_a2_spec(int dimension);
