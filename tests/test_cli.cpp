@@ -768,7 +768,13 @@ TEST(CliRough, TrialSpaceKey) {
            {"'trial_space=\"full\"' --set order=1 --set 'coefficients=[\"critical_length\"]'",
             "trial_space: \"full\" needs a Sonine order"},
            {"'trial_space=\"aligned\"' --set order=1 --set 'coefficients=[\"critical_wavenumber_heat\"]'",
-            "trial_space: \"aligned\" needs a Sonine order"}}) {
+            "trial_space: \"aligned\" needs a Sonine order"},
+           // Keys that shape only the Navier-Stokes and stability columns: refused, not silently ignored, in a table
+           // of HCS columns alone.
+           {"'trial_space=\"full\"' --set 'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\"]'",
+            "trial_space: \"full\" applies to the Navier-Stokes columns"},
+           {"'reference_state=\"hcs\"' --set 'coefficients=[\"cooling_rate\", \"a20\"]'",
+            "reference_state: \"hcs\" applies to the Navier-Stokes columns"}}) {
     const CliRun bad = run_gkt(base + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
