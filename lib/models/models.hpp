@@ -51,7 +51,7 @@ std::vector<ParameterSpec> rough_initial_cumulant_parameters();
 /// Returns the key `order` of `gkt evolve` for the "rough" model: the Sonine order N of the linear scheme's
 /// trajectory, an integer in [1, 3] (default 1: the first-Sonine trajectory; theory.md §19.13, (19.25b)).
 ParameterSpec rough_evolution_order_parameter();
-/// Returns the key `max_steps` of `gkt evolve` for the "rough" model: the CVODE step budget of the Sonine schemes'
+/// Returns the key `max_steps` of `gkt evolve` for the "rough" model: the CVODE step budget of every scheme's
 /// trajectory, an integer in [1, 10⁹] (default kRoughSonineMaxSteps; theory.md §19.24).
 ParameterSpec rough_evolution_max_steps_parameter();
 /// Returns the Walton gas's Maxwellian cooling trajectory (keys dimension, alpha, beta0,

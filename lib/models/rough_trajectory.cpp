@@ -156,8 +156,8 @@ ParameterSpec rough_evolution_max_steps_parameter() {
           true,
           true,
           Rational(kRoughSonineMaxSteps),
-          "CVODE step budget over the whole trajectory of the Sonine schemes (order > 1 or hcs = \"nonlinear\", "
-          "\"nonlinear-oriented\"); past it exit 2 naming the stall (theory.md §19.24)",
+          "CVODE step budget over the whole trajectory, every hcs; past it exit 2, the Sonine schemes (order > 1 or "
+          "hcs = \"nonlinear\", \"nonlinear-oriented\") naming the stall (theory.md §19.24)",
           {}};
 }
 
