@@ -803,7 +803,13 @@ TEST(CliRough, TrialSpaceKey) {
            {"'trial_space=\"full\"' --set order=1 --set 'coefficients=[\"critical_length\"]'",
             "trial_space: \"full\" needs a Sonine order"},
            {"'trial_space=\"aligned\"' --set order=1 --set 'coefficients=[\"critical_wavenumber_heat\"]'",
-            "trial_space: \"aligned\" needs a Sonine order"}}) {
+            "trial_space: \"aligned\" needs a Sonine order"},
+           // Keys that shape only the Navier-Stokes and stability columns: refused, not silently ignored, in a table
+           // of HCS columns alone.
+           {"'trial_space=\"full\"' --set 'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\"]'",
+            "trial_space: \"full\" applies to the Navier-Stokes columns"},
+           {"'reference_state=\"hcs\"' --set 'coefficients=[\"cooling_rate\", \"a20\"]'",
+            "reference_state: \"hcs\" applies to the Navier-Stokes columns"}}) {
     const CliRun bad = run_gkt(base + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
@@ -1371,6 +1377,29 @@ TEST(CliRoughEvolve, ColdSpinThirdOrderNonlinearStopsAtTheStepBudget) {
   const CliRun zero = run_gkt(base + "0");
   EXPECT_EQ(zero.status, 2);
   EXPECT_EQ(zero.err.rfind("gkt: error: max_steps:", 0), 0U) << zero.err;
+}
+
+// The CVODE step budget over the whole trajectory of every other `gkt evolve` path (docs/conventions.md): a budget of
+// three steps stops each one before its first output time with one line naming max_steps and the time reached, exit
+// 2, nothing on standard output; a budget of 0 is refused as input.
+TEST(CliEvolve, EveryPathStopsAtTheStepBudget) {
+  for (const std::string& scene : std::vector<std::string>{
+           scene_path("cooling_constant_alpha.toml"), scene_path("cooling_viscoelastic.toml"),
+           scene_path("mixture_evolve.toml"), scene_path("aggregation_evolve.toml"),
+           scene_path("rough_walton_evolve.toml"), scene_path("rough_walton_evolve.toml") + " --set 'hcs=\"linear\"'",
+           scene_path("rough_evolve.toml"), scene_path("rough_evolve.toml") + " --set 'hcs=\"maxwellian\"'",
+           scene_path("rough_evolve.toml") + " --set 'hcs=\"linear-oriented\"'"}) {
+    const CliRun r = run_gkt("evolve " + scene + " --set max_steps=3");
+    EXPECT_EQ(r.status, 2) << scene;
+    EXPECT_TRUE(r.out.empty()) << scene << r.out;
+    EXPECT_EQ(r.err.rfind("gkt: error: max_steps: used its 3 CVODE steps before time = ", 0), 0U) << scene << r.err;
+    EXPECT_NE(r.err.find("(stopped at time = "), std::string::npos) << scene << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << scene << r.err;
+    const CliRun zero = run_gkt("evolve " + scene + " --set max_steps=0");
+    EXPECT_EQ(zero.status, 2) << scene;
+    EXPECT_TRUE(zero.out.empty()) << scene << zero.out;
+    EXPECT_EQ(zero.err.rfind("gkt: error: max_steps:", 0), 0U) << scene << zero.err;
+  }
 }
 
 // `gkt stability` about the Sonine HCS (reference_state = "hcs", theory.md (19.33)): values with error columns (the

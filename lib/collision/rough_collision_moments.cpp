@@ -59,12 +59,7 @@ std::vector<Ring> rough_taylor_coefficients(const RoughCollisionMap<Ring>& rows,
     factors.push_back({hermitian_determinant(mt, mb, box), Rational(-1)});
   }
   std::function<bool(const Box<N>&)> narrow_keep;
-  if (keep)
-    narrow_keep = [&keep](const Box<N>& e) {
-      RoughExponents all{};
-      for (std::size_t v = 0; v < N; ++v) all[v] = e[v];
-      return keep(all);
-    };
+  if (keep) narrow_keep = [&keep](const Box<N>& e) { return keep(rough_exponents(e)); };
   return detail::expand_power_product(std::move(factors), box, narrow_keep);
 }
 

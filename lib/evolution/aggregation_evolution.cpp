@@ -124,17 +124,18 @@ std::vector<double> geometric_pivots(double ratio, double largest) {
 }
 
 AggregationResult evolve_aggregation(const AggregationGas& gas, int sizes, const std::vector<double>& times,
-                                     double rtol, double atol, bool keep_distribution) {
+                                     double rtol, double atol, bool keep_distribution, long max_steps) {
   if (sizes < 2) throw std::invalid_argument("sizes: must be an integer >= 2, got " + std::to_string(sizes));
   std::vector<double> pivots(static_cast<std::size_t>(sizes));
   for (int k = 0; k < sizes; ++k) pivots[static_cast<std::size_t>(k)] = k + 1;
-  return evolve_aggregation(gas, pivots, times, rtol, atol, keep_distribution);
+  return evolve_aggregation(gas, pivots, times, rtol, atol, keep_distribution, max_steps);
 }
 
 AggregationResult evolve_aggregation(const AggregationGas& gas, const std::vector<double>& pivots,
-                                     const std::vector<double>& times, double rtol, double atol,
-                                     bool keep_distribution) {
+                                     const std::vector<double>& times, double rtol, double atol, bool keep_distribution,
+                                     long max_steps) {
   validate(gas);
+  detail::check_max_steps(max_steps);
   if (pivots.size() < 2 || pivots.front() != 1)
     throw std::invalid_argument("sizes: the grid needs at least two pivots, the first at 1");
   for (std::size_t k = 1; k < pivots.size(); ++k)
@@ -168,7 +169,6 @@ AggregationResult evolve_aggregation(const AggregationGas& gas, const std::vecto
   check(CVodeInit(cvode.get(), rates, 0.0, y.get()), "CVodeInit");
   check(CVodeSStolerances(cvode.get(), rtol, atol), "CVodeSStolerances");
   check(CVodeSetUserData(cvode.get(), &problem), "CVodeSetUserData");
-  check(CVodeSetMaxNumSteps(cvode.get(), 1000000), "CVodeSetMaxNumSteps");
   std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter> matrix;
   std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter> solver;
   AggregationResult result;
@@ -183,8 +183,8 @@ AggregationResult evolve_aggregation(const AggregationGas& gas, const std::vecto
   check(CVodeSetLinearSolver(cvode.get(), solver.get(), matrix.get()), "CVodeSetLinearSolver");
 
   for (double target : times) {
-    const double reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message,
-                                              "integrate to an earlier time or use a smaller atol");
+    const double reached = detail::advance_within_budget(
+        cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time or use a smaller atol", max_steps);
     AggregationSample s;
     s.time = reached;
     double number = 0, mass = 0;

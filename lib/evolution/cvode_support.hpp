@@ -8,6 +8,8 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -61,6 +63,36 @@ inline double advance_to(void* cvode, double target, N_Vector y, const std::stri
     throw EvolutionFailure("times: " + what + "; " + times_hint, flag, reached);
   }
   return reached;
+}
+
+/// Throws std::invalid_argument "max_steps: …" unless the trajectory's CVODE step budget `max_steps` is ≥ 1.
+inline void check_max_steps(long max_steps) {
+  if (max_steps < 1) throw std::invalid_argument("max_steps: must be >= 1, got " + std::to_string(max_steps));
+}
+
+/// Returns the τ CVODE reached on its way to `target` as advance_to, with at most what is left of a budget of
+/// `max_steps` CVODE steps over the whole trajectory (the steps taken so far count against it); when the budget runs
+/// out first, throws EvolutionFailure "max_steps: …" (flag CV_TOO_MUCH_WORK) naming the budget, `target` and the τ
+/// reached (docs/conventions.md, gkt evolve).
+inline double advance_within_budget(void* cvode, double target, N_Vector y, const std::string& message,
+                                    const std::string& times_hint, long max_steps) {
+  long used = 0;
+  CVodeGetNumSteps(cvode, &used);
+  check(CVodeSetMaxNumSteps(cvode, std::max(1L, max_steps - used)), "CVodeSetMaxNumSteps");
+  try {
+    return advance_to(cvode, target, y, message, times_hint);
+  } catch (const EvolutionFailure& e) {
+    if (e.flag() != CV_TOO_MUCH_WORK) throw;
+    auto g = [](double v) {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.6g", v);
+      return std::string(buffer);
+    };
+    throw EvolutionFailure("max_steps: used its " + std::to_string(max_steps) +
+                               " CVODE steps before time = " + g(target) + " (stopped at time = " + g(e.time()) +
+                               "); raise max_steps or integrate to an earlier time",
+                           e.flag(), e.time());
+  }
 }
 
 /// Returns CVODE's work counters for `cvode` (steps, right-hand sides, Jacobians, error-test

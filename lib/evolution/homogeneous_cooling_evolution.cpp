@@ -98,8 +98,10 @@ int jacobian(sunrealtype, N_Vector y, N_Vector, SUNMatrix jm, void* data, N_Vect
 }
 
 EvolutionResult integrate(Problem& problem, int dimension, double temperature0, const std::vector<double>& initial_a,
-                          const std::vector<double>& times, double rtol, double atol, bool analytic_jacobian) {
+                          const std::vector<double>& times, double rtol, double atol, bool analytic_jacobian,
+                          long max_steps) {
   if (!(temperature0 > 0)) throw std::invalid_argument("temperature: must be > 0");
+  detail::check_max_steps(max_steps);
   if (!(rtol > 0) || !(atol > 0)) throw std::invalid_argument("rtol, atol: must be > 0");
   for (std::size_t i = 0; i < times.size(); ++i)
     if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
@@ -123,7 +125,6 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
   check(CVodeInit(cvode.get(), rates, 0.0, y.get()), "CVodeInit");
   check(CVodeSStolerances(cvode.get(), rtol, atol), "CVodeSStolerances");
   check(CVodeSetUserData(cvode.get(), &problem), "CVodeSetUserData");
-  check(CVodeSetMaxNumSteps(cvode.get(), 1000000), "CVodeSetMaxNumSteps");
   const std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter> matrix(SUNDenseMatrix(n, n, raw_context));
   const std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter> solver(
       SUNLinSol_Dense(y.get(), matrix.get(), raw_context));
@@ -132,8 +133,8 @@ EvolutionResult integrate(Problem& problem, int dimension, double temperature0, 
 
   EvolutionResult result;
   for (double target : times) {
-    const double reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message,
-                                              "integrate to an earlier time or use a smaller atol");
+    const double reached = detail::advance_within_budget(
+        cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time or use a smaller atol", max_steps);
     EvolutionSample s;
     s.time = reached;
     s.temperature = yv[0];
@@ -154,7 +155,7 @@ bool EvolutionFailure::tolerances() const { return flag_ == CV_TOO_MUCH_ACC; }
 
 EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
                                            const std::vector<double>& initial_a, const std::vector<double>& times,
-                                           double rtol, double atol, double chi) {
+                                           double rtol, double atol, double chi, long max_steps) {
   if (!(chi >= 1) || !std::isfinite(chi))
     throw std::invalid_argument("packing_fraction: the contact value chi must be finite and >= 1, got " +
                                 std::to_string(chi));
@@ -163,19 +164,19 @@ EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, d
   problem.h = &hierarchy;
   problem.k_max = hierarchy.k_max();
   problem.zeta_factor = 2.0 / hierarchy.dimension();
-  return integrate(problem, hierarchy.dimension(), temperature0, initial_a, times, rtol, atol, true);
+  return integrate(problem, hierarchy.dimension(), temperature0, initial_a, times, rtol, atol, true, max_steps);
 }
 
 EvolutionResult evolve_viscoelastic_cooling(const ViscoelasticHierarchy& hierarchy, double delta,
                                             const std::vector<double>& initial_a, const std::vector<double>& times,
-                                            double rtol, double atol) {
+                                            double rtol, double atol, long max_steps) {
   if (!(delta >= 0)) throw std::invalid_argument("delta: must be >= 0");
   Problem problem;
   problem.viscoelastic = &hierarchy;
   problem.delta = delta;
   problem.k_max = hierarchy.k_max();
   problem.zeta_factor = 2.0 / 3;
-  return integrate(problem, 3, 1.0, initial_a, times, rtol, atol, false);
+  return integrate(problem, 3, 1.0, initial_a, times, rtol, atol, false, max_steps);
 }
 
 }  // namespace gkt

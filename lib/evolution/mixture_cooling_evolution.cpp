@@ -91,8 +91,10 @@ void keep_message(int error_code, const char*, const char*, char* message, void*
 MixtureEvolutionResult evolve_mixture_cooling(const Mixture& mixture, MixtureHcsScheme scheme, int hcs_order,
                                               std::span<const double> initial_temperature_ratio,
                                               const std::vector<std::vector<double>>& initial_cumulants,
-                                              const std::vector<double>& times, double rtol, double atol) {
+                                              const std::vector<double>& times, double rtol, double atol,
+                                              long max_steps) {
   mixture.validate();
+  detail::check_max_steps(max_steps);
   const std::size_t s = mixture.size();
   const bool maxwellian = scheme == MixtureHcsScheme::maxwellian;
   if (hcs_order < 2 || hcs_order > 6)
@@ -163,7 +165,6 @@ MixtureEvolutionResult evolve_mixture_cooling(const Mixture& mixture, MixtureHcs
   check(CVodeInit(cvode.get(), rates, 0.0, y.get()), "CVodeInit");
   check(CVodeSStolerances(cvode.get(), rtol, atol), "CVodeSStolerances");
   check(CVodeSetUserData(cvode.get(), &problem), "CVodeSetUserData");
-  check(CVodeSetMaxNumSteps(cvode.get(), 1000000), "CVodeSetMaxNumSteps");
   const std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter> matrix(SUNDenseMatrix(n, n, raw_context));
   const std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter> solver(
       SUNLinSol_Dense(y.get(), matrix.get(), raw_context));
@@ -171,8 +172,8 @@ MixtureEvolutionResult evolve_mixture_cooling(const Mixture& mixture, MixtureHcs
 
   MixtureEvolutionResult result;
   for (double target : times) {
-    const double reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message,
-                                              "integrate to an earlier time or use a smaller atol");
+    const double reached = detail::advance_within_budget(
+        cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time or use a smaller atol", max_steps);
     if (!problem.unpack(yv)) throw EvolutionFailure("times: the temperature left the range of a double", -1, reached);
     MixtureEvolutionSample sample;
     sample.time = reached;

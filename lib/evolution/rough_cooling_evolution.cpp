@@ -153,7 +153,7 @@ EvolutionFailure step_budget_failure(const Problem& problem, long budget, double
 }
 
 RoughEvolutionResult integrate(Problem& problem, int dimension, double translational0, double rotational0,
-                               const std::vector<double>& times, double rtol, double atol, long max_steps = 0) {
+                               const std::vector<double>& times, double rtol, double atol, long max_steps) {
   if (!(translational0 > 0) || !std::isfinite(translational0))
     throw std::invalid_argument("translational_temperature: must be a finite number > 0");
   if (!(rotational0 > 0) || !std::isfinite(rotational0))
@@ -162,6 +162,7 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   for (std::size_t i = 0; i < times.size(); ++i)
     if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
       throw std::invalid_argument("times: must be positive and increasing");
+  detail::check_max_steps(max_steps);
   const int n = problem.size();
 
   SUNContext raw_context = nullptr;
@@ -186,7 +187,6 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   check(CVodeInit(cvode.get(), right_hand_side, 0.0, y.get()), "CVodeInit");
   check(CVodeSStolerances(cvode.get(), rtol, atol), "CVodeSStolerances");
   check(CVodeSetUserData(cvode.get(), &problem), "CVodeSetUserData");
-  check(CVodeSetMaxNumSteps(cvode.get(), 1000000), "CVodeSetMaxNumSteps");
   const std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter> matrix(SUNDenseMatrix(n, n, raw_context));
   const std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter> solver(
       SUNLinSol_Dense(y.get(), matrix.get(), raw_context));
@@ -196,19 +196,13 @@ RoughEvolutionResult integrate(Problem& problem, int dimension, double translati
   RoughEvolutionResult result;
   for (double target : times) {
     double reached = 0;
-    if (max_steps > 0) {
-      // A budget over the whole trajectory (theory.md §19.24): what is left of it bounds this call.
-      long used = 0;
-      CVodeGetNumSteps(cvode.get(), &used);
-      check(CVodeSetMaxNumSteps(cvode.get(), std::max(1L, max_steps - used)), "CVodeSetMaxNumSteps");
-      try {
-        reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time");
-      } catch (const EvolutionFailure& e) {
-        if (e.flag() != CV_TOO_MUCH_WORK || problem.sonine == nullptr) throw;
-        throw step_budget_failure(problem, max_steps, target, e.time(), yv, e.flag());
-      }
-    } else {
-      reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time");
+    // A budget over the whole trajectory (theory.md §19.24): what is left of it bounds this call.
+    try {
+      reached = detail::advance_within_budget(cvode.get(), target, y.get(), cvode_message,
+                                              "integrate to an earlier time", max_steps);
+    } catch (const EvolutionFailure& e) {
+      if (e.flag() != CV_TOO_MUCH_WORK || problem.sonine == nullptr) throw;
+      throw step_budget_failure(problem, max_steps, target, e.time(), yv, e.flag());
     }
     RoughEvolutionSample s;
     s.time = reached;
@@ -288,7 +282,7 @@ void check_rough_initial_cumulants(int dimension, const RoughCumulants& a) {
 
 RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
                                           double rotational0, const std::vector<double>& times, double rtol,
-                                          double atol, const RoughCumulants& initial_cumulants) {
+                                          double atol, const RoughCumulants& initial_cumulants, long max_steps) {
   check_rough_initial_cumulants(rates.dimension(), initial_cumulants);
   if (!linear && initial_cumulants != RoughCumulants{})
     throw std::invalid_argument(
@@ -298,13 +292,14 @@ RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool l
   problem.linear = linear;
   problem.initial = initial_cumulants;
   problem.base = rates.maxwellian_fourth_moments();
-  return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol);
+  return integrate(problem, rates.dimension(), translational0, rotational0, times, rtol, atol, max_steps);
 }
 
 RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rates,
                                                    const RoughOrientedCoolingRates& oriented, double translational0,
                                                    double rotational0, const std::vector<double>& times, double rtol,
-                                                   double atol, const RoughCumulants& initial_cumulants) {
+                                                   double atol, const RoughCumulants& initial_cumulants,
+                                                   long max_steps) {
   if (rates.dimension() != 3)
     throw std::invalid_argument("dimension: the orientation term needs spheres (dimension = 3)");
   if (rates.kappa() != oriented.kappa())
@@ -316,14 +311,14 @@ RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rate
   problem.linear = true;
   problem.initial = initial_cumulants;
   problem.base = rates.maxwellian_fourth_moments();
-  return integrate(problem, 3, translational0, rotational0, times, rtol, atol);
+  return integrate(problem, 3, translational0, rotational0, times, rtol, atol, max_steps);
 }
 
 RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& rates, double translational0,
                                                  double rotational0, const std::vector<double>& times, double rtol,
                                                  double atol, const RoughCumulants& initial_cumulants, long max_steps) {
   check_rough_initial_cumulants(rates.dimension(), initial_cumulants);
-  if (max_steps < 1) throw std::invalid_argument("max_steps: must be >= 1, got " + std::to_string(max_steps));
+  detail::check_max_steps(max_steps);
   if (rates.spin_decoupled() && (initial_cumulants[1] != 0 || initial_cumulants[2] != 0))
     throw std::invalid_argument("a02, a11: at beta = -1 the spin decouples and carries no cumulant: leave them 0");
   Problem problem;
@@ -348,7 +343,7 @@ RoughEvolutionResult evolve_rough_sonine_cooling(const RoughSonineCoolingRates& 
 RoughEvolutionResult evolve_rough_linear_cooling(int dimension, const RoughLinearProductions& productions,
                                                  double translational0, double rotational0,
                                                  const std::vector<double>& times, double rtol, double atol,
-                                                 const RoughCumulants& initial_cumulants) {
+                                                 const RoughCumulants& initial_cumulants, long max_steps) {
   check_rough_initial_cumulants(dimension, initial_cumulants);
   Problem problem;
   problem.productions = &productions;
@@ -357,16 +352,17 @@ RoughEvolutionResult evolve_rough_linear_cooling(int dimension, const RoughLinea
   problem.initial = initial_cumulants;
   const double dt = dimension, dr = dimension == 3 ? 3 : 1;
   problem.base = {dt / 2 * (dt / 2 + 1), dr / 2 * (dr / 2 + 1), dt / 2 * dr / 2};
-  return integrate(problem, dimension, translational0, rotational0, times, rtol, atol);
+  return integrate(problem, dimension, translational0, rotational0, times, rtol, atol, max_steps);
 }
 
 RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,
                                                      double translational0, double rotational0,
-                                                     const std::vector<double>& times, double rtol, double atol) {
+                                                     const std::vector<double>& times, double rtol, double atol,
+                                                     long max_steps) {
   if (dimension != 2 && dimension != 3) throw std::invalid_argument("dimension: must be 2 or 3");
   Problem problem;
   problem.maxwellian = &rates;
-  return integrate(problem, dimension, translational0, rotational0, times, rtol, atol);
+  return integrate(problem, dimension, translational0, rotational0, times, rtol, atol, max_steps);
 }
 
 }  // namespace gkt

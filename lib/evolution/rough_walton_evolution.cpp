@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "evolution/cvode_support.hpp"
+
 namespace gkt {
 
 RoughWaltonInterpolant::RoughWaltonInterpolant(int dimension, double alpha, double beta0, double kappa, double friction,
@@ -84,8 +86,9 @@ double RoughWaltonInterpolant::check(int samples) const {
 RoughEvolutionResult evolve_rough_walton_cooling(int dimension, double alpha, double beta0, double kappa,
                                                  double friction, double translational0, double rotational0,
                                                  const std::vector<double>& times, double rtol, double atol,
-                                                 const RoughCumulants& initial_cumulants) {
+                                                 const RoughCumulants& initial_cumulants, long max_steps) {
   check_rough_initial_cumulants(dimension, initial_cumulants);
+  detail::check_max_steps(max_steps);
   if (!(translational0 > 0) || !std::isfinite(translational0))
     throw std::invalid_argument("translational_temperature: must be a finite number > 0");
   if (!(rotational0 > 0) || !std::isfinite(rotational0))
@@ -109,7 +112,7 @@ RoughEvolutionResult evolve_rough_walton_cooling(int dimension, double alpha, do
   productions.collision_a20 = table.collision_a20();
   productions.kappa = kappa;
   return evolve_rough_linear_cooling(dimension, productions, translational0, rotational0, times, rtol, atol,
-                                     initial_cumulants);
+                                     initial_cumulants, max_steps);
 }
 
 }  // namespace gkt

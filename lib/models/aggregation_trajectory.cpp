@@ -63,7 +63,8 @@ std::vector<ParameterSpec> aggregation_evolution_parameters() {
           number("rtol", Rational(0), false, Rational(1, 10), Rational::parse("1e-8"), "CVODE relative tolerance"),
           number("atol", Rational(0), false, Rational(1), Rational::parse("1e-14"), "CVODE absolute tolerance"),
           choice("distribution", {"false", "true"},
-                 "true: the size distribution n_k(t) in long format (columns size, size_density)")};
+                 "true: the size distribution n_k(t) in long format (columns size, size_density)"),
+          evolution_max_steps_parameter()};
 }
 
 Trajectory aggregation_trajectory(const TrajectoryRequest& request) {
@@ -110,9 +111,9 @@ Trajectory aggregation_trajectory(const TrajectoryRequest& request) {
   if (distribution && rows > kMaxDistributionRows)
     throw std::invalid_argument("distribution: points x sizes = " + std::to_string(rows) + " rows; at most 1000000");
 
-  const AggregationResult result =
-      evolve_aggregation(gas, pivots, log_spaced_times(p.number("t_end").to_double(), points),
-                         p.number("rtol").to_double(), p.number("atol").to_double(), distribution);
+  const AggregationResult result = evolve_aggregation(
+      gas, pivots, log_spaced_times(p.number("t_end").to_double(), points), p.number("rtol").to_double(),
+      p.number("atol").to_double(), distribution, static_cast<long>(p.number("max_steps").to_double()));
   Trajectory out;
   out.columns = {"time", "temperature", "number_density", "mass", "mean_size", "success_factor"};
   if (distribution) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 
+#include "gkt/evolution/homogeneous_cooling_evolution.hpp"
 #include "models/models.hpp"
 
 namespace gkt {
@@ -88,6 +89,18 @@ ParameterSpec evolution_a2_spec(int dimension) {
           {}};
 }
 
+ParameterSpec evolution_max_steps_parameter() {
+  return {"max_steps",
+          ParameterSpec::Kind::integer,
+          Rational(1),
+          Rational(1000000000),
+          true,
+          true,
+          Rational(kEvolutionMaxSteps),
+          "CVODE step budget over the whole trajectory; past it exit 2 naming the time reached",
+          {}};
+}
+
 std::vector<ParameterSpec> evolution_common_parameters() {
   auto real = [](const char* name, const Rational& min, bool min_inclusive, const Rational& max,
                  const Rational& fallback, const char* description) {
@@ -106,7 +119,8 @@ std::vector<ParameterSpec> evolution_common_parameters() {
            {}},
           real("rtol", Rational(0), false, Rational(1, 10), Rational::parse("1e-8"), "CVODE relative tolerance"),
           real("atol", Rational(0), false, Rational(1), Rational::parse("1e-12"), "CVODE absolute tolerance"),
-          a2};
+          a2,
+          evolution_max_steps_parameter()};
 }
 
 std::vector<std::string> trajectory_coefficient_names() {

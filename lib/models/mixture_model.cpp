@@ -156,7 +156,7 @@ class MixtureModel final : public TransportModel {
       specs.push_back(a);
     }
     for (auto& spec : detail::evolution_common_parameters())
-      if (spec.name == "rtol" || spec.name == "atol") specs.push_back(std::move(spec));
+      if (spec.name == "rtol" || spec.name == "atol" || spec.name == "max_steps") specs.push_back(std::move(spec));
     return specs;
   }
 
@@ -190,7 +190,7 @@ class MixtureModel final : public TransportModel {
         if (p.given(key)) throw std::invalid_argument(key + ": the scene has " + std::to_string(s) + " species");
     const MixtureEvolutionResult result =
         evolve_mixture_cooling(mixture, scheme, k_max, ratio, cumulants, request.times, p.number("rtol").to_double(),
-                               p.number("atol").to_double());
+                               p.number("atol").to_double(), static_cast<long>(p.number("max_steps").to_double()));
     Trajectory t;
     t.columns = {"time", "temperature"};
     for (int i = 1; i <= s; ++i) t.columns.push_back(index_name("temperature_ratio", i));

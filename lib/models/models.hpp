@@ -51,7 +51,7 @@ std::vector<ParameterSpec> rough_initial_cumulant_parameters();
 /// Returns the key `order` of `gkt evolve` for the "rough" model: the Sonine order N of the linear scheme's
 /// trajectory, an integer in [1, 3] (default 1: the first-Sonine trajectory; theory.md §19.13, (19.25b)).
 ParameterSpec rough_evolution_order_parameter();
-/// Returns the key `max_steps` of `gkt evolve` for the "rough" model: the CVODE step budget of the Sonine schemes'
+/// Returns the key `max_steps` of `gkt evolve` for the "rough" model: the CVODE step budget of every scheme's
 /// trajectory, an integer in [1, 10⁹] (default kRoughSonineMaxSteps; theory.md §19.24).
 ParameterSpec rough_evolution_max_steps_parameter();
 /// Returns the Walton gas's Maxwellian cooling trajectory (keys dimension, alpha, beta0,
@@ -132,9 +132,13 @@ Trajectory tabulate_trajectory(const std::string& model, int dimension, int k_ma
                                const std::vector<std::string>& coefficients,
                                const std::function<SampleTransport(const EvolutionSample&)>& transport);
 
-/// Returns the spec of an evolution's Sonine order, CVODE tolerances and initial a2 (positivity
-/// of f_M(1 + a2 S_2) in either dimension; evolution_a2_spec(d) is the exact range, theory.md §12).
+/// Returns the spec of an evolution's Sonine order, CVODE tolerances, initial a2 (positivity
+/// of f_M(1 + a2 S_2) in either dimension; evolution_a2_spec(d) is the exact range, theory.md §12) and
+/// max_steps (evolution_max_steps_parameter).
 std::vector<ParameterSpec> evolution_common_parameters();
+/// Returns the key `max_steps` of `gkt evolve`: the CVODE step budget over the whole trajectory, an integer in
+/// [1, 10⁹] (default kEvolutionMaxSteps).
+ParameterSpec evolution_max_steps_parameter();
 /// Returns the a2 spec of dimension d: [−8/(d(d+2)), 4/(d+2)] written as the shortest decimals of
 /// those doubles (a positive distribution at c = 0 and at the minimum of S_2).
 ParameterSpec evolution_a2_spec(int dimension);

@@ -386,6 +386,17 @@ class RoughModel final : public TransportModel {
     trial_space_ = space == "aligned" ? RoughTrialSpace::aligned
                    : space == "full"  ? RoughTrialSpace::full
                                       : RoughTrialSpace::product;
+    // trial_space and reference_state = "hcs" shape only the Navier–Stokes and stability columns: a table without
+    // them would ignore the key silently, so it is refused (docs/conventions.md).
+    const bool shaped = std::any_of(coefficients.begin(), coefficients.end(), [&is_critical](const std::string& c) {
+      return is_rough_sonine_column(c) || is_critical(c);
+    });
+    if (!shaped && (space != "products" || cumulant_reference))
+      throw std::invalid_argument(
+          std::string(space != "products" ? "trial_space: \"" + space + "\"" : "reference_state: \"hcs\"") +
+          " applies to the Navier-Stokes columns (shear_viscosity, bulk_viscosity, thermal_conductivity, "
+          "density_heat_coefficient, cooling_rate_first_order) and the stability columns; this table asks for "
+          "neither: drop the key or ask for one of them");
     if (trial_space_ != RoughTrialSpace::product) {
       if (trial_space_ == RoughTrialSpace::aligned && d != 3)
         throw std::invalid_argument(

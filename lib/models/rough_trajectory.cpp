@@ -156,8 +156,8 @@ ParameterSpec rough_evolution_max_steps_parameter() {
           true,
           true,
           Rational(kRoughSonineMaxSteps),
-          "CVODE step budget over the whole trajectory of the Sonine schemes (order > 1 or hcs = \"nonlinear\", "
-          "\"nonlinear-oriented\"); past it exit 2 naming the stall (theory.md §19.24)",
+          "CVODE step budget over the whole trajectory, every hcs; past it exit 2, the Sonine schemes (order > 1 or "
+          "hcs = \"nonlinear\", \"nonlinear-oriented\") naming the stall (theory.md §19.24)",
           {}};
 }
 
@@ -184,10 +184,10 @@ Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const Traj
           ", beta = " + beta.to_string() + " (theory.md §19.14); use hcs = \"maxwellian\"");
     const RoughCoolingRates rates(d, alpha, beta, kappa);
     const RoughOrientedCoolingRates oriented(alpha, beta, kappa);
-    const RoughEvolutionResult result =
-        evolve_rough_oriented_cooling(rates, oriented, p.number("translational_temperature").to_double(),
-                                      p.number("rotational_temperature").to_double(), request.times,
-                                      p.number("rtol").to_double(), p.number("atol").to_double(), initial);
+    const RoughEvolutionResult result = evolve_rough_oriented_cooling(
+        rates, oriented, p.number("translational_temperature").to_double(),
+        p.number("rotational_temperature").to_double(), request.times, p.number("rtol").to_double(),
+        p.number("atol").to_double(), initial, static_cast<long>(p.number("max_steps").to_double()));
     return tabulate_rough_trajectory(result, true, true);
   }
   // "linear-or-maxwellian": the linear scheme where it has a root, else the Maxwellian one.
@@ -203,9 +203,10 @@ Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const Traj
         std::string(scheme == "linear-or-maxwellian" ? ", which has no root at this state" : "") + "); got hcs = \"" +
         scheme + "\"");
   const RoughCoolingRates rates(d, alpha, beta, kappa);
-  const RoughEvolutionResult result = evolve_rough_cooling(
-      rates, linear, p.number("translational_temperature").to_double(), p.number("rotational_temperature").to_double(),
-      request.times, p.number("rtol").to_double(), p.number("atol").to_double(), initial);
+  const RoughEvolutionResult result =
+      evolve_rough_cooling(rates, linear, p.number("translational_temperature").to_double(),
+                           p.number("rotational_temperature").to_double(), request.times, p.number("rtol").to_double(),
+                           p.number("atol").to_double(), initial, static_cast<long>(p.number("max_steps").to_double()));
   return tabulate_rough_trajectory(result, linear);
 }
 
@@ -231,9 +232,9 @@ Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, con
         std::string(scheme == "linear-or-maxwellian" ? ", which has no root at this state" : "") + "); got hcs = \"" +
         scheme + "\"");
   if (linear) {
-    const RoughEvolutionResult result =
-        evolve_rough_walton_cooling(d, alpha, beta0, kappa, friction, t0, r0, request.times,
-                                    p.number("rtol").to_double(), p.number("atol").to_double(), initial);
+    const RoughEvolutionResult result = evolve_rough_walton_cooling(
+        d, alpha, beta0, kappa, friction, t0, r0, request.times, p.number("rtol").to_double(),
+        p.number("atol").to_double(), initial, static_cast<long>(p.number("max_steps").to_double()));
     return tabulate_rough_trajectory(result, true);
   }
   // Maxwellian rates by quadrature (theory.md (19.21)), ζ/ν0 → z = ζ/(nσ^{d−1}v_t ν) = (4/(d+2)) ζ/ν0.
@@ -242,7 +243,8 @@ Trajectory rough_walton_trajectory(const std::vector<ParameterSpec>& schema, con
     return std::array<double, 2>{4.0 / (d + 2) * r.translational, 4.0 / (d + 2) * r.rotational};
   };
   const RoughEvolutionResult result = evolve_rough_maxwellian_cooling(
-      d, rates, t0, r0, request.times, p.number("rtol").to_double(), p.number("atol").to_double());
+      d, rates, t0, r0, request.times, p.number("rtol").to_double(), p.number("atol").to_double(),
+      static_cast<long>(p.number("max_steps").to_double()));
   return tabulate_rough_trajectory(result, false);
 }
 

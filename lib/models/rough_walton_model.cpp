@@ -166,6 +166,7 @@ class RoughWaltonModel final : public TransportModel {
       }
     specs = rough_evolution_parameters(specs, {"dimension", "alpha", "beta0", "moment_of_inertia", "friction", "hcs"});
     for (auto& spec : rough_initial_cumulant_parameters()) specs.push_back(std::move(spec));
+    specs.push_back(evolution_max_steps_parameter());
     return specs;
   }
   /// T_t(τ), T_r(τ) from Maxwellians, the Walton rates by quadrature at every step (theory.md §19.13), or with

@@ -336,7 +336,8 @@ class SmoothInelasticModel final : public TransportModel {
     HomogeneousCoolingState hcs(d);
     const EvolutionResult result = evolve_homogeneous_cooling(
         hcs.hierarchy(alpha, k_max), p.number("temperature").to_double(), {p.number("a2").to_double()}, request.times,
-        p.number("rtol").to_double(), p.number("atol").to_double(), dense.chi);
+        p.number("rtol").to_double(), p.number("atol").to_double(), dense.chi,
+        static_cast<long>(p.number("max_steps").to_double()));
     std::optional<NavierStokesSolver> solver;
     if (!request.coefficients.empty()) solver.emplace(d);
     return tabulate_trajectory(name(), d, k_max, result, request.coefficients, [&](const EvolutionSample& s) {

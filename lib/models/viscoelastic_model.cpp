@@ -215,9 +215,9 @@ class ViscoelasticModel final : public TransportModel {
                                   std::to_string(kMaxTransportOrder) + "], got " + std::to_string(order));
     const int k_max = order + 1;  // cumulants a_2 … a_{order+1}
     const double delta = p.number("delta").to_double();
-    const EvolutionResult result =
-        evolve_viscoelastic_cooling(ViscoelasticHierarchy(k_max), delta, {p.number("a2").to_double()}, request.times,
-                                    p.number("rtol").to_double(), p.number("atol").to_double());
+    const EvolutionResult result = evolve_viscoelastic_cooling(
+        ViscoelasticHierarchy(k_max), delta, {p.number("a2").to_double()}, request.times, p.number("rtol").to_double(),
+        p.number("atol").to_double(), static_cast<long>(p.number("max_steps").to_double()));
     std::optional<ViscoelasticTransportSeries> series;
     if (!request.coefficients.empty()) series = viscoelastic_transport_series(order);
     return tabulate_trajectory(name(), 3, k_max, result, request.coefficients, [&](const EvolutionSample& s) {

@@ -43,6 +43,14 @@ inline constexpr std::size_t kMaxRoughForms = 9;
 /// Exponents k_v of the forms in a moment; forms past the ones given have exponent 0.
 using RoughExponents = std::array<int, kMaxRoughForms>;
 
+/// Returns the exponents k of the first K forms padded with zeros to all kMaxRoughForms forms.
+template <std::size_t K>
+requires(K <= kMaxRoughForms) [[nodiscard]] constexpr RoughExponents rough_exponents(const std::array<int, K>& k) {
+  RoughExponents all{};
+  for (std::size_t v = 0; v < K; ++v) all[v] = k[v];
+  return all;
+}
+
 /// Moments ⟨Π_v F_v^{k_v}⟩/⟨1⟩ for up to nine rough forms F_v, 0 ≤ k_v ≤ degree_v (exact in Ring).
 template <class Ring>
 class RoughCollisionMoments {
@@ -68,9 +76,7 @@ class RoughCollisionMoments {
   /// Returns moment(k) for a shorter exponent array (the forms past K at exponent 0).
   template <std::size_t K>
   requires(K < kMaxRoughForms) [[nodiscard]] Ring moment(const std::array<int, K>& k) const {
-    RoughExponents all{};
-    for (std::size_t v = 0; v < K; ++v) all[v] = k[v];
-    return moment(all);
+    return moment(rough_exponents(k));
   }
 
  private:

@@ -46,9 +46,7 @@ class RoughTripleProductMoments {
   /// Returns moment(k) for a shorter exponent array (the forms past K at exponent 0).
   template <std::size_t K>
   requires(K < kMaxRoughForms) [[nodiscard]] Ring moment(const std::array<int, K>& k) const {
-    RoughExponents all{};
-    for (std::size_t v = 0; v < K; ++v) all[v] = k[v];
-    return moment(all);
+    return moment(rough_exponents(k));
   }
 
  private:

@@ -34,10 +34,12 @@ struct AggregationResult {
 
 /// Returns n_k(t) and θ(t) from monomers at θ0 = 1 at the given increasing times > 0, sizes K ≥ 2;
 /// mergers into sizes > K do not happen (those pairs rebound), so Σ k n_k is conserved exactly.
-/// Throws std::invalid_argument for bad input (one line naming the field) and EvolutionFailure when
-/// CVODE cannot reach a time.
+/// CVODE gets at most `max_steps` (≥ 1) steps over the whole trajectory. Throws std::invalid_argument for bad input
+/// (one line naming the field) and EvolutionFailure when CVODE cannot reach a time ("max_steps: …" when the budget
+/// runs out).
 AggregationResult evolve_aggregation(const AggregationGas& gas, int sizes, const std::vector<double>& times,
-                                     double rtol, double atol, bool keep_distribution);
+                                     double rtol, double atol, bool keep_distribution,
+                                     long max_steps = kEvolutionMaxSteps);
 
 /// Returns the pivots of a geometric sectional grid: x_1 = 1, x_{k+1} = max(x_k + 1, r x_k), up to
 /// the first pivot ≥ largest (ratio r ∈ (1, 2], largest ≥ 2); sizes below 1/(r − 1) stay integers.
@@ -48,7 +50,7 @@ std::vector<double> geometric_pivots(double ratio, double largest);
 /// x_i + x_j between two pivots is shared between them so that number and mass are both conserved,
 /// one beyond the last pivot rebounds. distribution holds n_k per pivot.
 AggregationResult evolve_aggregation(const AggregationGas& gas, const std::vector<double>& pivots,
-                                     const std::vector<double>& times, double rtol, double atol,
-                                     bool keep_distribution);
+                                     const std::vector<double>& times, double rtol, double atol, bool keep_distribution,
+                                     long max_steps = kEvolutionMaxSteps);
 
 }  // namespace gkt

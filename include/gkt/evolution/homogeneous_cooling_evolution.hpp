@@ -54,6 +54,11 @@ class EvolutionFailure : public std::invalid_argument {
   double time_;
 };
 
+/// Default CVODE step budget over a whole `gkt evolve` trajectory of the smooth, viscoelastic, mixture, aggregation
+/// and rough low-order schemes: 47× the 2126 steps the most demanding shipped scene, golden or CLI test takes
+/// (cooling_viscoelastic.toml to τ = 10⁴; docs/conventions.md); before, 10⁶ steps per output time.
+inline constexpr long kEvolutionMaxSteps = 100000;
+
 /// The samples at the requested times and the counters.
 struct EvolutionResult {
   /// One sample per requested time, in order.
@@ -64,20 +69,22 @@ struct EvolutionResult {
 
 /// Returns the trajectory for viscoelastic spheres (d = 3): the hierarchy is evaluated at
 /// δ'(θ) = δ 2^{1/10} θ^{1/10} (BP's δ' = δ[2T/T0]^{1/10}, δ at the initial temperature T0 = 1);
-/// CVODE uses its difference-quotient Jacobian here.
+/// CVODE uses its difference-quotient Jacobian here. Otherwise as evolve_homogeneous_cooling.
 EvolutionResult evolve_viscoelastic_cooling(const class ViscoelasticHierarchy& hierarchy, double delta,
                                             const std::vector<double>& initial_a, const std::vector<double>& times,
-                                            double rtol, double atol);
+                                            double rtol, double atol, long max_steps = kEvolutionMaxSteps);
 
 /// Returns the trajectory from T/T0 = temperature0 and cumulants initial_a (a_2 … a_K; missing
 /// ones 0) at the increasing positive `times`, with CVODE tolerances rtol (relative) and atol
 /// (absolute). `chi` ≥ 1 is the Enskog contact value of a dense gas: its homogeneous collision
 /// operator is χ times Boltzmann's (theory.md (15.1)), so every rate and the reported ζ* = χ ζ*_dilute
-/// carry χ while τ stays in units of the dilute initial mean free time (theory.md §12.4). Throws
-/// std::invalid_argument on bad input, EvolutionFailure (an invalid_argument) if CVODE stops early,
-/// std::runtime_error if CVODE cannot even be set up.
+/// carry χ while τ stays in units of the dilute initial mean free time (theory.md §12.4). CVODE gets at most
+/// `max_steps` (≥ 1) steps over the whole trajectory. Throws std::invalid_argument on bad input, EvolutionFailure
+/// (an invalid_argument) if CVODE stops early ("max_steps: …" when the budget runs out), std::runtime_error if CVODE
+/// cannot even be set up.
 EvolutionResult evolve_homogeneous_cooling(const CumulantHierarchy& hierarchy, double temperature0,
                                            const std::vector<double>& initial_a, const std::vector<double>& times,
-                                           double rtol, double atol, double chi = 1);
+                                           double rtol, double atol, double chi = 1,
+                                           long max_steps = kEvolutionMaxSteps);
 
 }  // namespace gkt

@@ -37,11 +37,13 @@ struct MixtureEvolutionResult {
 /// (K = hcs_order ∈ [2, 6]; none for the Maxwellian scheme) from the temperature ratios
 /// `initial_temperature_ratio` (T_i(0)/T(0), Σ x_i γ_i = 1 within 1e-12) and cumulants
 /// `initial_cumulants` (a_2,i … a_K,i per species; empty: all 0) at the increasing positive `times`,
-/// with CVODE tolerances rtol, atol. The rest point is mixture_cooling_state(mixture, scheme, K).
-/// Throws std::invalid_argument naming the field on bad input, EvolutionFailure if CVODE stops early.
+/// with CVODE tolerances rtol, atol and at most `max_steps` (≥ 1) CVODE steps over the whole trajectory. The rest
+/// point is mixture_cooling_state(mixture, scheme, K). Throws std::invalid_argument naming the field on bad input,
+/// EvolutionFailure if CVODE stops early ("max_steps: …" when the budget runs out).
 MixtureEvolutionResult evolve_mixture_cooling(const Mixture& mixture, MixtureHcsScheme scheme, int hcs_order,
                                               std::span<const double> initial_temperature_ratio,
                                               const std::vector<std::vector<double>>& initial_cumulants,
-                                              const std::vector<double>& times, double rtol, double atol);
+                                              const std::vector<double>& times, double rtol, double atol,
+                                              long max_steps = kEvolutionMaxSteps);
 
 }  // namespace gkt

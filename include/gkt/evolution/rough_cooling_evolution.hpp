@@ -61,11 +61,13 @@ void check_rough_initial_cumulants(int dimension, const RoughCumulants& a);
 /// > 0) at the increasing positive `times`. linear = false: the Maxwellian two-temperature equations
 /// (theory.md (19.12), (19.24)) from Maxwellians; true: the first-Sonine scheme carrying a20, a02, a11
 /// (theory.md (19.25)) from `initial_cumulants` (checked by check_rough_initial_cumulants; nonzero
-/// values need linear = true). Throws std::invalid_argument naming the field on bad input,
-/// EvolutionFailure (an invalid_argument) if CVODE stops early.
+/// values need linear = true); CVODE gets at most `max_steps` (≥ 1) steps over the whole trajectory. Throws
+/// std::invalid_argument naming the field on bad input, EvolutionFailure (an invalid_argument) if CVODE stops early
+/// ("max_steps: …" when the budget runs out).
 RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool linear, double translational0,
                                           double rotational0, const std::vector<double>& times, double rtol,
-                                          double atol, const RoughCumulants& initial_cumulants = {});
+                                          double atol, const RoughCumulants& initial_cumulants = {},
+                                          long max_steps = kEvolutionMaxSteps);
 
 /// Returns the trajectory of the oriented first-Sonine scheme of spheres (theory.md §19.13, (19.25) with the
 /// orientation balance): a20, a02, a11 and b00 (b00(0) = 0, the others from `initial_cumulants`), the balances of
@@ -75,7 +77,8 @@ RoughEvolutionResult evolve_rough_cooling(const RoughCoolingRates& rates, bool l
 RoughEvolutionResult evolve_rough_oriented_cooling(const RoughCoolingRates& rates,
                                                    const RoughOrientedCoolingRates& oriented, double translational0,
                                                    double rotational0, const std::vector<double>& times, double rtol,
-                                                   double atol, const RoughCumulants& initial_cumulants = {});
+                                                   double atol, const RoughCumulants& initial_cumulants = {},
+                                                   long max_steps = kEvolutionMaxSteps);
 
 /// Default CVODE step budget of evolve_rough_sonine_cooling over a whole trajectory: 5× the ~2000 steps the healthy
 /// runs of theory.md §19.24 take to τ = 10⁴; the N = 3 nonlinear stall from θ(0) = 0.01 uses 25732 by τ = 0.01.
@@ -110,7 +113,8 @@ struct RoughLinearProductions {
 RoughEvolutionResult evolve_rough_linear_cooling(int dimension, const RoughLinearProductions& productions,
                                                  double translational0, double rotational0,
                                                  const std::vector<double>& times, double rtol, double atol,
-                                                 const RoughCumulants& initial_cumulants = {});
+                                                 const RoughCumulants& initial_cumulants = {},
+                                                 long max_steps = kEvolutionMaxSteps);
 
 /// Maxwellian rates at θ = T_r/T_t: (z_t, z_r) = (ζ_t, ζ_r)/(nσ^{d−1}v_t ν) (e.g. from the Walton
 /// quadrature of rough_walton.hpp, times 4/(d+2)).
@@ -120,6 +124,7 @@ using RoughMaxwellianRates = std::function<std::array<double, 2>(double temperat
 /// θ, d ∈ {2, 3}; otherwise as evolve_rough_cooling (a20 = a02 = a11 = 0 in every sample).
 RoughEvolutionResult evolve_rough_maxwellian_cooling(int dimension, const RoughMaxwellianRates& rates,
                                                      double translational0, double rotational0,
-                                                     const std::vector<double>& times, double rtol, double atol);
+                                                     const std::vector<double>& times, double rtol, double atol,
+                                                     long max_steps = kEvolutionMaxSteps);
 
 }  // namespace gkt

@@ -39,10 +39,12 @@ class RoughWaltonInterpolant {
 /// (units T_ref) with initial cumulants `initial_cumulants` (theory.md (19.24)–(19.25) with the averages of
 /// rough_walton_cumulants.hpp, interpolated over τ between 0.5 below the smaller and 0.5 above the larger of
 /// ln τ(0) and the linear HCS's ln τ, 16 nodes per unit of ln τ, at least 24). Throws std::invalid_argument
-/// naming the field where the linear scheme has no HCS (spin decoupled or no realizable root) or on bad input.
+/// naming the field where the linear scheme has no HCS (spin decoupled or no realizable root) or on bad input;
+/// otherwise as evolve_rough_linear_cooling (at most `max_steps` CVODE steps over the whole trajectory).
 RoughEvolutionResult evolve_rough_walton_cooling(int dimension, double alpha, double beta0, double kappa,
                                                  double friction, double translational0, double rotational0,
                                                  const std::vector<double>& times, double rtol, double atol,
-                                                 const RoughCumulants& initial_cumulants = {});
+                                                 const RoughCumulants& initial_cumulants = {},
+                                                 long max_steps = kEvolutionMaxSteps);
 
 }  // namespace gkt
