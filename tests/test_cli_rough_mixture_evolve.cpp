@@ -111,7 +111,7 @@ TEST(CliRoughMixtureEvolve, RefusesBadInput) {
            {mix + "'hcs=\"linear\"'", "hcs: the rough binary mixture (species = 2) evolves in the Maxwellian"},
            {mix + "a20=0.1", "a20: the rough binary mixture (species = 2) evolves Maxwellians"},
            {mix + "order=2", "order: the rough binary mixture (species = 2) evolves at order 1 only"},
-           {mix + "max_steps=5", "max_steps: the rough binary mixture used its 5 CVODE steps"},
+           {mix + "max_steps=5", "max_steps: used its 5 CVODE steps before time = "},
            {mix + "fraction_1=0.5", "fraction: the mole fractions x_1 + x_2 must sum to 1"},
            {mix + "beta_1_2=2", "beta_1_2: must be a number in [-1, 1]"},
            {"evolve " + scene("rough_evolve.toml") + " --set translational_temperature_1=2",

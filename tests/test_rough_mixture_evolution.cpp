@@ -246,7 +246,7 @@ TEST(RoughMixtureEvolution, RefusesBadInput) {
   EXPECT_EQ(message({1, 1, 1, 1}, {2, 1}, 100).rfind("times:", 0), 0u);
   EXPECT_EQ(message({1, 1, 1, 1}, {1}, 0).rfind("max_steps:", 0), 0u);
   const std::string budget = message({1, 1, 0.01, 0.01}, {1e4}, 20);
-  EXPECT_EQ(budget.rfind("max_steps: the rough binary mixture used its 20 CVODE steps", 0), 0u) << budget;
+  EXPECT_EQ(budget.rfind("max_steps: used its 20 CVODE steps before time = ", 0), 0u) << budget;
   RoughBinaryMixture bad = m;
   bad.beta[1] = Rational(2);
   EXPECT_THROW((void)gkt::evolve_rough_mixture_cooling(bad, {1, 1, 1, 1}, {1}, 1e-8, 1e-12), std::invalid_argument);

@@ -123,7 +123,7 @@ RoughMixtureEvolutionResult evolve_rough_mixture_cooling(const RoughBinaryMixtur
     if (!(initial[k] > 0) || !std::isfinite(initial[k]))
       throw std::invalid_argument(std::string(names[k]) + ": must be a finite number > 0, got " + shortest(initial[k]));
   if (!(rtol > 0) || !(atol > 0)) throw std::invalid_argument("rtol, atol: must be > 0");
-  if (max_steps < 1) throw std::invalid_argument("max_steps: must be >= 1, got " + std::to_string(max_steps));
+  detail::check_max_steps(max_steps);
   for (std::size_t i = 0; i < times.size(); ++i)
     if (!(times[i] > 0) || (i > 0 && !(times[i] > times[i - 1])))
       throw std::invalid_argument("times: must be positive and increasing");
@@ -154,20 +154,9 @@ RoughMixtureEvolutionResult evolve_rough_mixture_cooling(const RoughBinaryMixtur
 
   RoughMixtureEvolutionResult result;
   for (const double target : times) {
-    // A budget over the whole trajectory (as the one gas's, theory.md §19.24): what is left of it bounds this call.
-    long used = 0;
-    CVodeGetNumSteps(cvode.get(), &used);
-    check(CVodeSetMaxNumSteps(cvode.get(), std::max(1L, max_steps - used)), "CVodeSetMaxNumSteps");
-    double reached = 0;
-    try {
-      reached = detail::advance_to(cvode.get(), target, y.get(), cvode_message, "integrate to an earlier time");
-    } catch (const EvolutionFailure& e) {
-      if (e.flag() != CV_TOO_MUCH_WORK) throw;
-      throw EvolutionFailure("max_steps: the rough binary mixture used its " + std::to_string(max_steps) +
-                                 " CVODE steps before tau = " + shortest(target) +
-                                 " (stopped at tau = " + shortest(e.time()) + "); raise max_steps or lower t_end",
-                             e.flag(), e.time());
-    }
+    // A budget over the whole trajectory (as every evolve path, docs/conventions.md).
+    const double reached = detail::advance_within_budget(cvode.get(), target, y.get(), cvode_message,
+                                                         "integrate to an earlier time", max_steps);
     RoughMixtureEvolutionSample s;
     s.time = reached;
     std::array<double, 4> t{};
