@@ -31,6 +31,23 @@ struct RoughMixtureCollision {
   Vec3 sigma{};                 // σ̂
 };
 
+/// Returns two distinct particles (p, q) of n, uniformly, and a uniform unit vector σ̂ (three Gaussians normalised),
+/// the draw of every DSMC collision candidate here.
+struct CandidatePair {
+  int p = 0, q = 0;
+  Vec3 sigma{};
+};
+inline CandidatePair draw_candidate(gsl_rng* rng, int n) {
+  CandidatePair c;
+  c.p = static_cast<int>(gsl_rng_uniform_int(rng, static_cast<unsigned long>(n)));
+  c.q = static_cast<int>(gsl_rng_uniform_int(rng, static_cast<unsigned long>(n - 1)));
+  if (c.q >= c.p) ++c.q;
+  c.sigma = {gsl_ran_gaussian(rng, 1.0), gsl_ran_gaussian(rng, 1.0), gsl_ran_gaussian(rng, 1.0)};
+  const double norm = std::sqrt(dot3(c.sigma, c.sigma));
+  for (auto& s : c.sigma) s /= norm;
+  return c;
+}
+
 /// Returns the solution x of A x = b (Cramer's rule; A nonsingular).
 inline Vec3 solve3(const std::array<Vec3, 3>& a, const Vec3& b) {
   const auto det = [](const std::array<Vec3, 3>& m) {

@@ -77,12 +77,7 @@ inline std::vector<std::array<double, 4>> run_rough_mixture_cooling_dsmc(
   for (const double target : times) {
     while (tau + step() <= target) {
       tau += step();
-      const int p = static_cast<int>(gsl_rng_uniform_int(rng, static_cast<unsigned long>(n)));
-      int q = static_cast<int>(gsl_rng_uniform_int(rng, static_cast<unsigned long>(n - 1)));
-      if (q >= p) ++q;
-      Vec3 sigma{gsl_ran_gaussian(rng, 1.0), gsl_ran_gaussian(rng, 1.0), gsl_ran_gaussian(rng, 1.0)};
-      const double norm = std::sqrt(dot3(sigma, sigma));
-      for (auto& s : sigma) s /= norm;
+      const auto [p, q, sigma] = draw_candidate(rng, n);
       const auto& a = v[at(p)];
       const auto& b = v[at(q)];
       const double u = (a[0] - b[0]) * sigma[0] + (a[1] - b[1]) * sigma[1] + (a[2] - b[2]) * sigma[2];

@@ -10,34 +10,20 @@
 
 #include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "rough_monte_carlo.hpp"
+#include "rough_tensors.hpp"
 #include "transport/rough/rough_chiral_families.hpp"
 
 namespace {
 
 using gkt::Rational;
 using gkt::detail::RoughChiralFamilyElements;
+using gkt::test::contract;
 using gkt::test::cross;
 using gkt::test::dot3;
+using gkt::test::M3;
+using gkt::test::sym;
+using gkt::test::traceless;
 using gkt::test::Vec3;
-using M3 = std::array<Vec3, 3>;
-
-M3 sym(const Vec3& a, const Vec3& b, double s = 1) {
-  M3 m{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = 0.5 * s * (a[i] * b[j] + a[j] * b[i]);
-  return m;
-}
-M3 traceless(M3 m, int d) {
-  const double t = m[0][0] + m[1][1] + m[2][2];
-  for (int i = 0; i < d; ++i) m[i][i] -= t / d;
-  return m;
-}
-double contract(const M3& a, const M3& b) {
-  double s = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) s += a[i][j] * b[i][j];
-  return s;
-}
 
 /// The tensor and vector families of gkt_rough_trial_families_mc, in components (w = ŵ, for disks along ẑ).
 std::vector<M3> tensors(int d, const Vec3& c, const Vec3& w) {

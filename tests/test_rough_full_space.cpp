@@ -12,6 +12,7 @@
 
 #include "gkt/transport/rough/rough_sonine_transport.hpp"
 #include "rough_monte_carlo.hpp"
+#include "rough_tensors.hpp"
 #include "transport/rough/rough_chiral_families.hpp"
 #include "transport/rough/rough_sonine_systems.hpp"
 
@@ -19,37 +20,14 @@ namespace {
 
 using gkt::Rational;
 using gkt::detail::RoughChiralFamilyElements;
+using gkt::test::contract;
 using gkt::test::cross;
 using gkt::test::dot3;
+using gkt::test::M3;
+using gkt::test::scaled;
+using gkt::test::sym;
+using gkt::test::traceless;
 using gkt::test::Vec3;
-using M3 = std::array<Vec3, 3>;
-
-M3 sym(const Vec3& a, const Vec3& b, double s = 1) {
-  M3 m{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = 0.5 * s * (a[i] * b[j] + a[j] * b[i]);
-  return m;
-}
-M3 traceless(M3 m, int d) {
-  const double t = m[0][0] + m[1][1] + m[2][2];
-  for (int i = 0; i < d; ++i) m[i][i] -= t / d;
-  return m;
-}
-M3 scaled(M3 m, double s) {
-  for (auto& row : m)
-    for (double& e : row) e *= s;
-  return m;
-}
-Vec3 scaled(Vec3 v, double s) {
-  for (double& e : v) e *= s;
-  return v;
-}
-double contract(const M3& a, const M3& b) {
-  double s = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) s += a[i][j] * b[i][j];
-  return s;
-}
 
 /// S_p(x) L_q(y) of the rank's Sonine basis (the library's multipliers, rough_sonine_function).
 double multiplier(int d, int rank, int p, int q, double x, double y) {

@@ -14,28 +14,15 @@
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_mixture_cooling_state.hpp"
+#include "rough_binary_fixture.hpp"
 #include "rough_mixture_dsmc.hpp"
 
 using gkt::Rational;
 using gkt::RoughBinaryMixture;
 using gkt::RoughMixtureComponent;
-
-namespace {
-
-RoughBinaryMixture binary(int d, const RoughMixtureComponent& a, const RoughMixtureComponent& b,
-                          const std::array<Rational, 3>& alpha, const std::array<Rational, 3>& beta) {
-  RoughBinaryMixture m;
-  m.dimension = d;
-  m.species = {a, b};
-  m.alpha = alpha;
-  m.beta = beta;
-  return m;
-}
-
-const RoughMixtureComponent kLight{Rational(1), Rational(2, 5), 1.0, 0.3};
-const RoughMixtureComponent kHeavy{Rational(4), Rational(1, 2), 2.0, 0.7};
-
-}  // namespace
+using gkt::test::binary;
+using gkt::test::kHeavy;
+using gkt::test::kLight;
 
 // (19.54): with V = T_t,i/m_i + T_t,j/m_j, W = T_r,i/(κ_i m_i) + T_r,j/(κ_j m_j), n_i = (1+α)m_j/(m_i+m_j),
 // t_i = (1+β)M/m_i, r_i = t_i/κ_i,

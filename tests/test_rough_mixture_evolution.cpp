@@ -18,27 +18,17 @@
 #include "gkt/evolution/rough_mixture_cooling_evolution.hpp"
 #include "gkt/transport/rough/rough_cooling_rates.hpp"
 #include "gkt/transport/rough/rough_mixture_cooling_state.hpp"
+#include "rough_binary_fixture.hpp"
 #include "rough_mixture_transient_dsmc.hpp"
 
 using gkt::Rational;
 using gkt::RoughBinaryMixture;
 using gkt::RoughMixtureComponent;
+using gkt::test::binary;
+using gkt::test::kHeavy;
+using gkt::test::kLight;
 
 namespace {
-
-RoughBinaryMixture binary(int d, const RoughMixtureComponent& a, const RoughMixtureComponent& b,
-                          const std::array<Rational, 3>& alpha, const std::array<Rational, 3>& beta) {
-  RoughBinaryMixture m;
-  m.dimension = d;
-  m.species = {a, b};
-  m.alpha = alpha;
-  m.beta = beta;
-  return m;
-}
-
-// The unequal species of theory.md §19.17 (m = 1, 4; κ = 2/5, 1/2; σ = 1, 2; x = 0.3, 0.7).
-const RoughMixtureComponent kLight{Rational(1), Rational(2, 5), 1.0, 0.3};
-const RoughMixtureComponent kHeavy{Rational(4), Rational(1, 2), 2.0, 0.7};
 
 std::vector<double> log_times(double first, double last, int points) {
   std::vector<double> t;

@@ -11,28 +11,15 @@
 #include "gkt/transport/mixture/mixture_cooling_state.hpp"
 #include "gkt/transport/rough/rough_homogeneous_cooling_state.hpp"
 #include "gkt/transport/rough/rough_mixture_sonine_cooling_state.hpp"
+#include "rough_binary_fixture.hpp"
 #include "rough_mixture_dsmc.hpp"
 
 using gkt::Rational;
 using gkt::RoughBinaryMixture;
 using gkt::RoughMixtureComponent;
-
-namespace {
-
-RoughBinaryMixture binary(int d, const RoughMixtureComponent& a, const RoughMixtureComponent& b,
-                          const std::array<Rational, 3>& alpha, const std::array<Rational, 3>& beta) {
-  RoughBinaryMixture m;
-  m.dimension = d;
-  m.species = {a, b};
-  m.alpha = alpha;
-  m.beta = beta;
-  return m;
-}
-
-const RoughMixtureComponent kLight{Rational(1), Rational(2, 5), 1.0, 0.3};
-const RoughMixtureComponent kHeavy{Rational(4), Rational(1, 2), 2.0, 0.7};
-
-}  // namespace
+using gkt::test::binary;
+using gkt::test::kHeavy;
+using gkt::test::kLight;
 
 // (a) Two identical components (x = 0.3, 0.7) are one gas: γ_i = 1 and θ, ζ*, a20, a02, a11 of the one-gas
 // linear first-Sonine HCS (a different code path: one-species engine tables with θ symbolic, a scan in τ) to
