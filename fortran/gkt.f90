@@ -85,7 +85,7 @@ module gkt
     type(c_ptr) :: handle = c_null_ptr
   end type
 
-  public :: gkt_last_error, gkt_version
+  public :: gkt_last_error, gkt_last_warnings, gkt_version
   public :: gkt_first_sonine_values, gkt_first_sonine_physical, gkt_enskog_state_at
   public :: gkt_enskog_first_sonine_values, gkt_enskog_first_sonine_values_at, gkt_enskog_first_sonine_physical
   public :: gkt_first_sonine_values_cells, gkt_enskog_first_sonine_values_cells
@@ -181,6 +181,10 @@ module gkt
   ! The C calls behind the Fortran wrappers below (strings, handles, arrays).
   interface
     function c_last_error() bind(C, name="gkt_last_error") result(message)
+      import :: c_ptr
+      type(c_ptr) :: message
+    end function
+    function c_last_warnings() bind(C, name="gkt_last_warnings") result(message)
       import :: c_ptr
       type(c_ptr) :: message
     end function
@@ -413,6 +417,13 @@ contains
   function gkt_last_error() result(message)
     character(len=:), allocatable :: message
     message = from_c(c_last_error())
+  end function
+
+  !> Returns what the error estimates of this thread's last gkt_model_evaluate do not cover, one line each ("" if
+  !> nothing; the warnings `gkt table` prints).
+  function gkt_last_warnings() result(message)
+    character(len=:), allocatable :: message
+    message = from_c(c_last_warnings())
   end function
 
   !> Returns gkt's version, e.g. "0.1.0".

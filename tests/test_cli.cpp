@@ -809,7 +809,10 @@ TEST(CliRough, TrialSpaceKey) {
            {"'trial_space=\"full\"' --set 'coefficients=[\"rotational_temperature_ratio\", \"cooling_rate\"]'",
             "trial_space: \"full\" applies to the Navier-Stokes columns"},
            {"'reference_state=\"hcs\"' --set 'coefficients=[\"cooling_rate\", \"a20\"]'",
-            "reference_state: \"hcs\" applies to the Navier-Stokes columns"}}) {
+            "reference_state: \"hcs\" applies to the Navier-Stokes columns"},
+           // The fourth-field closure shapes the stability columns alone.
+           {"'rotational_temperature_closure=\"field\"' --set 'coefficients=[\"shear_viscosity\"]' --set order=1",
+            "rotational_temperature_closure: \"field\" applies to the stability columns"}}) {
     const CliRun bad = run_gkt(base + " --set " + set);
     EXPECT_EQ(bad.status, 2) << set << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;

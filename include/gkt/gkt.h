@@ -44,6 +44,14 @@ typedef enum gkt_status {
  *  this thread. */
 const char* gkt_last_error(void);
 
+/** Returns what the error estimates of this thread's last successful gkt_model_evaluate or
+ *  gkt_model_evaluate_to_tolerance do not cover, one warning per line (the lines `gkt table` prints
+ *  as "warning: …" for the same model, keys and columns; docs/conventions.md, "Warnings"), or "" if
+ *  nothing; e.g. the rough model's product trial space at Sonine order >= 2. Every evaluate call
+ *  replaces it (a failing one with ""). The pointer stays valid until the next evaluate call on this
+ *  thread. */
+const char* gkt_last_warnings(void);
+
 /** Returns the name of a status code ("GKT_OK", "GKT_INVALID_ARGUMENT", …; "unknown" otherwise). */
 const char* gkt_status_name(gkt_status status);
 

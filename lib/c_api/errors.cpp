@@ -2,6 +2,8 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "gkt/gkt.h"
 #include "guard.hpp"
@@ -9,7 +11,8 @@
 namespace gkt::c_api {
 
 namespace {
-thread_local std::string last_error;  // the message of this thread's last failing call
+thread_local std::string last_error;     // the message of this thread's last failing call
+thread_local std::string last_warnings;  // the caveats of this thread's last gkt_model_evaluate*
 }  // namespace
 
 gkt_status fail(gkt_status status, const std::string& message) noexcept {
@@ -19,6 +22,12 @@ gkt_status fail(gkt_status status, const std::string& message) noexcept {
     last_error.clear();  // no memory for the message: the status still says what happened
   }
   return status;
+}
+
+void set_last_warnings(const std::vector<std::string>& lines) {
+  std::string joined;
+  for (const auto& line : lines) joined += (joined.empty() ? "" : "\n") + line;
+  last_warnings = std::move(joined);
 }
 
 void refuse_null(const char* field) { throw Refusal{GKT_INVALID_ARGUMENT, std::string(field) + ": must not be NULL"}; }
@@ -50,6 +59,8 @@ gkt_status current_exception_status() noexcept {
 extern "C" {
 
 const char* gkt_last_error(void) { return gkt::c_api::last_error.c_str(); }
+
+const char* gkt_last_warnings(void) { return gkt::c_api::last_warnings.c_str(); }
 
 const char* gkt_status_name(gkt_status status) {
   switch (status) {

@@ -7,6 +7,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gkt/gkt.h"
 
@@ -14,6 +15,9 @@ namespace gkt::c_api {
 
 /// Records message as this thread's last error and returns status.
 gkt_status fail(gkt_status status, const std::string& message) noexcept;
+
+/// Sets what gkt_last_warnings returns on this thread: the lines joined by newlines ("" for none).
+void set_last_warnings(const std::vector<std::string>& lines);
 
 /// A refusal of the C layer itself: the status and a message naming the field.
 struct Refusal {

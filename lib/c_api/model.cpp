@@ -64,6 +64,10 @@ gkt_status evaluate(gkt_model* m, std::size_t count, const char* const* names, c
     requested.emplace_back(names[i]);
   }
   const std::vector<CoefficientValue> values = m->model->evaluate(m->point, requested, order);
+  // What the error estimates do not cover, as `gkt table` warns once per table (docs/conventions.md, "Warnings").
+  int highest_order = order.order;
+  for (const CoefficientValue& v : values) highest_order = std::max(highest_order, v.order);
+  const auto caveats = m->model->table_caveats(m->point.choices, requested, highest_order, order.tolerance.has_value());
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < count; ++i) {
     const CoefficientValue& v = values[i];
@@ -74,6 +78,7 @@ gkt_status evaluate(gkt_model* m, std::size_t count, const char* const* names, c
                                   : nan,
               v.order, v.converged ? 1 : 0, v.defined ? 1 : 0};
   }
+  set_last_warnings(caveats);
   return GKT_OK;
 }
 
@@ -132,6 +137,7 @@ gkt_status gkt_model_set_choice(gkt_model* model, const char* key, const char* v
 gkt_status gkt_model_evaluate(gkt_model* model, size_t count, const char* const* names, int order,
                               gkt_coefficient* out) {
   return guarded([&] {
+    gkt::c_api::set_last_warnings({});  // a failing call leaves none
     require_pointer(model, "model");
     const int top = model->model->max_order();
     if (order < 1 || order > top)
@@ -144,6 +150,7 @@ gkt_status gkt_model_evaluate(gkt_model* model, size_t count, const char* const*
 gkt_status gkt_model_evaluate_to_tolerance(gkt_model* model, size_t count, const char* const* names, double tolerance,
                                            gkt_coefficient* out) {
   return guarded([&] {
+    gkt::c_api::set_last_warnings({});
     if (!(tolerance > 0 && tolerance <= 1))
       throw Refusal{GKT_INVALID_ARGUMENT, "tolerance: must be a number in (0, 1], got " + number(tolerance)};
     const gkt::Rational exact = gkt::Rational::parse(number(tolerance));

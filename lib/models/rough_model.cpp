@@ -406,16 +406,12 @@ class RoughModel final : public TransportModel {
         throw std::invalid_argument("trial_space: \"" + space +
                                     "\" is built about Maxwellians only (reference_state = \"maxwellian\")");
       // The stability values at order 1 come from the first approximations too (theory.md §19.15): refused alike.
-      if (first && std::any_of(coefficients.begin(), coefficients.end(), [&is_critical](const std::string& c) {
-            return is_rough_sonine_column(c) || is_critical(c);
-          }))
+      if (first && shaped)
         throw std::invalid_argument("trial_space: \"" + space +
                                     "\" needs a Sonine order (order >= 2 or a tolerance) for the Navier-Stokes and "
                                     "stability columns; order = 1 alone is the first approximation in the product "
                                     "space");
-      if (trial_space_ == RoughTrialSpace::full && !order.tolerance && order.order > kMaxRoughFullOrder &&
-          std::any_of(coefficients.begin(), coefficients.end(),
-                      [&is_critical](const std::string& c) { return is_rough_sonine_column(c) || is_critical(c); }))
+      if (trial_space_ == RoughTrialSpace::full && !order.tolerance && order.order > kMaxRoughFullOrder && shaped)
         throw std::invalid_argument("order: trial_space = \"full\" takes orders 1 to " +
                                     std::to_string(kMaxRoughFullOrder) +
                                     " for the Navier-Stokes and stability columns (its family members follow the "
@@ -426,6 +422,13 @@ class RoughModel final : public TransportModel {
     // (19.17), (19.37), or about the Sonine HCS the slopes of the linear scheme's cumulant rates (§19.27), which the
     // nonlinear scheme's products would change.
     const bool rotational_field = SchemaPoint(specs, point).choice("rotational_temperature_closure") == "field";
+    // The closure shapes the stability columns alone: a table without them would ignore it silently.
+    if (rotational_field && std::none_of(coefficients.begin(), coefficients.end(), is_critical))
+      throw std::invalid_argument(
+          "rotational_temperature_closure: \"field\" applies to the stability columns (gkt stability: "
+          "critical_wavenumber_shear, critical_wavenumber_heat, critical_length); this table asks for none: drop the "
+          "key or ask for one "
+          "of them");
     if (rotational_field && cumulant_reference && scheme != "linear" &&
         std::any_of(coefficients.begin(), coefficients.end(), is_critical))
       throw std::invalid_argument(

@@ -1,5 +1,6 @@
 ! The batched one-component calls through the Fortran module (fortran/gkt.f90): 64 cells equal the
-! single-cell calls bit for bit, and a bad cell is refused naming its index from 0 with out untouched.
+! single-cell calls bit for bit, and a bad cell is refused naming its index from 0 with out untouched; the rough
+! model's product-space caveat reaches Fortran through gkt_last_warnings.
 program cells_test
   use, intrinsic :: iso_c_binding, only: c_int, c_double
   use, intrinsic :: iso_fortran_env, only: int64
@@ -9,6 +10,8 @@ program cells_test
   real(c_double) :: alpha(cells), phi(cells)
   type(gkt_first_sonine) :: v(cells), one, sentinel(cells)
   type(gkt_enskog_first_sonine) :: e(cells), e_one
+  type(gkt_model) :: rough
+  type(gkt_coefficient) :: eta
   integer :: i, failures
   character(len=:), allocatable :: message
 
@@ -37,6 +40,14 @@ program cells_test
   message = gkt_last_error()
   call check(index(message, 'alpha[39]:') == 1, 'index named: ' // message)
   call check(all(transfer(v, [0_int64]) == transfer(sentinel, [0_int64])), 'out untouched')
+  call check(gkt_model_create('rough', rough) == GKT_OK, 'rough model')
+  call check(gkt_model_evaluate(rough, 'shear_viscosity', 2_c_int, eta) == GKT_OK, 'rough order 2')
+  message = gkt_last_warnings()
+  call check(index(message, 'trial_space: the _error of shear_viscosity') == 1, 'caveat: ' // message)
+  call check(gkt_model_evaluate(rough, 'shear_viscosity', 1_c_int, eta) == GKT_OK, 'rough order 1')
+  message = gkt_last_warnings()
+  call check(len(message) == 0, 'no caveat at order 1: ' // message)
+  call gkt_model_destroy(rough)
   deallocate (message)  ! main-program variables are never freed implicitly: LeakSanitizer would report it
 
   if (failures > 0) then
