@@ -19,56 +19,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_run.hpp"
 #include "sanitizer.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
+using gkt::test::CliRun;
+using gkt::test::parse_csv;
+using gkt::test::read_file;
+using gkt::test::run_gkt;
+using gkt::test::scene_path;
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// Runs the gkt binary with arguments (shell-quoted by the caller) and captures its streams.
-CliRun run_gkt(const std::string& args) {
-  static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() / ("gkt_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path out = dir / ("out" + std::to_string(counter));
-  const fs::path err = dir / ("err" + std::to_string(counter++));
-  const std::string cmd = std::string(GKT_CLI_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int raw = std::system(cmd.c_str());
-  CliRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = read_file(out);
-  r.err = read_file(err);
-  return r;
-}
-
-std::string scene_path(const std::string& name) { return std::string(GKT_SOURCE_DIR) + "/tables/scenes/" + name; }
 std::string golden_path(const std::string& name) { return std::string(GKT_SOURCE_DIR) + "/tests/golden/" + name; }
-
-std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::vector<std::string> cells;
-    std::stringstream cs(line);
-    std::string cell;
-    while (std::getline(cs, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
 
 bool is_number(const std::string& s, double& x) {
   char* end = nullptr;

@@ -2,76 +2,35 @@
 // conventions.md): the shipped scene relaxes to `gkt table`'s Maxwellian HCS, the per-species initial temperatures
 // reach the integrator, and bad input exits 2 with one line and no output.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "cli_run.hpp"
+
 namespace {
 
-namespace fs = std::filesystem;
+using gkt::test::CliRun;
+using gkt::test::parse_csv;
+using gkt::test::run_gkt;
+using gkt::test::scene_path;
 
-struct EvolveRun {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// Runs the gkt binary with arguments (shell-quoted by the caller) and captures its streams.
-EvolveRun run(const std::string& args) {
-  static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() / ("gkt_rough_mixture_evolve_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path out = dir / ("out" + std::to_string(counter)), err = dir / ("err" + std::to_string(counter++));
-  const std::string cmd = std::string(GKT_CLI_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int raw = std::system(cmd.c_str());
-  EvolveRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-std::string scene(const std::string& name) { return std::string(GKT_SOURCE_DIR) + "/tables/scenes/" + name; }
-
-std::vector<std::vector<std::string>> csv(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::vector<std::string> cells;
-    std::stringstream cs(line);
-    std::string cell;
-    while (std::getline(cs, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
+/// Runs gkt with its streams under this test's own temporary folder.
+CliRun run(const std::string& args) { return run_gkt(args, "gkt_rough_mixture_evolve_"); }
 
 }  // namespace
 
 // The last row of the shipped scene (τ = 10⁶) carries `gkt table`'s Maxwellian HCS (rough_mixture_hcs.toml at the
 // same α, β) to 1e-8 in γ_i, θ_i and ζ*; the first row starts cold (θ_i < 0.02).
 TEST(CliRoughMixtureEvolve, RelaxesToTheTable) {
-  const EvolveRun evolve = run("evolve " + scene("rough_mixture_evolve.toml"));
-  const EvolveRun table = run("table " + scene("rough_mixture_hcs.toml") + " --set 'alpha=[0.9]' --set 'beta=[0.5]'");
+  const CliRun evolve = run("evolve " + scene_path("rough_mixture_evolve.toml"));
+  const CliRun table = run("table " + scene_path("rough_mixture_hcs.toml") + " --set 'alpha=[0.9]' --set 'beta=[0.5]'");
   ASSERT_EQ(evolve.status, 0) << evolve.err;
   ASSERT_EQ(table.status, 0) << table.err;
   EXPECT_NE(evolve.err.find("cvode: steps="), std::string::npos);
-  const auto e = csv(evolve.out), t = csv(table.out);
+  const auto e = parse_csv(evolve.out), t = parse_csv(table.out);
   ASSERT_EQ(e[0],
             (std::vector<std::string>{
                 "time", "temperature", "translational_temperature_1", "translational_temperature_2",
@@ -88,11 +47,11 @@ TEST(CliRoughMixtureEvolve, RelaxesToTheTable) {
 // translational_temperature_i, rotational_temperature_i override the one-gas keys per species; without them both
 // species start at translational_temperature, rotational_temperature.
 TEST(CliRoughMixtureEvolve, PerSpeciesInitialTemperatures) {
-  const EvolveRun r = run("evolve " + scene("rough_mixture_evolve.toml") +
-                          " --set translational_temperature_1=2 --set translational_temperature_2=0.5 "
-                          "--set rotational_temperature_2=3 --set 'times=[1e-9]'");
+  const CliRun r = run("evolve " + scene_path("rough_mixture_evolve.toml") +
+                       " --set translational_temperature_1=2 --set translational_temperature_2=0.5 "
+                       "--set rotational_temperature_2=3 --set 'times=[1e-9]'");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = csv(r.out);
+  const auto rows = parse_csv(r.out);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_NEAR(std::stod(rows[1][2]), 2, 1e-6);
   EXPECT_NEAR(std::stod(rows[1][3]), 0.5, 1e-6);
@@ -103,7 +62,7 @@ TEST(CliRoughMixtureEvolve, PerSpeciesInitialTemperatures) {
 
 // Bad input: exit 2, one line naming the key, nothing on standard output.
 TEST(CliRoughMixtureEvolve, RefusesBadInput) {
-  const std::string mix = "evolve " + scene("rough_mixture_evolve.toml") + " --set ";
+  const std::string mix = "evolve " + scene_path("rough_mixture_evolve.toml") + " --set ";
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
            {mix + "rotational_temperature_2=-1", "rotational_temperature_2: must be a number > 0"},
            {mix + "translational_temperature_1=0", "translational_temperature_1: must be a number > 0"},
@@ -114,9 +73,9 @@ TEST(CliRoughMixtureEvolve, RefusesBadInput) {
            {mix + "max_steps=5", "max_steps: used its 5 CVODE steps before time = "},
            {mix + "fraction_1=0.5", "fraction: the mole fractions x_1 + x_2 must sum to 1"},
            {mix + "beta_1_2=2", "beta_1_2: must be a number in [-1, 1]"},
-           {"evolve " + scene("rough_evolve.toml") + " --set translational_temperature_1=2",
+           {"evolve " + scene_path("rough_evolve.toml") + " --set translational_temperature_1=2",
             "translational_temperature_1: per-species keys need species = 2"}}) {
-    const EvolveRun bad = run(args);
+    const CliRun bad = run(args);
     EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
     EXPECT_NE(bad.err.find(message), std::string::npos) << args << ": " << bad.err;
     EXPECT_TRUE(bad.out.empty()) << args;
