@@ -149,16 +149,13 @@ ParameterSpec rough_evolution_order_parameter() {
 }
 
 ParameterSpec rough_evolution_max_steps_parameter() {
-  return {"max_steps",
-          ParameterSpec::Kind::integer,
-          Rational(1),
-          Rational(1000000000),
-          true,
-          true,
-          Rational(kRoughSonineMaxSteps),
-          "CVODE step budget over the whole trajectory, every hcs; past it exit 2, the Sonine schemes (order > 1 or "
-          "hcs = \"nonlinear\", \"nonlinear-oriented\") naming the stall (theory.md §19.24)",
-          {}};
+  // The other models' budget key, with the rough default and what its Sonine schemes add to the message.
+  ParameterSpec spec = evolution_max_steps_parameter();
+  spec.default_value = Rational(kRoughSonineMaxSteps);
+  spec.description =
+      "CVODE step budget over the whole trajectory, every hcs; past it exit 2, the Sonine schemes (order > 1 or "
+      "hcs = \"nonlinear\", \"nonlinear-oriented\") naming the stall (theory.md §19.24)";
+  return spec;
 }
 
 Trajectory rough_trajectory(const std::vector<ParameterSpec>& schema, const TrajectoryRequest& request) {
